@@ -1,0 +1,25 @@
+#include "headless_frame.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace app {
+
+int lightViewSize(int shadowRes) noexcept { return std::clamp(shadowRes, 16, 1024); }
+
+HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames) {
+    HeadlessFrame f;
+    f.scene = loadScene(options);
+    f.context = renderer::createHeadlessContext(renderer::parseBackend(options.backend));
+    geometry::ShadowSettings settings;
+    settings.resolution = options.shadowRes;
+    const auto t0 = std::chrono::steady_clock::now();
+    f.plan = geometry::planShadows(settings, f.scene.bounds(), f.scene.camera, f.scene.light, options.size);
+    f.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    f.renderer = std::make_unique<renderer::Renderer>(f.scene);
+    for (int i = 0; i <= warmupFrames; ++i) f.renderer->render(f.plan, options.size, lightViewSize(options.shadowRes));
+    f.renderer->waitForTimings();
+    return f;
+}
+
+} // namespace app

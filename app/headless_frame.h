@@ -1,0 +1,25 @@
+#pragma once
+// One headless frame: context, plan, render, timings. Shared by `render` and the tests.
+#include "render_options.h"
+#include "renderer/context.h"
+#include "renderer/renderer.h"
+
+#include <memory>
+
+namespace app {
+
+struct HeadlessFrame {
+    std::unique_ptr<renderer::GlContext> context;
+    geometry::Scene scene;
+    geometry::ShadowPlan plan;
+    double planMicroseconds = 0;
+    std::unique_ptr<renderer::Renderer> renderer;
+};
+
+/// Renders `warmupFrames` + 1 frames of the options' scene and waits for GPU timings.
+[[nodiscard]] HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames = 1);
+
+/// Edge of the square light-view image for a shadow-map resolution.
+[[nodiscard]] int lightViewSize(int shadowRes) noexcept;
+
+} // namespace app

@@ -1,0 +1,38 @@
+// shadowscope: inspect, tune and document real-time shadows on CAD models.
+#include "gui_command.h"
+#include "render_command.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <iostream>
+
+int main(int argc, char** argv) {
+    CLI::App cli{"shadowscope: inspect and tune real-time shadows on CAD models.\n"
+                 "Without a command, opens the GUI (or renders headless into ./out when there is no display)."};
+    cli.set_help_all_flag("--help-all", "Help for every command");
+    cli.require_subcommand(0, 1);
+
+    app::RenderOptions guiOptions;
+    app::addRenderOptions(cli, guiOptions);
+
+    app::RenderOptions renderOptions;
+    CLI::App* render = cli.add_subcommand("render", "Render the eye and light views headless to PNG + metrics.json");
+    app::addRenderOptions(*render, renderOptions);
+
+    try {
+        cli.parse(argc, argv);
+        if (render->parsed()) return app::runRender(renderOptions);
+        return app::runGuiOrHeadless(guiOptions);
+    } catch (const CLI::CallForHelp& e) {
+        return cli.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return cli.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "shadowscope: error: " << e.what() << '\n';
+        return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+    } catch (const std::exception& e) {
+        std::cerr << "shadowscope: error: " << e.what() << '\n';
+        return 1;
+    }
+}

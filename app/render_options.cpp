@@ -1,0 +1,99 @@
+#include "render_options.h"
+
+#include "geometry/builtin_scenes.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace app {
+
+namespace {
+
+/// Parses "a,b,c,..." into exactly `n` finite floats.
+std::vector<float> parseFloats(const std::string& text, size_t n, const char* what) {
+    std::vector<float> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        try {
+            size_t used = 0;
+            const float v = std::stof(item, &used);
+            if (used != item.size() || !std::isfinite(v)) throw std::invalid_argument(item);
+            out.push_back(v);
+        } catch (const std::exception&) {
+            throw std::invalid_argument(std::string(what) + ": '" + item + "' is not a finite number");
+        }
+    }
+    if (out.size() != n)
+        throw std::invalid_argument(std::string(what) + " needs " + std::to_string(n) + " comma-separated numbers");
+    return out;
+}
+
+geometry::Viewport parseSize(const std::string& text) {
+    const auto x = text.find_first_of("xX");
+    try {
+        if (x == std::string::npos) throw std::invalid_argument(text);
+        size_t a = 0, b = 0;
+        const int w = std::stoi(text.substr(0, x), &a), h = std::stoi(text.substr(x + 1), &b);
+        if (a != x || b != text.size() - x - 1) throw std::invalid_argument(text);
+        if (w < 1 || h < 1 || w > 16384 || h > 16384)
+            throw std::out_of_range("--size: each side must be within 1..16384, got " + text);
+        return {w, h};
+    } catch (const std::out_of_range& e) {
+        throw std::invalid_argument(e.what());
+    } catch (const std::invalid_argument&) {
+        throw std::invalid_argument("--size: expected WxH (e.g. 1280x720), got '" + text + "'");
+    }
+}
+
+} // namespace
+
+void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
+    cmd.add_option("--scene", o.scene, "Built-in scene: platform, plane")->capture_default_str();
+    cmd.add_option_function<std::string>(
+           "--size", [&o](const std::string& s) { o.size = parseSize(s); }, "Image size WxH (default 1280x720)");
+    cmd.add_option("--out", o.out, "Output folder")->capture_default_str();
+    cmd.add_option("--backend", o.backend, "GL backend: auto (EGL on a GPU, else OSMesa), osmesa, egl, glfw")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"auto", "osmesa", "egl", "glfw"}));
+    cmd.add_option_function<std::string>(
+        "--camera",
+        [&o](const std::string& s) {
+            const auto v = parseFloats(s, 6, "--camera");
+            geometry::Camera c;
+            c.eye = {v[0], v[1], v[2]};
+            c.target = {v[3], v[4], v[5]};
+            if (glm::length(c.target - c.eye) <= 0.f)
+                throw std::invalid_argument("--camera: eye and target must differ");
+            o.camera = c;
+        },
+        "Camera eye and target: ex,ey,ez,tx,ty,tz (default: the scene's)");
+    cmd.add_option_function<std::string>(
+        "--light",
+        [&o](const std::string& s) {
+            const auto v = parseFloats(s, 3, "--light");
+            const glm::vec3 l(v[0], v[1], v[2]);
+            if (!(glm::length(l) > 0.f)) throw std::invalid_argument("--light: direction must not be zero");
+            o.light = l;
+        },
+        "Light direction dx,dy,dz, from the light into the scene (default: the scene's)");
+    cmd.add_option("--shadow-res", o.shadowRes, "Shadow map resolution in texels")
+        ->capture_default_str()
+        ->check(CLI::Range(16, 16384));
+}
+
+geometry::Scene loadScene(const RenderOptions& o) {
+    geometry::Scene scene = geometry::makeBuiltinScene(o.scene);
+    if (o.camera) {
+        scene.camera.eye = o.camera->eye;
+        scene.camera.target = o.camera->target;
+    }
+    if (o.light) scene.light.direction = *o.light;
+    return scene;
+}
+
+} // namespace app

@@ -1,0 +1,43 @@
+#include "focus.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace geometry {
+
+std::array<glm::vec3, 8> frustumCorners(const Camera& cam, float aspect, float near, float far) noexcept {
+    const glm::mat4 invView = glm::inverse(cam.view());
+    const glm::vec3 right = glm::vec3(invView[0]), up = glm::vec3(invView[1]), back = glm::vec3(invView[2]);
+    const glm::vec3 eye = glm::vec3(invView[3]);
+    const float tanPhi = std::tan(glm::radians(cam.fovYDeg) * 0.5f);
+    std::array<glm::vec3, 8> c{};
+    for (int i = 0; i < 8; ++i) {
+        const float d = (i & 4) ? far : near;
+        const float h = d * tanPhi, w = h * aspect;
+        c[i] = eye - back * d + right * ((i & 1) ? w : -w) + up * ((i & 2) ? h : -h);
+    }
+    return c;
+}
+
+glm::vec3 exitTowardLight(const glm::vec3& p, const glm::vec3& l, const Aabb& S) noexcept {
+    if (!S.contains(p, 1e-4f * std::max(1.f, glm::length(S.extent())))) return p;
+    const glm::vec3 dir = -l;
+    float tExit = std::numeric_limits<float>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        if (dir[k] > 0.f) tExit = std::min(tExit, (S.hi[k] - p[k]) / dir[k]);
+        else if (dir[k] < 0.f) tExit = std::min(tExit, (S.lo[k] - p[k]) / dir[k]);
+    }
+    if (!std::isfinite(tExit) || tExit < 0.f) return p;
+    return p + tExit * dir;
+}
+
+std::vector<glm::vec3> focusBody(const std::array<glm::vec3, 8>& frustum, const Aabb& S, const glm::vec3& l) {
+    ConvexBody body = ConvexBody::fromCorners(frustum);
+    body.clip(S);
+    std::vector<glm::vec3> points = body.vertices();
+    const size_t n = points.size();
+    for (size_t i = 0; i < n; ++i) points.push_back(exitTowardLight(points[i], l, S));
+    return points;
+}
+
+} // namespace geometry

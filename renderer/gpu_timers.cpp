@@ -1,0 +1,71 @@
+#include "gpu_timers.h"
+
+namespace renderer {
+
+double PassTimes::total() const noexcept {
+    double t = 0;
+    for (double v : ms) t += v;
+    return t;
+}
+
+GpuTimers::GpuTimers() {
+    for (auto& s : slots_) glGenQueries(kPasses, s.queries);
+}
+
+GpuTimers::~GpuTimers() {
+    for (auto& s : slots_) glDeleteQueries(kPasses, s.queries);
+}
+
+void GpuTimers::begin(Pass p) noexcept {
+    Slot& s = slots_[current_];
+    if (open_) end();
+    const int i = static_cast<int>(p);
+    glBeginQuery(GL_TIME_ELAPSED, s.queries[i]);
+    s.used[i] = true;
+    open_ = true;
+}
+
+void GpuTimers::end() noexcept {
+    if (!open_) return;
+    glEndQuery(GL_TIME_ELAPSED);
+    open_ = false;
+}
+
+void GpuTimers::collect(Slot& s, bool wait) noexcept {
+    if (!s.pending) return;
+    PassTimes t;
+    for (int i = 0; i < kPasses; ++i) {
+        if (!s.used[i]) continue;
+        GLint available = GL_FALSE;
+        glGetQueryObjectiv(s.queries[i], GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available && !wait) return;
+    }
+    for (int i = 0; i < kPasses; ++i) {
+        if (!s.used[i]) continue;
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(s.queries[i], GL_QUERY_RESULT, &ns);
+        t.ms[i] = static_cast<double>(ns) * 1e-6;
+        s.used[i] = false;
+    }
+    t.valid = true;
+    s.pending = false;
+    latest_ = t;
+}
+
+void GpuTimers::endFrame() noexcept {
+    end();
+    slots_[current_].pending = true;
+    current_ = (current_ + 1) % kFrames;
+    // Oldest first, so `latest_` ends on the newest finished frame.
+    for (int k = 0; k < kFrames; ++k) collect(slots_[(current_ + k) % kFrames], false);
+    // A slot about to be reused must be drained even if it means waiting.
+    collect(slots_[current_], true);
+}
+
+const PassTimes& GpuTimers::waitForAll() noexcept {
+    end();
+    for (int k = 0; k < kFrames; ++k) collect(slots_[(current_ + k) % kFrames], true);
+    return latest_;
+}
+
+} // namespace renderer

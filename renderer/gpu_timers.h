@@ -1,0 +1,51 @@
+#pragma once
+// GPU time per pass from GL_TIME_ELAPSED queries, read a few frames later so the frame never
+// waits on the GPU.
+#include "gl/gl_api.h"
+
+#include <array>
+#include <cstddef>
+
+namespace renderer {
+
+enum class Pass { Shadow, Eye, LightView, Count };
+
+struct PassTimes {
+    std::array<double, static_cast<std::size_t>(Pass::Count)> ms{}; // GPU milliseconds per pass
+    bool valid = false;
+    [[nodiscard]] double of(Pass p) const noexcept { return ms[static_cast<std::size_t>(p)]; }
+    [[nodiscard]] double total() const noexcept;
+};
+
+class GpuTimers {
+public:
+    GpuTimers();
+    ~GpuTimers();
+    GpuTimers(const GpuTimers&) = delete;
+    GpuTimers& operator=(const GpuTimers&) = delete;
+
+    void begin(Pass p) noexcept;
+    void end() noexcept;
+    /// Closes the frame; collects any earlier frame whose results are ready.
+    void endFrame() noexcept;
+    /// The newest frame whose results have arrived (valid == false before the first).
+    [[nodiscard]] const PassTimes& latest() const noexcept { return latest_; }
+    /// Waits for every frame in flight (for one-shot exports, not for the interactive loop).
+    const PassTimes& waitForAll() noexcept;
+
+private:
+    static constexpr int kFrames = 4;
+    static constexpr int kPasses = static_cast<int>(Pass::Count);
+    struct Slot {
+        GLuint queries[kPasses] = {};
+        bool used[kPasses] = {};
+        bool pending = false;
+    };
+    void collect(Slot& s, bool wait) noexcept;
+    std::array<Slot, kFrames> slots_{};
+    int current_ = 0;
+    bool open_ = false;
+    PassTimes latest_;
+};
+
+} // namespace renderer

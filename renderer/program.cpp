@@ -1,0 +1,63 @@
+#include "program.h"
+
+#include "shader_sources.h"
+
+#include <stdexcept>
+
+namespace renderer {
+
+static GLuint compile(GLenum stage, std::string_view name) {
+    const std::string_view src = shaderSource(name);
+    const GLuint s = glCreateShader(stage);
+    const GLchar* text = src.data();
+    const GLint len = static_cast<GLint>(src.size());
+    glShaderSource(s, 1, &text, &len);
+    glCompileShader(s);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = {};
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        glDeleteShader(s);
+        throw std::runtime_error("shader " + std::string(name) + " does not compile: " + log);
+    }
+    return s;
+}
+
+Program::Program(std::string_view vertexName, std::string_view fragmentName) {
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertexName);
+    GLuint fs = 0;
+    try {
+        fs = compile(GL_FRAGMENT_SHADER, fragmentName);
+    } catch (...) {
+        glDeleteShader(vs);
+        throw;
+    }
+    id_ = glCreateProgram();
+    glAttachShader(id_, vs);
+    glAttachShader(id_, fs);
+    glLinkProgram(id_);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = {};
+        glGetProgramInfoLog(id_, sizeof log, nullptr, log);
+        glDeleteProgram(id_);
+        throw std::runtime_error("program " + std::string(vertexName) + "+" + std::string(fragmentName) +
+                                 " does not link: " + log);
+    }
+}
+
+Program::~Program() { glDeleteProgram(id_); }
+
+GLint Program::location(const char* name) {
+    auto it = locations_.find(name);
+    if (it != locations_.end()) return it->second;
+    const GLint loc = glGetUniformLocation(id_, name);
+    locations_.emplace(name, loc);
+    return loc;
+}
+
+} // namespace renderer

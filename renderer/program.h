@@ -1,0 +1,32 @@
+#pragma once
+// A linked GL program with cached uniform locations.
+#include "gl/gl_api.h"
+
+#include <glm/glm.hpp>
+#include <string>
+#include <unordered_map>
+
+namespace renderer {
+
+class Program {
+public:
+    /// Compiles built-in shaders by file name; throws std::runtime_error with the GL log.
+    Program(std::string_view vertexName, std::string_view fragmentName);
+    ~Program();
+    Program(const Program&) = delete;
+    Program& operator=(const Program&) = delete;
+
+    void use() const noexcept { glUseProgram(id_); }
+    [[nodiscard]] GLint location(const char* name);
+    void set(const char* name, int v) { glUniform1i(location(name), v); }
+    void set(const char* name, float v) { glUniform1f(location(name), v); }
+    void set(const char* name, const glm::vec2& v) { glUniform2f(location(name), v.x, v.y); }
+    void set(const char* name, const glm::vec3& v) { glUniform3f(location(name), v.x, v.y, v.z); }
+    void set(const char* name, const glm::mat4& m) { glUniformMatrix4fv(location(name), 1, GL_FALSE, &m[0][0]); }
+
+private:
+    GLuint id_ = 0;
+    std::unordered_map<std::string, GLint> locations_;
+};
+
+} // namespace renderer

@@ -1,0 +1,145 @@
+// The "platform" built-in scene: deterministic, on its triangle budget, well formed.
+#include "geometry/builtin_scenes.h"
+#include "geometry/chunking.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace geometry {
+namespace {
+
+/// Built once: the default scene is used by several tests and costs tens of milliseconds.
+const Scene& defaultScene() {
+    static const Scene scene = makePlatformScene();
+    return scene;
+}
+
+glm::vec3 toWorld(const Mesh& m, const glm::vec3& p) { return glm::vec3(m.transform * glm::vec4(p, 1.f)); }
+
+bool sameGeometry(const Scene& a, const Scene& b) {
+    if (a.meshes.size() != b.meshes.size()) return false;
+    for (size_t i = 0; i < a.meshes.size(); ++i) {
+        const Mesh& ma = a.meshes[i];
+        const Mesh& mb = b.meshes[i];
+        if (ma.name != mb.name || ma.positions != mb.positions || ma.normals != mb.normals || ma.indices != mb.indices)
+            return false;
+    }
+    return true;
+}
+
+TEST(PlatformScene, SameSeedGivesIdenticalScene) {
+    const Scene a = makePlatformScene({100'000, 7});
+    const Scene b = makePlatformScene({100'000, 7});
+    EXPECT_TRUE(sameGeometry(a, b));
+}
+
+TEST(PlatformScene, DifferentSeedGivesDifferentScene) {
+    const Scene a = makePlatformScene({100'000, 7});
+    const Scene b = makePlatformScene({100'000, 8});
+    EXPECT_FALSE(sameGeometry(a, b));
+}
+
+TEST(PlatformScene, NameAndBuiltinLookup) {
+    EXPECT_EQ(defaultScene().name, "platform");
+    EXPECT_EQ(makeBuiltinScene("platform").triangleCount(), defaultScene().triangleCount());
+}
+
+class PlatformTriangleBudget : public ::testing::TestWithParam<uint32_t> {};
+
+TEST_P(PlatformTriangleBudget, WithinTenPercentOfTarget) {
+    const uint32_t target = GetParam();
+    const Scene scene = makePlatformScene({target, 1});
+    const double count = static_cast<double>(scene.triangleCount());
+    EXPECT_NEAR(count, target, 0.1 * target) << "target " << target;
+}
+
+INSTANTIATE_TEST_SUITE_P(Targets, PlatformTriangleBudget, ::testing::Values(20'000u, 100'000u, 250'000u, 1'000'000u));
+
+TEST(PlatformScene, BoundsContainEveryVertex) {
+    const Scene& scene = defaultScene();
+    const Aabb bounds = scene.bounds();
+    ASSERT_FALSE(bounds.empty());
+    for (const Mesh& m : scene.meshes)
+        for (const glm::vec3& p : m.positions) ASSERT_TRUE(bounds.contains(toWorld(m, p), 1e-3f)) << m.name;
+}
+
+TEST(PlatformScene, SeaSpansAtLeastTwoKilometres) {
+    const Scene& scene = defaultScene();
+    const Mesh* sea = nullptr;
+    for (const Mesh& m : scene.meshes)
+        if (m.name == "sea") sea = &m;
+    ASSERT_NE(sea, nullptr);
+    const Aabb b = sea->worldBounds();
+    EXPECT_GE(b.extent().x, 2000.f);
+    EXPECT_GE(b.extent().z, 2000.f);
+    EXPECT_FLOAT_EQ(b.lo.y, 0.f);
+    EXPECT_FLOAT_EQ(b.hi.y, 0.f);
+    // The structure rises well above the sea.
+    EXPECT_GT(scene.bounds().hi.y, 50.f);
+}
+
+TEST(PlatformScene, ChunksCoverEveryTriangleOnceWithinBounds) {
+    for (const Mesh& m : defaultScene().meshes) {
+        SCOPED_TRACE(m.name);
+        const size_t triangles = m.triangleCount();
+        ASSERT_GT(triangles, 0u);
+        ASSERT_FALSE(m.chunks.empty());
+        std::vector<int> covered(triangles, 0);
+        for (const Chunk& c : m.chunks) {
+            EXPECT_GT(c.triangleCount, 0u);
+            EXPECT_LE(c.triangleCount, kMaxChunkTriangles);
+            ASSERT_LE(static_cast<size_t>(c.firstTriangle) + c.triangleCount, triangles);
+            for (uint32_t t = c.firstTriangle; t < c.firstTriangle + c.triangleCount; ++t) {
+                ++covered[t];
+                for (int k = 0; k < 3; ++k) {
+                    const glm::vec3 p = toWorld(m, m.positions[m.indices[3 * size_t(t) + k]]);
+                    ASSERT_TRUE(c.bounds.contains(p, 1e-3f)) << "triangle " << t;
+                }
+            }
+        }
+        for (size_t t = 0; t < triangles; ++t) ASSERT_EQ(covered[t], 1) << "triangle " << t;
+    }
+}
+
+TEST(PlatformScene, IndicesInRange) {
+    for (const Mesh& m : defaultScene().meshes) {
+        ASSERT_EQ(m.indices.size() % 3, 0u) << m.name;
+        ASSERT_EQ(m.positions.size(), m.normals.size()) << m.name;
+        for (uint32_t i : m.indices) ASSERT_LT(i, m.positions.size()) << m.name;
+    }
+}
+
+TEST(PlatformScene, CameraHasHugeDepthRange) {
+    const Camera& c = defaultScene().camera;
+    EXPECT_FLOAT_EQ(c.near, 0.5f);
+    EXPECT_GE(c.far, 1000.f);
+    EXPECT_FLOAT_EQ(c.fovYDeg, 60.f);
+    // Standing above the sea, looking slightly down.
+    EXPECT_GT(c.eye.y, 0.f);
+    EXPECT_LT(c.viewDir().y, 0.f);
+    EXPECT_GT(c.viewDir().y, -0.5f);
+}
+
+TEST(PlatformScene, LightIsAnElevatedSun) {
+    const glm::vec3 l = defaultScene().light.l();
+    const float elevationDeg = glm::degrees(std::asin(-l.y));
+    EXPECT_GE(elevationDeg, 35.f);
+    EXPECT_LE(elevationDeg, 55.f);
+}
+
+TEST(PlatformScene, PositionsFiniteAndNormalsUnit) {
+    for (const Mesh& m : defaultScene().meshes) {
+        SCOPED_TRACE(m.name);
+        for (const glm::vec3& p : m.positions)
+            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+        for (const glm::vec3& n : m.normals) {
+            ASSERT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+            ASSERT_NEAR(glm::length(n), 1.f, 1e-3f);
+        }
+    }
+}
+
+} // namespace
+} // namespace geometry

@@ -1,0 +1,73 @@
+#include "geometry/builtin_scenes.h"
+#include "geometry/chunking.h"
+#include "geometry/mesh_builder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace geometry;
+
+TEST(PlaneScene, IsDeterministicWithPolesAndBounds) {
+    const Scene a = makePlaneScene(), b = makePlaneScene();
+    ASSERT_EQ(a.meshes.size(), b.meshes.size());
+    for (size_t i = 0; i < a.meshes.size(); ++i) {
+        EXPECT_EQ(a.meshes[i].positions, b.meshes[i].positions);
+        EXPECT_EQ(a.meshes[i].indices, b.meshes[i].indices);
+    }
+    const Aabb S = a.bounds();
+    EXPECT_NEAR(S.lo.x, -kPlaneSceneHalfSize, 1e-4);
+    EXPECT_NEAR(S.hi.x, kPlaneSceneHalfSize, 1e-4);
+    EXPECT_NEAR(S.lo.y, 0.f, 1e-4);
+    float tallest = 0.f;
+    for (const auto& p : planeScenePoles()) tallest = std::max(tallest, p.height);
+    EXPECT_NEAR(S.hi.y, tallest, 1e-4);
+}
+
+TEST(Chunking, ChunksCoverEveryTriangleOnceWithinLimitAndBounds) {
+    MeshBuilder mb("grid", glm::vec3(1.f));
+    mb.addGroundGrid({0, 0, 0}, 100.f, 100); // 20000 triangles
+    const Mesh m = mb.build();
+    ASSERT_EQ(m.triangleCount(), 20000u);
+    uint32_t next = 0;
+    for (const auto& c : m.chunks) {
+        EXPECT_EQ(c.firstTriangle, next);
+        EXPECT_LE(c.triangleCount, kMaxChunkTriangles);
+        EXPECT_GT(c.triangleCount, 0u);
+        for (uint32_t t = c.firstTriangle; t < c.firstTriangle + c.triangleCount; ++t)
+            for (int k = 0; k < 3; ++k) EXPECT_TRUE(c.bounds.contains(m.positions[m.indices[3 * t + k]], 1e-4f));
+        next += c.triangleCount;
+    }
+    EXPECT_EQ(next, 20000u);
+    // Spatial coherence: chunks of a flat grid cover roughly 1/N of its area each.
+    const float area = 100.f * 100.f;
+    for (const auto& c : m.chunks) EXPECT_LT(c.bounds.extent().x * c.bounds.extent().z, area / 2.f);
+}
+
+TEST(Gamma, AngleBetweenLightAndView) {
+    EXPECT_NEAR(gammaDeg({0, 0, -1}, {0, -1, 0}), 90.f, 1e-4);
+    EXPECT_NEAR(gammaDeg({0, 0, -1}, {0, 0, -1}), 0.f, 1e-3);
+    EXPECT_NEAR(gammaDeg({0, 0, -1}, {0, 0, 1}), 0.f, 1e-3); // γ folds facing light onto [0, 90]
+    EXPECT_NEAR(lightViewAngleDeg({0, 0, -1}, {0, 0, 1}), 180.f, 1e-3);
+    EXPECT_NEAR(lightViewAngleDeg({0, 0, -1}, {0, 0, -1}), 0.f, 1e-3);
+    EXPECT_NEAR(gammaDeg({0, 0, -1}, glm::normalize(glm::vec3(0, -1, -1))), 45.f, 1e-3);
+    EXPECT_EQ(gammaDeg({0, 0, 0}, {0, -1, 0}), 0.f);
+    EXPECT_EQ(gammaDeg({NAN, 0, 0}, {0, -1, 0}), 0.f);
+}
+
+TEST(MeshBuilder, NormalsPointOutOfClosedSolids) {
+    MeshBuilder mb("solids", glm::vec3(1.f));
+    mb.addBox({1, 2, 3}, {0.5f, 1.f, 2.f});
+    mb.addBeam({0, 0, 0}, {3, 4, 5}, 0.2f);
+    mb.addCylinder({0, 0, 0}, {0, 5, 0}, 0.5f, 12);
+    const Mesh m = mb.build();
+    // For each triangle the face normal agrees with the winding and points away from its solid's axis.
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        c = m.positions[m.indices[3 * t + 2]];
+        const glm::vec3 wound = glm::cross(b - a, c - a);
+        const glm::vec3 n = m.normals[m.indices[3 * t]];
+        EXPECT_GT(glm::dot(wound, n), 0.f) << "triangle " << t;
+    }
+}
