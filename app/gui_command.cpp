@@ -23,7 +23,7 @@ int runGuiOrHeadless(const RenderOptions& options) {
     }
     geometry::Scene scene = loadScene(options);
     ui::ViewerOptions v;
-    v.shadowRes = options.shadowRes;
+    v.settings = options.settings;
     v.screenshotDir = options.out;
     return ui::runViewer(std::move(scene), v);
 }

@@ -11,13 +11,12 @@ HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames) {
     HeadlessFrame f;
     f.scene = loadScene(options);
     f.context = renderer::createHeadlessContext(renderer::parseBackend(options.backend));
-    geometry::ShadowSettings settings;
-    settings.resolution = options.shadowRes;
+    const geometry::ShadowSettings& settings = options.settings;
     const auto t0 = std::chrono::steady_clock::now();
     f.plan = geometry::planShadows(settings, f.scene.bounds(), f.scene.camera, f.scene.light, options.size);
     f.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     f.renderer = std::make_unique<renderer::Renderer>(f.scene);
-    for (int i = 0; i <= warmupFrames; ++i) f.renderer->render(f.plan, options.size, lightViewSize(options.shadowRes));
+    for (int i = 0; i <= warmupFrames; ++i) f.renderer->render(f.plan, options.size, lightViewSize(settings.resolution));
     f.renderer->waitForTimings();
     return f;
 }

@@ -20,7 +20,15 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     j["backend"] = renderer::backendName(f.context->backend());
     j["scene"] = f.scene.name;
     j["size"] = {o.size.width, o.size.height};
-    j["shadow_res"] = o.shadowRes;
+    j["shadow_res"] = o.settings.resolution;
+    nlohmann::json settings;
+    for (const auto& info : geometry::settingsDeclaration()) settings[std::string(info.key)] = info.format(o.settings);
+    j["settings"] = settings;
+    nlohmann::json splits = nlohmann::json::array();
+    for (const auto& s : f.plan.splits)
+        splits.push_back({{"near", s.near}, {"far", s.far}, {"n_prime", s.warped() ? nlohmann::json(s.nPrime) : nlohmann::json("inf")},
+                          {"lambda", s.lambda}, {"resolution", s.resolution}, {"empty", s.empty()}});
+    j["splits"] = splits;
     j["triangles"] = f.scene.triangleCount();
     j["gamma_deg"] = f.plan.gammaDeg;
     j["light_view_angle_deg"] = f.plan.lightViewAngleDeg;

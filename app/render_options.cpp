@@ -81,9 +81,23 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
             o.light = l;
         },
         "Light direction dx,dy,dz, from the light into the scene (default: the scene's)");
-    cmd.add_option("--shadow-res", o.shadowRes, "Shadow map resolution in texels")
-        ->capture_default_str()
-        ->check(CLI::Range(16, 16384));
+    cmd.add_option_function<int>(
+           "--shadow-res", [&o](int r) { geometry::applySetting(o.settings, "shadow_map.resolution", std::to_string(r)); },
+           "Shadow map resolution in texels (= --set shadow_map.resolution=N; default 2048)");
+    addSettingOption(cmd, o.settings);
+}
+
+void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings) {
+    std::string keys;
+    for (const auto& info : geometry::settingsDeclaration()) keys += "\n  " + std::string(info.key) + ": " + std::string(info.help) + " (" + info.rangeText() + ")";
+    cmd.add_option_function<std::vector<std::string>>(
+        "--set",
+        [&settings](const std::vector<std::string>& assignments) {
+            for (const auto& a : assignments) geometry::applyAssignment(settings, a);
+        },
+        "Shadow setting key=value (repeatable). Keys:" + keys)
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false);
 }
 
 geometry::Scene loadScene(const RenderOptions& o) {

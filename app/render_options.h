@@ -18,11 +18,14 @@ struct RenderOptions {
     std::string backend = "auto";
     std::optional<geometry::Camera> camera;         // eye + target overrides
     std::optional<glm::vec3> light;                 // l overrides
-    int shadowRes = 2048;
+    geometry::ShadowSettings settings;             // --shadow-res, --set key=value
 };
 
-/// Adds --scene, --size, --out, --backend, --camera, --light, --shadow-res to `cmd`.
+/// Adds --scene, --size, --out, --backend, --camera, --light, --shadow-res, --set to `cmd`.
 void addRenderOptions(CLI::App& cmd, RenderOptions& options);
+
+/// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()).
+void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings);
 
 /// The scene named by options.scene with the camera and light overrides applied.
 /// Throws std::invalid_argument with a one-line reason.

@@ -33,6 +33,10 @@ void Renderer::render(const geometry::ShadowPlan& plan, const geometry::Viewport
     stats_.gpu = timers_.latest();
 }
 
+float Renderer::mapScale(const geometry::SplitPlan& split) const noexcept {
+    return shadowMaps_.resolution() > 0 ? float(split.resolution) / float(shadowMaps_.resolution()) : 1.f;
+}
+
 const PassTimes& Renderer::waitForTimings() noexcept {
     stats_.gpu = timers_.waitForAll();
     return stats_.gpu;
@@ -78,11 +82,12 @@ void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewpor
     eyeProgram_.set("uViewDir", plan.v);
     const int count = static_cast<int>(plan.splits.size());
     eyeProgram_.set("uSplitCount", count);
+    eyeProgram_.set("uReceiverOffset", plan.receiverOffset);
     for (int i = 0; i < count; ++i) {
         const std::string idx = "[" + std::to_string(i) + "]";
         eyeProgram_.set(("uLightViewProj" + idx).c_str(), plan.splits[i].lightViewProj);
-        eyeProgram_.set(("uDepthBias" + idx).c_str(), plan.splits[i].depthBias);
         eyeProgram_.set(("uSplitFar" + idx).c_str(), plan.splits[i].far);
+        eyeProgram_.set(("uMapScale" + idx).c_str(), mapScale(plan.splits[i]));
     }
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D_ARRAY, shadowMaps_.texture());
@@ -103,6 +108,7 @@ void Renderer::lightViewPass(const geometry::ShadowPlan& plan, int size, int spl
     glBindTexture(GL_TEXTURE_2D_ARRAY, shadowMaps_.texture());
     lightViewProgram_.set("uShadowMap", 0);
     lightViewProgram_.set("uLayer", split);
+    lightViewProgram_.set("uMapScale", mapScale(plan.splits[split]));
     lightViewProgram_.set("uDepthRange", plan.splits[split].bodyDepthRange);
     glBindVertexArray(emptyVao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);

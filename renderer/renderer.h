@@ -43,6 +43,8 @@ public:
 private:
     void shadowPass(const geometry::ShadowPlan& plan);
     void eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport);
+    /// Fraction of the array layer a split's map uses (splits may have lower resolution).
+    [[nodiscard]] float mapScale(const geometry::SplitPlan& split) const noexcept;
     void lightViewPass(const geometry::ShadowPlan& plan, int size, int split);
 
     std::unique_ptr<GpuScene> scene_;

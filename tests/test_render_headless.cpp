@@ -15,7 +15,7 @@ app::RenderOptions smallOptions(const std::string& scene) {
     app::RenderOptions o;
     o.scene = scene;
     o.size = {320, 240};
-    o.shadowRes = 1024;
+    o.settings.resolution = 1024;
     o.backend = "osmesa";
     return o;
 }
@@ -76,7 +76,7 @@ TEST(HeadlessRender, PoleShadowFollowsTheLight) {
 // no caster (an empty plan split means "nothing casts").
 TEST(HeadlessRender, PlatformHasLitAndShadowedReceivers) {
     app::RenderOptions o = smallOptions("platform");
-    o.shadowRes = 512;
+    o.settings.resolution = 512;
     const app::HeadlessFrame f = app::renderHeadless(o, 0);
     EXPECT_EQ(renderer::takeGlErrors(), "");
     const renderer::Image shadowed = f.renderer->readEye();

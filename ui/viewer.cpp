@@ -1,6 +1,7 @@
 #include "viewer.h"
 
 #include "orbit_camera.h"
+#include "settings_panel.h"
 #include "renderer/context.h"
 #include "renderer/renderer.h"
 
@@ -65,8 +66,7 @@ int runViewer(geometry::Scene scene, const ViewerOptions& options) {
 
     OrbitCamera orbit = OrbitCamera::from(scene.camera);
     SunAngles sun = SunAngles::from(scene.light.direction);
-    geometry::ShadowSettings settings;
-    settings.resolution = options.shadowRes;
+    geometry::ShadowSettings settings = options.settings;
     geometry::Viewport eyeSize{960, 540};
     std::string status;
     double cpuFrameMs = 0;
@@ -129,14 +129,13 @@ int runViewer(geometry::Scene scene, const ViewerOptions& options) {
         ImGui::SliderFloat("Elevation", &sun.elevationDeg, 1.f, 90.f, "%.1f deg");
         ImGui::Text("gamma (light vs view): %.1f deg", plan.gammaDeg);
         ImGui::Separator();
-        ImGui::TextDisabled("Shadow map");
-        static const int kResolutions[] = {256, 512, 1024, 2048, 4096};
-        if (ImGui::BeginCombo("Resolution", std::to_string(settings.resolution).c_str())) {
-            for (int r : kResolutions)
-                if (ImGui::Selectable(std::to_string(r).c_str(), r == settings.resolution)) settings.resolution = r;
-            ImGui::EndCombo();
+        ImGui::TextDisabled("Shadows");
+        drawSettingsWidgets(settings);
+        for (size_t i = 0; i < plan.splits.size(); ++i) {
+            const auto& sp = plan.splits[i];
+            ImGui::Text("split %zu: [%.2f, %.2f] n'=%s res %d", i, sp.near, sp.far,
+                        sp.warped() ? std::to_string(sp.nPrime).c_str() : "inf", sp.resolution);
         }
-        ImGui::SliderFloat("Constant bias", &settings.constantBias, 0.f, 1.f, "%.3f", ImGuiSliderFlags_Logarithmic);
         ImGui::Separator();
         ImGui::TextDisabled("Timing");
         const auto& st = renderer.stats();

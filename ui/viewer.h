@@ -1,13 +1,14 @@
 #pragma once
 // The interactive window: eye view and light view side by side, orbit camera, light control.
 #include "geometry/scene.h"
+#include "geometry/settings.h"
 
 #include <string>
 
 namespace ui {
 
 struct ViewerOptions {
-    int shadowRes = 2048;
+    geometry::ShadowSettings settings;
     std::string screenshotDir = "out";
 };
 

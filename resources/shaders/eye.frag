@@ -6,8 +6,9 @@ uniform vec3 uColor;
 uniform vec3 uLightDir;           // l: from the light into the scene
 uniform sampler2DArray uShadowMap;
 uniform mat4 uLightViewProj[8];
-uniform float uDepthBias[8];      // constant bias in depth-map units, per split
+uniform float uReceiverOffset;    // constant bias: receiver moved towards the light, scene units
 uniform float uSplitFar[8];
+uniform float uMapScale[8];      // split resolution / array resolution (per-split falloff)
 uniform int uSplitCount;
 uniform vec3 uEye;
 uniform vec3 uViewDir;
@@ -19,11 +20,11 @@ float shadowFactor(vec3 worldPos) {
     float viewDepth = dot(worldPos - uEye, uViewDir);
     int split = 0;
     while (split < uSplitCount - 1 && viewDepth > uSplitFar[split]) ++split;
-    vec4 clip = uLightViewProj[split] * vec4(worldPos, 1.0);
+    vec4 clip = uLightViewProj[split] * vec4(worldPos - uLightDir * uReceiverOffset, 1.0);
     vec3 p = clip.xyz / clip.w * 0.5 + 0.5;
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
-    float stored = texture(uShadowMap, vec3(p.xy, float(split))).r;
-    return p.z - uDepthBias[split] > stored ? 0.0 : 1.0;
+    float stored = texture(uShadowMap, vec3(p.xy * uMapScale[split], float(split))).r;
+    return p.z > stored ? 0.0 : 1.0;
 }
 
 void main() {

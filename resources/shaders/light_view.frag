@@ -3,10 +3,11 @@
 in vec2 vUv;
 uniform sampler2DArray uShadowMap;
 uniform int uLayer;
+uniform float uMapScale;  // split resolution / array resolution
 uniform vec2 uDepthRange; // visible depth range [black point, white point]
 layout(location = 0) out vec4 oColor;
 void main() {
-    float d = texture(uShadowMap, vec3(vUv, float(uLayer))).r;
+    float d = texture(uShadowMap, vec3(vUv * uMapScale, float(uLayer))).r;
     if (d >= 1.0) { oColor = vec4(0.08, 0.10, 0.22, 1.0); return; }
     float t = clamp((d - uDepthRange.x) / max(uDepthRange.y - uDepthRange.x, 1e-6), 0.0, 1.0);
     oColor = vec4(vec3(1.0 - t), 1.0);
