@@ -28,10 +28,18 @@ static void addUnique(std::vector<glm::vec3>& pts, const glm::vec3& p, float eps
 }
 
 void ConvexBody::clip(const Plane& plane) {
+    // Most planes cut nothing (a frustum well inside the scene): skip them without allocating.
+    bool cuts = false;
+    for (const auto& face : faces_)
+        for (const auto& p : face) cuts = cuts || plane.distance(p) > 0.f;
+    if (!cuts) return;
     std::vector<Polygon> out;
+    out.reserve(faces_.size() + 1);
     std::vector<glm::vec3> cut; // points on the plane: the cap's vertices
+    cut.reserve(2 * faces_.size());
     for (const auto& face : faces_) {
         Polygon kept;
+        kept.reserve(face.size() + 1);
         const size_t n = face.size();
         for (size_t i = 0; i < n; ++i) {
             const glm::vec3& a = face[i];

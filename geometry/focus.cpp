@@ -6,9 +6,11 @@
 namespace geometry {
 
 std::array<glm::vec3, 8> frustumCorners(const Camera& cam, float aspect, float near, float far) noexcept {
-    const glm::mat4 invView = glm::inverse(cam.view());
-    const glm::vec3 right = glm::vec3(invView[0]), up = glm::vec3(invView[1]), back = glm::vec3(invView[2]);
-    const glm::vec3 eye = glm::vec3(invView[3]);
+    // The view matrix is a rotation and a translation: its inverse's axes are its rows.
+    const glm::mat4 view = cam.view();
+    const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]),
+        back(view[0][2], view[1][2], view[2][2]);
+    const glm::vec3 eye = cam.eye;
     const float tanPhi = std::tan(glm::radians(cam.fovYDeg) * 0.5f);
     std::array<glm::vec3, 8> c{};
     for (int i = 0; i < 8; ++i) {

@@ -1,0 +1,160 @@
+// The full shadow plan: splits, focus bodies and warps together.
+#include "geometry/builtin_scenes.h"
+#include "geometry/focus.h"
+#include "geometry/shadow_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace geometry;
+
+namespace {
+
+float uniform01(std::mt19937& rng) { return float(rng() >> 8) * (1.f / 16777216.f); }
+float uniform(std::mt19937& rng, float a, float b) { return a + (b - a) * uniform01(rng); }
+glm::vec3 randomUnit(std::mt19937& rng) {
+    for (;;) {
+        const glm::vec3 v(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+        const float len = glm::length(v);
+        if (len > 0.1f && len <= 1.f) return v / len;
+    }
+}
+
+bool finite(const glm::mat4& m) {
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(m[i][j])) return false;
+    return true;
+}
+
+bool insideUnitCube(const glm::mat4& m, const glm::vec3& p, float eps = 2e-4f) {
+    const glm::vec4 c = m * glm::vec4(p, 1.f);
+    if (!(c.w > 0.f)) return false;
+    const glm::vec3 ndc = glm::vec3(c) / c.w;
+    return std::abs(ndc.x) <= 1.f + eps && std::abs(ndc.y) <= 1.f + eps && std::abs(ndc.z) <= 1.f + eps;
+}
+
+const WarpMethod kMethods[] = {WarpMethod::Uniform, WarpMethod::Psm, WarpMethod::Lispsm,
+                               WarpMethod::Glispsm, WarpMethod::Gmnpr, WarpMethod::Manual};
+
+} // namespace
+
+// Every point of V_i ∩ S and every point of S between it and the light lands in split i's unit
+// cube, for every warp, both warp directions and 1–4 splits (DESIGN §3.1, §3.2).
+TEST(Plan, WarpedSplitsKeepReceiversAndCastersInTheirUnitCube) {
+    std::mt19937 rng(99);
+    Aabb S;
+    S.add({-40, 0, -60});
+    S.add({50, 25, 30});
+    int checked = 0;
+    for (int trial = 0; trial < 240; ++trial) {
+        ShadowSettings settings;
+        settings.warp.method = kMethods[trial % 6];
+        settings.direction = (trial / 6) % 2 ? WarpDirection::Middle : WarpDirection::Standard;
+        settings.splits.count = 1 + (trial / 12) % 4;
+        settings.splits.scheme = SplitScheme((trial / 48) % 5);
+        Camera cam;
+        cam.eye = {uniform(rng, -60, 60), uniform(rng, -5, 40), uniform(rng, -70, 40)};
+        cam.target = cam.eye + randomUnit(rng);
+        cam.fovYDeg = uniform(rng, 20, 90);
+        cam.near = uniform(rng, 0.1f, 2.f);
+        cam.far = uniform(rng, 30.f, 300.f);
+        DirectionalLight light{randomUnit(rng)};
+        const Viewport vp{640, 480};
+        const ShadowPlan plan = planShadows(settings, S, cam, light, vp);
+        ASSERT_EQ(int(plan.splits.size()), settings.splits.count);
+        for (const auto& split : plan.splits) {
+            ASSERT_TRUE(finite(split.lightViewProj)) << "trial " << trial;
+            ASSERT_TRUE(std::isfinite(split.lambda));
+            if (split.empty()) continue;
+            ASSERT_NEAR(glm::dot(split.warpDir, plan.l), 0.f, 1e-4f) << "V_P ⊥ l";
+            const auto corners = frustumCorners(cam, vp.aspect(), split.near, split.far);
+            for (int k = 0; k < 60; ++k) {
+                const float u = uniform01(rng), v = uniform01(rng), w = uniform01(rng);
+                glm::vec3 p(0.f);
+                for (int c = 0; c < 8; ++c)
+                    p += corners[c] * (((c & 1) ? u : 1 - u) * ((c & 2) ? v : 1 - v) * ((c & 4) ? w : 1 - w));
+                if (!S.contains(p)) continue;
+                const glm::vec3 exit = exitTowardLight(p, plan.l, S);
+                EXPECT_TRUE(insideUnitCube(split.lightViewProj, p))
+                    << "receiver, trial " << trial << " " << warpMethodName(settings.warp.method);
+                EXPECT_TRUE(insideUnitCube(split.lightViewProj, p + uniform01(rng) * (exit - p)))
+                    << "caster, trial " << trial << " " << warpMethodName(settings.warp.method);
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 4000);
+}
+
+TEST(Plan, SplitsAreContiguousAndFollowTheScheme) {
+    const Scene scene = makePlaneScene();
+    ShadowSettings s;
+    s.splits.count = 3;
+    s.splits.scheme = SplitScheme::Log;
+    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, {640, 480});
+    ASSERT_EQ(plan.splits.size(), 3u);
+    EXPECT_FLOAT_EQ(plan.splits[0].near, scene.camera.near);
+    EXPECT_FLOAT_EQ(plan.splits[2].far, scene.camera.far);
+    for (int i = 1; i < 3; ++i) EXPECT_FLOAT_EQ(plan.splits[i].near, plan.splits[i - 1].far);
+    EXPECT_NEAR(plan.splits[0].far, 0.5 * std::pow(200.0, 1.0 / 3.0), 1e-4);
+}
+
+// With the light exactly parallel or anti-parallel to the view, every method falls back to
+// uniform and the plan stays finite.
+TEST(Plan, DuelingFrustaFallBackToUniform) {
+    const Scene scene = makePlaneScene();
+    for (auto method : kMethods)
+        for (float sign : {1.f, -1.f}) {
+            ShadowSettings s;
+            s.warp.method = method;
+            s.splits.count = 2;
+            DirectionalLight light{sign * scene.camera.viewDir()};
+            const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, light, {320, 240});
+            EXPECT_NEAR(plan.gammaDeg, 0.f, 0.05f);
+            for (const auto& split : plan.splits) {
+                EXPECT_FALSE(split.warped()) << warpMethodName(method);
+                EXPECT_TRUE(finite(split.lightViewProj));
+            }
+        }
+}
+
+// LiSPSM gives receivers near the eye more of the map than uniform does (the point of warping).
+TEST(Plan, LispsmGivesNearReceiversMoreTexels) {
+    const Scene scene = makePlaneScene();
+    const auto texelsAcross = [&](WarpMethod method, float viewDistance) {
+        ShadowSettings s;
+        s.warp.method = method;
+        const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, {640, 480});
+        const glm::vec3 p = scene.camera.eye + scene.camera.viewDir() * viewDistance;
+        const glm::vec3 ground(p.x, 0.f, p.z);
+        const auto uv = [&](glm::vec3 q) {
+            const glm::vec4 c = plan.splits[0].lightViewProj * glm::vec4(q, 1.f);
+            return glm::vec2(c) / c.w * 0.5f * float(s.resolution);
+        };
+        // Texels covered by a 1 m step along the ground, both ground axes.
+        return glm::length(uv(ground + glm::vec3(1, 0, 0)) - uv(ground)) +
+               glm::length(uv(ground + glm::vec3(0, 0, 1)) - uv(ground));
+    };
+    EXPECT_GT(texelsAcross(WarpMethod::Lispsm, 9.f), 2.f * texelsAcross(WarpMethod::Uniform, 9.f));
+}
+
+TEST(Plan, EmptyWhenTheViewMissesTheScene) {
+    Aabb S;
+    S.add({100, 100, 100});
+    S.add({110, 110, 110});
+    Camera cam;
+    cam.eye = {0, 0, 0};
+    cam.target = {0, 0, -1};
+    for (auto method : kMethods) {
+        ShadowSettings s;
+        s.warp.method = method;
+        s.splits.count = 4;
+        const ShadowPlan plan = planShadows(s, S, cam, DirectionalLight{}, {320, 240});
+        for (const auto& split : plan.splits) {
+            EXPECT_TRUE(split.empty());
+            EXPECT_TRUE(finite(split.lightViewProj));
+        }
+    }
+}

@@ -1,0 +1,94 @@
+#include "geometry/settings.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+using namespace geometry;
+
+namespace {
+std::string errorOf(const std::string& kv) {
+    ShadowSettings s;
+    try {
+        applyAssignment(s, kv);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+} // namespace
+
+TEST(Settings, EveryDeclaredKeyRoundTripsThroughText) {
+    ShadowSettings s;
+    EXPECT_TRUE(validate(s).empty());
+    for (const auto& info : settingsDeclaration()) {
+        ShadowSettings t;
+        applySetting(t, info.key, info.format(s));
+        EXPECT_EQ(info.get(t), info.get(s)) << info.key;
+        EXPECT_FALSE(info.help.empty()) << info.key;
+    }
+}
+
+TEST(Settings, AssignmentsChangeTheirField) {
+    ShadowSettings s;
+    applyAssignment(s, "splits.count=4");
+    applyAssignment(s, "splits.scheme=adaptive");
+    applyAssignment(s, "splits.alpha=2.5");
+    applyAssignment(s, "warp.method=glispsm");
+    applyAssignment(s, "warp.falloff=eq17");
+    applyAssignment(s, "splits.resolution_falloff=true");
+    applyAssignment(s, "shadow_map.resolution=1024");
+    EXPECT_EQ(s.splits.count, 4);
+    EXPECT_EQ(s.splits.scheme, SplitScheme::Adaptive);
+    EXPECT_DOUBLE_EQ(s.splits.alpha, 2.5);
+    EXPECT_EQ(s.warp.method, WarpMethod::Glispsm);
+    EXPECT_EQ(s.warp.falloff, GlispsmFalloff::Eq17);
+    EXPECT_TRUE(s.splits.resolutionFalloff);
+    EXPECT_EQ(s.resolution, 1024);
+}
+
+TEST(Settings, InvalidValuesNameTheKeyAndRange) {
+    EXPECT_NE(errorOf("splits.count=0").find("splits.count"), std::string::npos);
+    EXPECT_NE(errorOf("splits.count=0").find("1..8"), std::string::npos);
+    EXPECT_NE(errorOf("splits.count=9").find("1..8"), std::string::npos);
+    EXPECT_NE(errorOf("splits.count=2.5").find("splits.count"), std::string::npos);
+    EXPECT_NE(errorOf("splits.alpha=0.5").find("splits.alpha"), std::string::npos);
+    EXPECT_NE(errorOf("splits.alpha=nan").find("splits.alpha"), std::string::npos);
+    EXPECT_NE(errorOf("splits.lambda=inf").find("splits.lambda"), std::string::npos);
+    EXPECT_NE(errorOf("warp.method=foo").find("uniform, psm, lispsm"), std::string::npos);
+    EXPECT_NE(errorOf("splits.resolution_falloff=maybe").find("true or false"), std::string::npos);
+    EXPECT_NE(errorOf("no.such=1").find("unknown setting"), std::string::npos);
+    EXPECT_NE(errorOf("splits.count").find("key=value"), std::string::npos);
+    EXPECT_EQ(errorOf("splits.count=8"), "");
+}
+
+TEST(Settings, ValidateReportsOutOfRangeStructValues) {
+    ShadowSettings s;
+    s.splits.count = 0;
+    s.splits.alpha = NAN;
+    const auto problems = validate(s);
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_NE(problems[0].find("splits.count"), std::string::npos);
+    EXPECT_NE(problems[1].find("splits.alpha"), std::string::npos);
+    EXPECT_THROW(validateOrThrow(s), std::invalid_argument);
+}
+
+TEST(Settings, FrustumValidationNamesTheKey) {
+    EXPECT_NO_THROW(validateFrustum(1, 100, 60));
+    const auto message = [](double n, double f, double fov) {
+        try {
+            validateFrustum(n, f, fov);
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(message(0, 100, 60).rfind("near", 0), 0u);
+    EXPECT_EQ(message(-1, 100, 60).rfind("near", 0), 0u);
+    EXPECT_EQ(message(NAN, 100, 60).rfind("near", 0), 0u);
+    EXPECT_EQ(message(1, 1, 60).rfind("far", 0), 0u);
+    EXPECT_EQ(message(1, INFINITY, 60).rfind("far", 0), 0u);
+    EXPECT_EQ(message(1, 100, 180).rfind("fov-y", 0), 0u);
+}
