@@ -1,4 +1,5 @@
 // shadowscope: inspect, tune and document real-time shadows on CAD models.
+#include "curves_command.h"
 #include "gui_command.h"
 #include "render_command.h"
 
@@ -20,9 +21,15 @@ int main(int argc, char** argv) {
     CLI::App* render = cli.add_subcommand("render", "Render the eye and light views headless to PNG + metrics.json");
     app::addRenderOptions(*render, renderOptions);
 
+    app::CurvesOptions curvesOptions;
+    CLI::App* curves = cli.add_subcommand("curves", "Write the analytic curves (warp n', aliasing error m_z, split "
+                                                    "boundaries) as CSV + SVG charts, without rendering");
+    app::addCurvesCommand(*curves, curvesOptions);
+
     try {
         cli.parse(argc, argv);
         if (render->parsed()) return app::runRender(renderOptions);
+        if (curves->parsed()) return app::runCurves(curvesOptions);
         return app::runGuiOrHeadless(guiOptions);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);

@@ -1,10 +1,14 @@
 #include "render_options.h"
 
+#include "preset.h"
+
 #include "geometry/builtin_scenes.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -50,6 +54,57 @@ geometry::Viewport parseSize(const std::string& text) {
     }
 }
 
+/// Declares --set once for both addRenderOptions and addSettingOption.
+CLI::Option* addSetOption(CLI::App& cmd, std::function<void(const std::vector<std::string>&)> apply) {
+    std::string keys;
+    for (const auto& info : geometry::settingsDeclaration())
+        keys += "\n  " + std::string(info.key) + ": " + std::string(info.help) + " (" + info.rangeText() + ")";
+    return cmd.add_option_function<std::vector<std::string>>("--set", std::move(apply),
+                                                             "Shadow setting key=value (repeatable). Keys:" + keys)
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false);
+}
+
+/// Where a command's shadow settings come from, lowest precedence first. CLI11 runs option
+/// callbacks after the whole command line is parsed, in declaration order, not command-line
+/// order. Rather than lean on that, each of the three callbacks rebuilds the settings from the
+/// raw values of all three options: the result is the same whichever callback runs first or
+/// last, and whatever the order of the options on the command line. Rebuilding is idempotent,
+/// so running it once per given option (a preset file is then read up to three times) is harmless.
+struct SettingSources {
+    RenderOptions* target = nullptr;
+    geometry::ShadowSettings base;      // target->settings when the options were declared
+    CLI::Option* presets = nullptr;     // --preset FILE, in command-line order
+    CLI::Option* shadowRes = nullptr;   // --shadow-res N
+    CLI::Option* assignments = nullptr; // --set key=value, in command-line order
+
+    void rebuild() const {
+        geometry::ShadowSettings s = base;
+        for (const auto& path : presets->results()) s = loadPreset(path, s);
+        if (shadowRes->count() > 0)
+            geometry::applySetting(s, "shadow_map.resolution", std::to_string(shadowRes->as<int>()));
+        for (const auto& a : assignments->results()) geometry::applyAssignment(s, a);
+        target->settings = s;
+    }
+};
+
+void addSettingSources(CLI::App& cmd, RenderOptions& o) {
+    auto sources = std::make_shared<SettingSources>();
+    sources->target = &o;
+    sources->base = o.settings;
+    const auto rebuild = [sources](const auto&) { sources->rebuild(); };
+    sources->presets =
+        cmd.add_option_function<std::vector<std::string>>(
+               "--preset", rebuild,
+               "Shadow settings from a JSON preset (repeatable; e.g. resources/presets/paper.json). Presets apply "
+               "first, in order, then --shadow-res, then --set, wherever they appear")
+            ->type_name("FILE")
+            ->allow_extra_args(false);
+    sources->shadowRes = cmd.add_option_function<int>(
+        "--shadow-res", rebuild, "Shadow map resolution in texels (= --set shadow_map.resolution=N; default 2048)");
+    sources->assignments = addSetOption(cmd, rebuild);
+}
+
 } // namespace
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
@@ -81,23 +136,13 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
             o.light = l;
         },
         "Light direction dx,dy,dz, from the light into the scene (default: the scene's)");
-    cmd.add_option_function<int>(
-           "--shadow-res", [&o](int r) { geometry::applySetting(o.settings, "shadow_map.resolution", std::to_string(r)); },
-           "Shadow map resolution in texels (= --set shadow_map.resolution=N; default 2048)");
-    addSettingOption(cmd, o.settings);
+    addSettingSources(cmd, o);
 }
 
 void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings) {
-    std::string keys;
-    for (const auto& info : geometry::settingsDeclaration()) keys += "\n  " + std::string(info.key) + ": " + std::string(info.help) + " (" + info.rangeText() + ")";
-    cmd.add_option_function<std::vector<std::string>>(
-        "--set",
-        [&settings](const std::vector<std::string>& assignments) {
-            for (const auto& a : assignments) geometry::applyAssignment(settings, a);
-        },
-        "Shadow setting key=value (repeatable). Keys:" + keys)
-        ->type_name("KEY=VALUE")
-        ->allow_extra_args(false);
+    addSetOption(cmd, [&settings](const std::vector<std::string>& assignments) {
+        for (const auto& a : assignments) geometry::applyAssignment(settings, a);
+    });
 }
 
 geometry::Scene loadScene(const RenderOptions& o) {

@@ -18,13 +18,17 @@ struct RenderOptions {
     std::string backend = "auto";
     std::optional<geometry::Camera> camera;         // eye + target overrides
     std::optional<glm::vec3> light;                 // l overrides
-    geometry::ShadowSettings settings;             // --shadow-res, --set key=value
+    geometry::ShadowSettings settings;             // --preset FILE, --shadow-res, --set key=value
 };
 
-/// Adds --scene, --size, --out, --backend, --camera, --light, --shadow-res, --set to `cmd`.
+/// Adds --scene, --size, --out, --backend, --camera, --light, --preset, --shadow-res, --set to `cmd`.
+/// After parsing, options.settings is: its value when this was called, then every --preset file
+/// (in command-line order), then --shadow-res, then every --set (in command-line order), whatever
+/// the order of those options on the command line. Untouched when none of the three is given.
 void addRenderOptions(CLI::App& cmd, RenderOptions& options);
 
-/// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()).
+/// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()),
+/// applied directly to `settings`; for commands without --preset.
 void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings);
 
 /// The scene named by options.scene with the camera and light overrides applied.

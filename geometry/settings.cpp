@@ -29,6 +29,13 @@ SettingInfo number(std::string_view key, std::string_view help, Kind kind, doubl
 }
 
 template <class Field>
+SettingInfo oddNumber(std::string_view key, std::string_view help, double min, double max, Field field) {
+    SettingInfo info = number(key, help, Kind::Int, min, max, field);
+    info.odd = true;
+    return info;
+}
+
+template <class Field>
 SettingInfo choice(std::string_view key, std::string_view help, std::vector<std::string_view> names, Field field) {
     SettingInfo info;
     info.key = key;
@@ -75,7 +82,7 @@ std::string SettingInfo::rangeText() const {
         return "one of " + out;
     }
     case Kind::Bool: return "true or false";
-    default: return formatNumber(min) + ".." + formatNumber(max);
+    default: return (odd ? "odd " : "") + formatNumber(min) + ".." + formatNumber(max);
     }
 }
 
@@ -83,8 +90,43 @@ const std::vector<SettingInfo>& settingsDeclaration() {
     static const std::vector<SettingInfo> table = {
         number("shadow_map.resolution", "Shadow-map side in texels (first split)", Kind::Int, 16, 16384,
                [](ShadowSettings& s) -> auto& { return s.resolution; }, true),
+        choice("bias.type",
+               "Bias: none, constant (z_offset along the light), slope (polygon offset), second_depth (back faces "
+               "into the map), midpoint and dual_depth (two-layer depth peeling), normal_offset (receiver along "
+               "its normal)",
+               {"none", "constant", "slope", "second_depth", "midpoint", "dual_depth", "normal_offset"},
+               [](ShadowSettings& s) -> auto& { return s.bias.type; }),
         number("bias.constant", "Constant depth offset z_offset, in scene units along the light (Barroso Table 1)",
-               Kind::Float, -10, 10, [](ShadowSettings& s) -> auto& { return s.constantBias; }),
+               Kind::Float, -10, 10, [](ShadowSettings& s) -> auto& { return s.bias.constant; }),
+        number("bias.slope", "slope: polygon-offset factor (scales with the depth slope)", Kind::Float, 0, 32,
+               [](ShadowSettings& s) -> auto& { return s.bias.slope; }),
+        number("bias.units", "slope: polygon-offset units (smallest depth steps)", Kind::Float, 0, 1024,
+               [](ShadowSettings& s) -> auto& { return s.bias.units; }),
+        number("bias.z_max", "dual_depth: cap on the offset z1 + min((z2-z1)/2, z_max), scene units", Kind::Float, 0,
+               100, [](ShadowSettings& s) -> auto& { return s.bias.zMax; }),
+        number("bias.normal_offset", "normal_offset: receiver moved along its normal by this many world-space texels",
+               Kind::Float, 0, 16, [](ShadowSettings& s) -> auto& { return s.bias.normalOffset; }),
+        number("bias.linear_z", "Store linear light depth in the maps instead of post-perspective depth (Scherzer "
+               "4.2)", Kind::Bool, 0, 1, [](ShadowSettings& s) -> auto& { return s.bias.linearZ; }),
+        number("bias.tangent_plane", "Filter taps compare against the receiver's tangent plane (Barroso 2.2)",
+               Kind::Bool, 0, 1, [](ShadowSettings& s) -> auto& { return s.bias.tangentPlane; }),
+        choice("filter.type", "Filter: none (one tap), hw2x2 (hardware bilinear compare), pcf (k x k texels), disk "
+               "(rotated disk taps), vsm (variance shadow maps)",
+               {"none", "hw2x2", "pcf", "disk", "vsm"}, [](ShadowSettings& s) -> auto& { return s.filter.type; }),
+        oddNumber("filter.kernel", "pcf: k x k taps one texel apart; vsm: blur width (odd)", 1, 9,
+                  [](ShadowSettings& s) -> auto& { return s.filter.kernel; }),
+        number("filter.taps", "disk: number of taps", Kind::Int, 1, 64,
+               [](ShadowSettings& s) -> auto& { return s.filter.taps; }),
+        number("filter.radius", "disk: radius in texels", Kind::Float, 0.5, 16,
+               [](ShadowSettings& s) -> auto& { return s.filter.radius; }),
+        number("filter.bleed_reduction", "vsm: light-bleeding reduction (cuts the Chebyshev tail)", Kind::Float, 0,
+               0.95, [](ShadowSettings& s) -> auto& { return s.filter.bleedReduction; }),
+        number("filter.eye_blur.iterations", "Eye-space blur of the shadow mask, stronger near the viewer "
+               "(Scherzer 4.3); 0 = off", Kind::Int, 0, 8,
+               [](ShadowSettings& s) -> auto& { return s.filter.eyeBlurIterations; }),
+        number("filter.eye_blur.falloff", "Eye-space blur: radius = 1/(1 + falloff * view depth) pixels per "
+               "iteration", Kind::Float, 0, 10, [](ShadowSettings& s) -> auto& { return s.filter.eyeBlurFalloff; },
+               true),
         choice("warp.method",
                "Warp: uniform (none), psm (n' = n), lispsm (Wimmer), glispsm (Barroso eqs 13-18), gmnpr (Zhang eq 8), "
                "manual (warp.n_prime)",
@@ -163,6 +205,7 @@ void applySetting(ShadowSettings& s, std::string_view key, std::string_view valu
         if (used != text.size() || !std::isfinite(v)) throw bad();
         if (info->kind == Kind::Int && v != std::floor(v)) throw bad();
         if (!(v >= info->min && v <= info->max)) throw bad();
+        if (info->odd && std::fmod(v, 2.0) == 0.0) throw bad();
         break;
     }
     }
@@ -180,7 +223,7 @@ std::vector<std::string> validate(const ShadowSettings& s) {
     std::vector<std::string> problems;
     for (const auto& info : settingsDeclaration()) {
         const double v = info.get(s);
-        if (!(std::isfinite(v) && v >= info.min && v <= info.max))
+        if (!(std::isfinite(v) && v >= info.min && v <= info.max) || (info.odd && std::fmod(v, 2.0) == 0.0))
             problems.push_back(std::string(info.key) + ": " + formatNumber(v) + " is outside " + info.rangeText());
     }
     return problems;

@@ -12,9 +12,37 @@
 
 namespace geometry {
 
+/// Bias types (Barroso Table 1; Scherzer §4.2; DESIGN §3.5).
+enum class BiasType { None, Constant, Slope, SecondDepth, Midpoint, DualDepth, NormalOffset };
+
+struct BiasSettings {
+    BiasType type = BiasType::Constant;
+    float constant = 0.05f;    // bias.constant: z_offset, scene units along l
+    float slope = 1.5f;        // bias.slope: polygon-offset factor
+    float units = 4.f;         // bias.units: polygon-offset units
+    float zMax = 0.5f;         // bias.z_max: dual-depth cap, scene units
+    float normalOffset = 1.f;  // bias.normal_offset: × world-space texel size
+    bool linearZ = false;      // bias.linear_z: store linear light depth (Scherzer §4.2)
+    bool tangentPlane = false; // bias.tangent_plane: PCF reference depth on the receiver's plane
+};
+
+/// Filters (Barroso §2.2; Scherzer §4.3; DESIGN §3.6).
+enum class FilterType { None, Hw2x2, Pcf, Disk, Vsm };
+
+struct FilterSettings {
+    FilterType type = FilterType::Hw2x2;
+    int kernel = 3;              // filter.kernel: k×k PCF taps / VSM blur width, odd
+    int taps = 16;               // filter.taps: disk taps
+    float radius = 2.f;          // filter.radius: disk radius, texels
+    float bleedReduction = 0.2f; // filter.bleed_reduction: VSM light-bleeding cut
+    int eyeBlurIterations = 0;   // filter.eye_blur.iterations: Scherzer's eye-space blur, 0 = off
+    float eyeBlurFalloff = 0.05f; // filter.eye_blur.falloff: how fast the blur shrinks with view depth
+};
+
 struct ShadowSettings {
     int resolution = 2048;      // shadow_map.resolution
-    float constantBias = 0.05f; // bias.constant: z_offset (Barroso Table 1), scene units along l
+    BiasSettings bias;
+    FilterSettings filter;
     WarpParams warp{WarpMethod::Uniform};
     WarpDirection direction = WarpDirection::Standard;
     SplitParams splits;
@@ -26,6 +54,7 @@ struct SettingInfo {
     std::string_view help;
     Kind kind = Kind::Float;
     double min = 0, max = 0;                // Int, Float: valid range (inclusive)
+    bool odd = false;                       // Int: only odd values
     std::vector<std::string_view> choices;  // Choice: names in enum order
     bool logScale = false;                  // a hint for widgets
     std::function<double(const ShadowSettings&)> get; // Choice: index; Bool: 0/1

@@ -58,6 +58,15 @@ glm::vec2 depthRangeInMap(const dmat4& m, const std::vector<glm::vec3>& points) 
     return r.x <= r.y ? r : glm::vec2(0.f, 1.f);
 }
 
+/// [lo, hi] of l·x: casters up to S's light-facing side, receivers down to B's far side.
+glm::vec2 linearDepthRange(const std::vector<glm::vec3>& body, const dvec3& l, const Aabb& S) noexcept {
+    double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+    for (const auto& p : body) hi = std::max(hi, glm::dot(dvec3(p), l)), lo = std::min(lo, glm::dot(dvec3(p), l));
+    for (const auto& c : S.corners()) lo = std::min(lo, glm::dot(dvec3(c), l));
+    const double pad = std::max(1e-4 * (hi - lo), 1e-6);
+    return {float(lo - pad), float(hi + pad)};
+}
+
 struct SplitFrame {
     dmat4 lightView;   // world → light space L
     dmat4 lightProj;   // L → shadow clip space
@@ -148,7 +157,9 @@ ShadowPlan planShadows(const ShadowSettings& settings, const Aabb& S, const Came
     plan.lightViewAngleDeg = lightViewAngleDeg(plan.v, plan.l);
     plan.eyeView = camera.view();
     plan.eyeProj = camera.projection(viewport.aspect());
-    plan.receiverOffset = settings.constantBias;
+    plan.receiverOffset = settings.bias.type == BiasType::Constant ? settings.bias.constant : 0.f;
+    plan.bias = settings.bias;
+    plan.filter = settings.filter;
 
     const dvec3 l(plan.l), v(plan.v), eye(camera.eye);
     const double gamma = glm::radians(double(plan.gammaDeg));
@@ -188,6 +199,12 @@ ShadowPlan planShadows(const ShadowSettings& settings, const Aabb& S, const Came
         split.warpCentre = glm::vec3(frame.warpCentre);
         split.warpDepth = float(frame.d);
         split.bodyDepthRange = depthRangeInMap(viewProj, split.body);
+        split.linearDepthRange = linearDepthRange(split.body, l, S);
+        dvec3 centre(0.0);
+        for (const auto& p : split.body) centre += dvec3(p);
+        centre /= double(split.body.size());
+        const double step = std::max(1e-3 * frame.d, 1e-3);
+        split.depthPerUnit = float(std::max(0.0, (depth01(viewProj, centre + step * l) - depth01(viewProj, centre)) / step));
         plan.splits.push_back(std::move(split));
     }
     return plan;

@@ -27,6 +27,8 @@ struct SplitPlan {
     glm::vec3 warpCentre{0.f};         // projection centre c of P (world), when warped
     float warpDepth = 0.f;             // d: extent of B_i along V_P
     glm::vec2 bodyDepthRange{0.f, 1.f}; // depth of B_i in this map, for display
+    glm::vec2 linearDepthRange{0.f, 1.f}; // [lo, hi] of l·x over B_i and the casters up to S (linear z)
+    float depthPerUnit = 0.f;          // map depth per scene unit along l, at B_i's centre
     [[nodiscard]] bool empty() const noexcept { return body.empty(); }
     [[nodiscard]] bool warped() const noexcept { return nPrime < kUniform; }
 };
@@ -40,6 +42,8 @@ struct ShadowPlan {
     /// Constant bias: receivers are tested as if moved this far towards the light (scene units),
     /// which is the same offset in every split whatever its warp.
     float receiverOffset = 0.f;
+    BiasSettings bias;     // what the renderer applies, as chosen in the settings
+    FilterSettings filter;
     std::vector<SplitPlan> splits;
 };
 

@@ -45,10 +45,4 @@ GpuScene::~GpuScene() {
     }
 }
 
-uint64_t GpuScene::draw(const GpuMesh& m) const noexcept {
-    glBindVertexArray(m.vao);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m.triangles * 3), GL_UNSIGNED_INT, nullptr);
-    return m.triangles;
-}
-
 } // namespace renderer

@@ -6,8 +6,12 @@
 
 namespace renderer {
 
-static GLuint compile(GLenum stage, std::string_view name) {
-    const std::string_view src = shaderSource(name);
+static GLuint compile(GLenum stage, std::string_view name, std::string_view defines) {
+    std::string src(shaderSource(name));
+    if (!defines.empty()) {
+        const size_t eol = src.find('\n');
+        src.insert(eol == std::string::npos ? src.size() : eol + 1, defines);
+    }
     const GLuint s = glCreateShader(stage);
     const GLchar* text = src.data();
     const GLint len = static_cast<GLint>(src.size());
@@ -24,11 +28,11 @@ static GLuint compile(GLenum stage, std::string_view name) {
     return s;
 }
 
-Program::Program(std::string_view vertexName, std::string_view fragmentName) {
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertexName);
+Program::Program(std::string_view vertexName, std::string_view fragmentName, std::string_view defines) {
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertexName, defines);
     GLuint fs = 0;
     try {
-        fs = compile(GL_FRAGMENT_SHADER, fragmentName);
+        fs = compile(GL_FRAGMENT_SHADER, fragmentName, defines);
     } catch (...) {
         glDeleteShader(vs);
         throw;

@@ -10,8 +10,9 @@ namespace renderer {
 
 class Program {
 public:
-    /// Compiles built-in shaders by file name; throws std::runtime_error with the GL log.
-    Program(std::string_view vertexName, std::string_view fragmentName);
+    /// Compiles built-in shaders by file name, with `defines` ("#define X\n" lines) inserted after
+    /// each #version line; throws std::runtime_error with the GL log.
+    Program(std::string_view vertexName, std::string_view fragmentName, std::string_view defines = "");
     ~Program();
     Program(const Program&) = delete;
     Program& operator=(const Program&) = delete;
@@ -21,6 +22,7 @@ public:
     void set(const char* name, int v) { glUniform1i(location(name), v); }
     void set(const char* name, float v) { glUniform1f(location(name), v); }
     void set(const char* name, const glm::vec2& v) { glUniform2f(location(name), v.x, v.y); }
+    void set(const char* name, const glm::ivec2& v) { glUniform2i(location(name), v.x, v.y); }
     void set(const char* name, const glm::vec3& v) { glUniform3f(location(name), v.x, v.y, v.z); }
     void set(const char* name, const glm::mat4& m) { glUniformMatrix4fv(location(name), 1, GL_FALSE, &m[0][0]); }
 

@@ -1,40 +1,100 @@
 #include "renderer.h"
 
+#include "geometry/culling.h"
+
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
 namespace renderer {
 
+using geometry::BiasType;
+using geometry::FilterType;
+
 namespace {
-const glm::vec4 kSky{0.62f, 0.72f, 0.85f, 1.f};
+const glm::vec3 kSky{0.62f, 0.72f, 0.85f};
+constexpr double kShadowMemoryBudget = 1.5 * 1024 * 1024 * 1024; // bytes, all shadow textures
+
+GLuint makeSampler(GLenum filter, bool compare) {
+    GLuint s = 0;
+    glGenSamplers(1, &s);
+    glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, filter);
+    glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, filter);
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(s, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+    glSamplerParameteri(s, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    return s;
 }
+
+void bindTexture(int unit, GLenum target, GLuint texture, GLuint sampler) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(target, texture);
+    glBindSampler(unit, sampler);
+}
+
+bool needsPeeling(const geometry::ShadowPlan& plan) {
+    return plan.bias.type == BiasType::Midpoint || plan.bias.type == BiasType::DualDepth;
+}
+} // namespace
 
 Renderer::Renderer(const geometry::Scene& scene) : scene_(std::make_unique<GpuScene>(scene)) {
     glGenVertexArrays(1, &emptyVao_);
+    nearestSampler_ = makeSampler(GL_NEAREST, false);
+    compareSampler_ = makeSampler(GL_LINEAR, true);
+    linearSampler_ = makeSampler(GL_LINEAR, false);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize_);
 }
 
-Renderer::~Renderer() { glDeleteVertexArrays(1, &emptyVao_); }
+Renderer::~Renderer() {
+    glDeleteVertexArrays(1, &emptyVao_);
+    const GLuint samplers[] = {nearestSampler_, compareSampler_, linearSampler_};
+    glDeleteSamplers(3, samplers);
+}
 
 void Renderer::setScene(const geometry::Scene& scene) { scene_ = std::make_unique<GpuScene>(scene); }
+
+void Renderer::warnOnce(const std::string& message) {
+    if (std::find(stats_.warnings.begin(), stats_.warnings.end(), message) == stats_.warnings.end())
+        stats_.warnings.push_back(message);
+}
+
+Program& Renderer::depthProgram(const std::string& defines) {
+    auto& p = depthPrograms_[defines];
+    if (!p) p = std::make_unique<Program>("depth.vert", "depth.frag", defines);
+    return *p;
+}
+
+void Renderer::fullscreen() const noexcept {
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+int Renderer::splitResolution(const geometry::SplitPlan& split) const noexcept {
+    return std::min(split.resolution, firstDepth_.resolution());
+}
+
+float Renderer::mapScale(const geometry::SplitPlan& split) const noexcept {
+    return firstDepth_.resolution() > 0 ? float(splitResolution(split)) / float(firstDepth_.resolution()) : 1.f;
+}
 
 void Renderer::render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, int lightViewSize,
                       int lightSplit) {
     if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
     stats_.shadowTriangles = stats_.eyeTriangles = 0;
+    stats_.splitTriangles.assign(plan.splits.size(), 0);
     timers_.begin(Pass::Shadow);
     shadowPass(plan);
     timers_.begin(Pass::Eye);
     eyePass(plan, viewport);
+    eyeBlurAndCompose(plan);
     timers_.begin(Pass::LightView);
     lightViewPass(plan, lightViewSize, std::clamp(lightSplit, 0, int(plan.splits.size()) - 1));
     timers_.endFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    for (int unit = 0; unit < 4; ++unit) glBindSampler(unit, 0);
     stats_.gpu = timers_.latest();
-}
-
-float Renderer::mapScale(const geometry::SplitPlan& split) const noexcept {
-    return shadowMaps_.resolution() > 0 ? float(split.resolution) / float(shadowMaps_.resolution()) : 1.f;
 }
 
 const PassTimes& Renderer::waitForTimings() noexcept {
@@ -42,61 +102,248 @@ const PassTimes& Renderer::waitForTimings() noexcept {
     return stats_.gpu;
 }
 
-void Renderer::shadowPass(const geometry::ShadowPlan& plan) {
-    const int layers = static_cast<int>(plan.splits.size());
-    int resolution = 1;
-    for (const auto& s : plan.splits) resolution = std::max(resolution, s.resolution);
-    shadowMaps_.ensure(resolution, layers);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE); // thin CAD parts: both faces cast
-    glDisable(GL_BLEND);
-    depthProgram_.use();
-    for (int i = 0; i < layers; ++i) {
-        const auto& split = plan.splits[i];
-        shadowMaps_.bindLayer(i);
-        glViewport(0, 0, split.resolution, split.resolution);
-        glClear(GL_DEPTH_BUFFER_BIT);
-        if (split.empty()) continue;
-        depthProgram_.set("uLightViewProj", split.lightViewProj);
-        for (const auto& m : scene_->meshes()) {
-            depthProgram_.set("uModel", m.transform);
-            stats_.shadowTriangles += scene_->draw(m);
-        }
+void Renderer::drawCasters(const geometry::SplitPlan& split, Program& program, int index) {
+    program.set("uLightViewProj", split.lightViewProj);
+    for (const auto& m : scene_->meshes()) {
+        program.set("uModel", m.transform);
+        const uint64_t n = scene_->draw(m, [&](const geometry::Aabb& b) {
+            return geometry::intersectsClipVolume(b, split.lightViewProj);
+        });
+        stats_.shadowTriangles += n;
+        stats_.splitTriangles[index] += n;
     }
 }
 
+void Renderer::shadowPass(const geometry::ShadowPlan& plan) {
+    const int layers = static_cast<int>(plan.splits.size());
+    int resolution = 16;
+    for (const auto& s : plan.splits) resolution = std::max(resolution, s.resolution);
+    if (resolution > maxTextureSize_) {
+        warnOnce("shadow_map.resolution " + std::to_string(resolution) + " exceeds GL_MAX_TEXTURE_SIZE " +
+                 std::to_string(maxTextureSize_) + "; using " + std::to_string(maxTextureSize_));
+        resolution = maxTextureSize_;
+    }
+    // Depth arrays (one, or three when peeling) and VSM moments: halve until they fit the budget.
+    const double bytesPerTexel = needsPeeling(plan) ? 12.0 : (plan.filter.type == FilterType::Vsm ? 20.0 : 4.0);
+    while (resolution > 16 && double(resolution) * resolution * layers * bytesPerTexel > kShadowMemoryBudget) {
+        resolution /= 2;
+        warnOnce("shadow maps exceed the " + std::to_string(int(kShadowMemoryBudget / (1 << 20))) +
+                 " MiB budget; resolution reduced to " + std::to_string(resolution));
+    }
+    stats_.shadowResolution = resolution;
+    firstDepth_.ensure(resolution, layers, 0, true);
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    // second depth: only back faces go into the map (closed CAD solids); otherwise both faces cast.
+    if (plan.bias.type == BiasType::SecondDepth) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+    const bool slope = plan.bias.type == BiasType::Slope;
+    const bool linear = plan.bias.linearZ;
+    if (slope && !linear) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(plan.bias.slope, plan.bias.units);
+    }
+    Program& program = depthProgram(linear ? "#define LINEAR_Z\n" : "");
+    program.use();
+    program.set("uLightDir", plan.l);
+    program.set("uSlopeBias", slope ? glm::vec2(plan.bias.slope, plan.bias.units) : glm::vec2(0.f));
+    for (int i = 0; i < layers; ++i) {
+        const auto& split = plan.splits[i];
+        firstDepth_.bindLayer(i, splitResolution(split));
+        glClear(GL_DEPTH_BUFFER_BIT);
+        if (split.empty()) continue;
+        program.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
+                                              1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
+        drawCasters(split, program, i);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CULL_FACE);
+    sampledDepth_ = firstDepth_.depthTexture();
+    if (needsPeeling(plan)) peelAndCombine(plan);
+    if (plan.filter.type == FilterType::Vsm) momentsPass(plan);
+}
+
+void Renderer::peelAndCombine(const geometry::ShadowPlan& plan) {
+    const int layers = firstDepth_.layers(), res = firstDepth_.resolution();
+    secondDepth_.ensure(res, layers, 0, true);
+    combinedDepth_.ensure(res, layers, 0, true);
+    const bool linear = plan.bias.linearZ;
+    Program& peel = depthProgram(linear ? "#define LINEAR_Z\n#define PEEL\n" : "#define PEEL\n");
+    peel.use();
+    peel.set("uLightDir", plan.l);
+    peel.set("uSlopeBias", glm::vec2(0.f));
+    bindTexture(0, GL_TEXTURE_2D_ARRAY, firstDepth_.depthTexture(), nearestSampler_);
+    peel.set("uFirstLayer", 0);
+    for (int i = 0; i < layers; ++i) {
+        const auto& split = plan.splits[i];
+        secondDepth_.bindLayer(i, splitResolution(split));
+        glClear(GL_DEPTH_BUFFER_BIT);
+        if (split.empty()) continue;
+        peel.set("uLayer", i);
+        peel.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
+                                           1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
+        drawCasters(split, peel, i);
+    }
+    combineProgram_.use();
+    bindTexture(0, GL_TEXTURE_2D_ARRAY, firstDepth_.depthTexture(), nearestSampler_);
+    bindTexture(1, GL_TEXTURE_2D_ARRAY, secondDepth_.depthTexture(), nearestSampler_);
+    combineProgram_.set("uFirst", 0);
+    combineProgram_.set("uSecond", 1);
+    combineProgram_.set("uDual", plan.bias.type == BiasType::DualDepth ? 1 : 0);
+    glDepthFunc(GL_ALWAYS);
+    for (int i = 0; i < layers; ++i) {
+        const auto& split = plan.splits[i];
+        combinedDepth_.bindLayer(i, splitResolution(split));
+        combineProgram_.set("uLayer", i);
+        const float perUnit = linear ? 1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)
+                                     : split.depthPerUnit;
+        combineProgram_.set("uZMax", plan.bias.zMax * perUnit);
+        fullscreen();
+    }
+    glDepthFunc(GL_LESS);
+    sampledDepth_ = combinedDepth_.depthTexture();
+}
+
+void Renderer::momentsPass(const geometry::ShadowPlan& plan) {
+    const int layers = firstDepth_.layers(), res = firstDepth_.resolution();
+    moments_.ensure(res, layers, GL_RG32F, true);
+    momentsTemp_.ensure(res, layers, GL_RG32F, false);
+    Program& program = depthProgram("#define MOMENTS\n");
+    program.use();
+    program.set("uLightDir", plan.l);
+    program.set("uSlopeBias", glm::vec2(0.f));
+    const float far[4] = {1.f, 1.f, 1.f, 1.f}; // empty texels: at the far end, fully lit
+    for (int i = 0; i < layers; ++i) {
+        const auto& split = plan.splits[i];
+        moments_.bindLayer(i, splitResolution(split));
+        glClearBufferfv(GL_COLOR, 0, far);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        if (split.empty()) continue;
+        program.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
+                                              1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
+        drawCasters(split, program, i);
+    }
+    const int radius = plan.filter.kernel / 2;
+    if (radius > 0) {
+        glDisable(GL_DEPTH_TEST);
+        vsmBlurProgram_.use();
+        vsmBlurProgram_.set("uMoments", 0);
+        vsmBlurProgram_.set("uRadius", radius);
+        for (int i = 0; i < layers; ++i) {
+            const int size = splitResolution(plan.splits[i]);
+            vsmBlurProgram_.set("uLayer", i);
+            vsmBlurProgram_.set("uSize", glm::ivec2(size));
+            momentsTemp_.bindLayer(i, size);
+            bindTexture(0, GL_TEXTURE_2D_ARRAY, moments_.colourTexture(), nearestSampler_);
+            vsmBlurProgram_.set("uStep", glm::ivec2(1, 0));
+            fullscreen();
+            moments_.bindLayer(i, size);
+            bindTexture(0, GL_TEXTURE_2D_ARRAY, momentsTemp_.colourTexture(), nearestSampler_);
+            vsmBlurProgram_.set("uStep", glm::ivec2(0, 1));
+            fullscreen();
+        }
+        glEnable(GL_DEPTH_TEST);
+    }
+    sampledDepth_ = moments_.depthTexture();
+}
+
 void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport) {
-    eye_.ensure(viewport.width, viewport.height);
-    eye_.bind();
-    glClearColor(kSky.r, kSky.g, kSky.b, kSky.a);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    eyeBuffers_.ensure(viewport.width, viewport.height);
+    eyeBuffers_.bind();
+    const float zero[4] = {0.f, 0.f, 0.f, 0.f}, lit[4] = {1.f, 1.f, 1.f, 1.f}, sky[4] = {0.f, 0.f, -1.f, 0.f};
+    glClearBufferfv(GL_COLOR, EyeBuffers::Base, zero);
+    glClearBufferfv(GL_COLOR, EyeBuffers::Direct, zero);
+    glClearBufferfv(GL_COLOR, EyeBuffers::Mask, lit);
+    glClearBufferfv(GL_COLOR, EyeBuffers::Aux, sky);
+    glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     eyeProgram_.use();
-    eyeProgram_.set("uViewProj", plan.eyeProj * plan.eyeView);
+    const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
+    eyeProgram_.set("uViewProj", viewProj);
     eyeProgram_.set("uLightDir", plan.l);
     eyeProgram_.set("uEye", glm::vec3(glm::inverse(plan.eyeView)[3]));
     eyeProgram_.set("uViewDir", plan.v);
     const int count = static_cast<int>(plan.splits.size());
     eyeProgram_.set("uSplitCount", count);
-    eyeProgram_.set("uReceiverOffset", plan.receiverOffset);
+    eyeProgram_.set("uArrayResolution", firstDepth_.resolution());
     for (int i = 0; i < count; ++i) {
+        const auto& split = plan.splits[i];
         const std::string idx = "[" + std::to_string(i) + "]";
-        eyeProgram_.set(("uLightViewProj" + idx).c_str(), plan.splits[i].lightViewProj);
-        eyeProgram_.set(("uSplitFar" + idx).c_str(), plan.splits[i].far);
-        eyeProgram_.set(("uMapScale" + idx).c_str(), mapScale(plan.splits[i]));
+        eyeProgram_.set(("uLightViewProj" + idx).c_str(), split.lightViewProj);
+        eyeProgram_.set(("uSplitFar" + idx).c_str(), split.far);
+        eyeProgram_.set(("uMapScale" + idx).c_str(), mapScale(split));
+        eyeProgram_.set(("uLinearRange" + idx).c_str(),
+                        glm::vec2(split.linearDepthRange.x,
+                                  1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
     }
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, shadowMaps_.texture());
+    const auto& b = plan.bias;
+    const auto& f = plan.filter;
+    eyeProgram_.set("uBiasType", static_cast<int>(b.type));
+    eyeProgram_.set("uReceiverOffset", plan.receiverOffset);
+    eyeProgram_.set("uNormalOffset", b.normalOffset);
+    eyeProgram_.set("uLinearZ", b.linearZ ? 1 : 0);
+    eyeProgram_.set("uTangentPlane", b.tangentPlane ? 1 : 0);
+    eyeProgram_.set("uFilter", static_cast<int>(f.type));
+    eyeProgram_.set("uKernel", f.kernel);
+    eyeProgram_.set("uTaps", f.taps);
+    eyeProgram_.set("uRadius", f.radius);
+    eyeProgram_.set("uBleedReduction", f.bleedReduction);
+    bindTexture(0, GL_TEXTURE_2D_ARRAY, sampledDepth_, nearestSampler_);
+    bindTexture(1, GL_TEXTURE_2D_ARRAY, sampledDepth_, compareSampler_);
+    bindTexture(2, GL_TEXTURE_2D_ARRAY, f.type == FilterType::Vsm ? moments_.colourTexture() : 0, linearSampler_);
     eyeProgram_.set("uShadowMap", 0);
+    eyeProgram_.set("uShadowMapCmp", 1);
+    eyeProgram_.set("uMoments", 2);
     for (const auto& m : scene_->meshes()) {
         eyeProgram_.set("uModel", m.transform);
         eyeProgram_.set("uColor", m.color);
-        stats_.eyeTriangles += scene_->draw(m);
+        stats_.eyeTriangles +=
+            scene_->draw(m, [&](const geometry::Aabb& box) { return geometry::intersectsClipVolume(box, viewProj); });
     }
+}
+
+void Renderer::eyeBlurAndCompose(const geometry::ShadowPlan& plan) {
+    glDisable(GL_DEPTH_TEST);
+    GLuint mask = eyeBuffers_.texture(EyeBuffers::Mask);
+    const int w = eyeBuffers_.width(), h = eyeBuffers_.height();
+    if (plan.filter.eyeBlurIterations > 0) {
+        eyeBlurProgram_.use();
+        eyeBlurProgram_.set("uMask", 0);
+        eyeBlurProgram_.set("uBase", 1);
+        eyeBlurProgram_.set("uFalloff", plan.filter.eyeBlurFalloff);
+        bindTexture(1, GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Base), nearestSampler_);
+        int target = 0;
+        for (int it = 0; it < plan.filter.eyeBlurIterations; ++it)
+            for (const glm::vec2 step : {glm::vec2(1.f / w, 0.f), glm::vec2(0.f, 1.f / h)}) {
+                eyeBuffers_.bindBlur(target);
+                bindTexture(0, GL_TEXTURE_2D, mask, linearSampler_);
+                eyeBlurProgram_.set("uStep", step);
+                fullscreen();
+                mask = eyeBuffers_.blurTexture(target);
+                target ^= 1;
+            }
+    }
+    eye_.ensure(w, h);
+    eye_.bind();
+    composeProgram_.use();
+    bindTexture(0, GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Base), nearestSampler_);
+    bindTexture(1, GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Direct), nearestSampler_);
+    bindTexture(2, GL_TEXTURE_2D, mask, nearestSampler_);
+    composeProgram_.set("uBase", 0);
+    composeProgram_.set("uDirect", 1);
+    composeProgram_.set("uMask", 2);
+    composeProgram_.set("uSky", kSky);
+    fullscreen();
+    glEnable(GL_DEPTH_TEST);
 }
 
 void Renderer::lightViewPass(const geometry::ShadowPlan& plan, int size, int split) {
@@ -104,14 +351,36 @@ void Renderer::lightViewPass(const geometry::ShadowPlan& plan, int size, int spl
     light_.bind();
     glDisable(GL_DEPTH_TEST);
     lightViewProgram_.use();
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, shadowMaps_.texture());
+    bindTexture(0, GL_TEXTURE_2D_ARRAY, sampledDepth_, nearestSampler_);
     lightViewProgram_.set("uShadowMap", 0);
     lightViewProgram_.set("uLayer", split);
     lightViewProgram_.set("uMapScale", mapScale(plan.splits[split]));
-    lightViewProgram_.set("uDepthRange", plan.splits[split].bodyDepthRange);
-    glBindVertexArray(emptyVao_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    const auto& s = plan.splits[split];
+    const bool linear = plan.bias.linearZ || plan.filter.type == FilterType::Vsm;
+    lightViewProgram_.set("uDepthRange", linear ? glm::vec2(0.f, 1.f) : s.bodyDepthRange);
+    fullscreen();
+    glEnable(GL_DEPTH_TEST);
+}
+
+std::vector<float> Renderer::readShadowMask() const {
+    const int w = eyeBuffers_.width(), h = eyeBuffers_.height();
+    std::vector<float> raw(size_t(w) * h), out(raw.size());
+    glBindTexture(GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Mask));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, raw.data());
+    for (int y = 0; y < h; ++y) std::memcpy(&out[size_t(y) * w], &raw[size_t(h - 1 - y) * w], size_t(w) * sizeof(float));
+    return out;
+}
+
+std::vector<glm::vec4> Renderer::readAux() const {
+    const int w = eyeBuffers_.width(), h = eyeBuffers_.height();
+    std::vector<glm::vec4> raw(size_t(w) * h), out(raw.size());
+    glBindTexture(GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Aux));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, raw.data());
+    for (int y = 0; y < h; ++y)
+        std::memcpy(&out[size_t(y) * w], &raw[size_t(h - 1 - y) * w], size_t(w) * sizeof(glm::vec4));
+    return out;
 }
 
 } // namespace renderer

@@ -1,6 +1,7 @@
 #pragma once
-// Draws one frame from a shadow plan: shadow pass per split, eye pass, light view. Makes no
-// shadow-math decisions: every matrix and bias comes from the plan.
+// Draws one frame from a shadow plan: shadow pass per split (with peeling or VSM moments when the
+// plan's bias/filter need them), eye pass, eye-space blur, composition, light view. Makes no
+// shadow-math decisions: every matrix, range and choice comes from the plan.
 #include "gpu_scene.h"
 #include "gpu_timers.h"
 #include "image.h"
@@ -8,14 +9,20 @@
 #include "render_targets.h"
 #include "geometry/shadow_plan.h"
 
+#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace renderer {
 
 struct FrameStats {
-    uint64_t shadowTriangles = 0; // over all splits
+    uint64_t shadowTriangles = 0;             // over all splits (and peeling passes)
     uint64_t eyeTriangles = 0;
-    PassTimes gpu;                // from an earlier frame (see GpuTimers)
+    std::vector<uint64_t> splitTriangles;     // per split
+    int shadowResolution = 0;                 // of the array actually allocated
+    PassTimes gpu;                            // from an earlier frame (see GpuTimers)
+    std::vector<std::string> warnings;        // e.g. resolution clamped to the GL limit
 };
 
 class Renderer {
@@ -36,23 +43,42 @@ public:
     [[nodiscard]] GLuint lightTexture() const noexcept { return light_.texture(); }
     [[nodiscard]] Image readEye() const { return readTexture(eye_.texture(), eye_.width(), eye_.height()); }
     [[nodiscard]] Image readLight() const { return readTexture(light_.texture(), light_.width(), light_.height()); }
+    /// The eye pass's per-pixel shadow factor s ∈ [0, 1] (top row first; sky pixels are 1).
+    [[nodiscard]] std::vector<float> readShadowMask() const;
+    /// Per pixel (map texel u, v, split index, map depth); split −1 for sky.
+    [[nodiscard]] std::vector<glm::vec4> readAux() const;
     [[nodiscard]] const FrameStats& stats() const noexcept { return stats_; }
     /// Blocks until the GPU times of every rendered frame are in; for one-shot exports.
     const PassTimes& waitForTimings() noexcept;
 
 private:
     void shadowPass(const geometry::ShadowPlan& plan);
+    void drawCasters(const geometry::SplitPlan& split, Program& program, int index);
+    void peelAndCombine(const geometry::ShadowPlan& plan);
+    void momentsPass(const geometry::ShadowPlan& plan);
     void eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport);
-    /// Fraction of the array layer a split's map uses (splits may have lower resolution).
-    [[nodiscard]] float mapScale(const geometry::SplitPlan& split) const noexcept;
+    void eyeBlurAndCompose(const geometry::ShadowPlan& plan);
     void lightViewPass(const geometry::ShadowPlan& plan, int size, int split);
+    void fullscreen() const noexcept;
+    [[nodiscard]] int splitResolution(const geometry::SplitPlan& split) const noexcept;
+    [[nodiscard]] float mapScale(const geometry::SplitPlan& split) const noexcept;
+    Program& depthProgram(const std::string& defines);
+    void warnOnce(const std::string& message);
 
     std::unique_ptr<GpuScene> scene_;
-    Program depthProgram_{"depth.vert", "depth.frag"};
+    std::map<std::string, std::unique_ptr<Program>> depthPrograms_;
     Program eyeProgram_{"eye.vert", "eye.frag"};
+    Program combineProgram_{"fullscreen.vert", "combine_depth.frag"};
+    Program vsmBlurProgram_{"fullscreen.vert", "vsm_blur.frag"};
+    Program eyeBlurProgram_{"fullscreen.vert", "eye_blur.frag"};
+    Program composeProgram_{"fullscreen.vert", "compose.frag"};
     Program lightViewProgram_{"fullscreen.vert", "light_view.frag"};
     GLuint emptyVao_ = 0;
-    ShadowMapArray shadowMaps_;
+    GLuint nearestSampler_ = 0, compareSampler_ = 0, linearSampler_ = 0;
+    GLint maxTextureSize_ = 0;
+    LayeredTarget firstDepth_, secondDepth_, combinedDepth_, moments_, momentsTemp_;
+    GLuint sampledDepth_ = 0; // the depth array the eye pass reads this frame
+    EyeBuffers eyeBuffers_;
     ColorTarget eye_, light_;
     GpuTimers timers_;
     FrameStats stats_;

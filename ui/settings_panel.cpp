@@ -35,6 +35,7 @@ bool drawSettingsWidgets(geometry::ShadowSettings& settings) {
             int v = static_cast<int>(value);
             const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (info.logScale ? ImGuiSliderFlags_Logarithmic : 0);
             edited = ImGui::SliderInt(label.c_str(), &v, int(info.min), int(info.max), "%d", flags);
+            if (info.odd && v % 2 == 0) v = v + 1 <= int(info.max) ? v + 1 : v - 1; // odd-only keys snap
             value = v;
             break;
         }

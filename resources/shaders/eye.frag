@@ -1,37 +1,140 @@
 #version 430 core
-// Eye pass: Lambert + ambient, hard shadow test against the split's depth map.
+// Eye pass: Lambert + ambient terms and the shadow factor, kept apart so the mask can be blurred
+// (Scherzer §4.3) and inspected. Every bias and filter of DESIGN §3.5–3.6 lives here.
 in vec3 vWorldPos;
 in vec3 vNormal;
 uniform vec3 uColor;
-uniform vec3 uLightDir;           // l: from the light into the scene
-uniform sampler2DArray uShadowMap;
-uniform mat4 uLightViewProj[8];
-uniform float uReceiverOffset;    // constant bias: receiver moved towards the light, scene units
-uniform float uSplitFar[8];
-uniform float uMapScale[8];      // split resolution / array resolution (per-split falloff)
-uniform int uSplitCount;
+uniform vec3 uLightDir;            // l: from the light into the scene
 uniform vec3 uEye;
 uniform vec3 uViewDir;
-layout(location = 0) out vec4 oColor;
+
+uniform sampler2DArray uShadowMap;          // depth, nearest, no compare
+uniform sampler2DArrayShadow uShadowMapCmp; // same texture, linear compare (hw2x2)
+uniform sampler2DArray uMoments;            // VSM moments, linear
+uniform mat4 uLightViewProj[8];
+uniform float uSplitFar[8];
+uniform float uMapScale[8];        // split resolution / array resolution
+uniform vec2 uLinearRange[8];      // (lo, 1/(hi−lo)) of l·x, for linear z and VSM
+uniform int uSplitCount;
+uniform int uArrayResolution;
+
+uniform int uBiasType;             // 0 none 1 constant 2 slope 3 second_depth 4 midpoint 5 dual_depth 6 normal_offset
+uniform float uReceiverOffset;     // constant: scene units towards the light
+uniform float uNormalOffset;       // normal_offset: world texels along the normal
+uniform int uLinearZ;
+uniform int uTangentPlane;
+uniform int uFilter;               // 0 none 1 hw2x2 2 pcf 3 disk 4 vsm
+uniform int uKernel;
+uniform int uTaps;
+uniform float uRadius;
+uniform float uBleedReduction;
+
+layout(location = 0) out vec4 oBase;   // rgb albedo·ambient, a view depth
+layout(location = 1) out vec4 oDirect; // rgb albedo·(1−ambient)·N·L
+layout(location = 2) out vec4 oMask;   // r shadow factor
+layout(location = 3) out vec4 oAux;    // map u, v (texels), split index, receiver depth in the map
 
 const float kAmbient = 0.28;
+const float kGoldenAngle = 2.39996323;
 
-float shadowFactor(vec3 worldPos) {
-    float viewDepth = dot(worldPos - uEye, uViewDir);
+int splitOf(float viewDepth) {
     int split = 0;
     while (split < uSplitCount - 1 && viewDepth > uSplitFar[split]) ++split;
-    vec4 clip = uLightViewProj[split] * vec4(worldPos - uLightDir * uReceiverOffset, 1.0);
+    return split;
+}
+
+/// Map coordinates (u, v in [0,1]) and depth of a world point in a split, in the depth space the map stores.
+vec3 mapCoords(vec3 world, int split) {
+    vec4 clip = uLightViewProj[split] * vec4(world, 1.0);
     vec3 p = clip.xyz / clip.w * 0.5 + 0.5;
-    if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
-    float stored = texture(uShadowMap, vec3(p.xy * uMapScale[split], float(split))).r;
-    return p.z > stored ? 0.0 : 1.0;
+    if (uLinearZ == 1 || uFilter == 4) p.z = (dot(world, uLightDir) - uLinearRange[split].x) * uLinearRange[split].y;
+    return p;
+}
+
+/// World-space size of one texel at `world` (for normal offset): the map's local scale across l.
+float texelWorldSize(vec3 world, int split, float res) {
+    vec3 e1 = normalize(cross(uLightDir, abs(uLightDir.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+    vec3 e2 = cross(uLightDir, e1);
+    float h = 0.01 * max(1.0, length(world - uEye));
+    vec2 p0 = mapCoords(world, split).xy;
+    float du = length(mapCoords(world + e1 * h, split).xy - p0);
+    float dv = length(mapCoords(world + e2 * h, split).xy - p0);
+    return h / (max(min(du, dv), 1e-12) * res);
+}
+
+float hardTest(vec2 texel, float z, int split, float res) {
+    ivec2 t = clamp(ivec2(floor(texel)), ivec2(0), ivec2(int(res) - 1));
+    return z > texelFetch(uShadowMap, ivec3(t, split), 0).r ? 0.0 : 1.0;
+}
+
+float chebyshev(vec2 uv, float z, int split) {
+    vec2 m = texture(uMoments, vec3(uv, float(split))).rg;
+    if (z <= m.x) return 1.0;
+    float variance = max(m.y - m.x * m.x, 1e-7);
+    float d = z - m.x;
+    float pMax = variance / (variance + d * d);
+    return clamp((pMax - uBleedReduction) / (1.0 - uBleedReduction), 0.0, 1.0);
 }
 
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n; // CAD surfaces are seen from both sides
     float ndotl = max(dot(n, -uLightDir), 0.0);
-    float s = ndotl > 0.0 ? shadowFactor(vWorldPos) : 0.0;
-    vec3 c = uColor * (kAmbient + (1.0 - kAmbient) * ndotl * s);
-    oColor = vec4(pow(c, vec3(1.0 / 2.2)), 1.0);
+    float viewDepth = dot(vWorldPos - uEye, uViewDir);
+    int split = splitOf(viewDepth);
+    float res = float(uArrayResolution) * uMapScale[split];
+
+    vec3 receiver = vWorldPos;
+    if (uBiasType == 1) receiver -= uLightDir * uReceiverOffset;
+    if (uBiasType == 6) receiver += n * uNormalOffset * texelWorldSize(vWorldPos, split, res);
+    vec3 p = mapCoords(receiver, split);
+    vec2 texel = p.xy * res;   // texel-space position within this split's map
+    vec2 uvArray = p.xy * uMapScale[split];
+
+    // Receiver plane (Barroso §2.2): depth gradient per texel from screen derivatives, taken in
+    // uniform control flow.
+    vec2 dTdx = dFdx(texel), dTdy = dFdy(texel);
+    float dzdx = dFdx(p.z), dzdy = dFdy(p.z);
+    float det = dTdx.x * dTdy.y - dTdx.y * dTdy.x;
+    vec2 dzdt = abs(det) > 1e-12 ? vec2(dzdx * dTdy.y - dzdy * dTdx.y, dzdy * dTdx.x - dzdx * dTdy.x) / det : vec2(0.0);
+    if (uTangentPlane == 0) dzdt = vec2(0.0);
+
+    float s = 1.0;
+    bool inside = all(greaterThanEqual(p, vec3(0.0))) && all(lessThanEqual(p.xy, vec2(1.0)));
+    if (inside && ndotl > 0.0) {
+        if (uFilter == 0) {
+            s = hardTest(texel, p.z, split, res);
+        } else if (uFilter == 1) {
+            s = texture(uShadowMapCmp, vec4(uvArray, float(split), p.z));
+        } else if (uFilter == 2) {
+            int r = uKernel / 2;
+            float sum = 0.0;
+            vec2 centre = floor(texel) + 0.5;
+            for (int j = -r; j <= r; ++j)
+                for (int i = -r; i <= r; ++i) {
+                    vec2 offset = centre + vec2(i, j) - texel;
+                    sum += hardTest(texel + offset, p.z + dot(dzdt, offset), split, res);
+                }
+            s = sum / float((2 * r + 1) * (2 * r + 1));
+        } else if (uFilter == 3) {
+            // Vogel disk, rotated per pixel (interleaved gradient noise) to trade banding for noise.
+            float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+            float sum = 0.0;
+            for (int k = 0; k < uTaps; ++k) {
+                float radius = uRadius * sqrt((float(k) + 0.5) / float(uTaps));
+                float a = float(k) * kGoldenAngle + angle;
+                vec2 offset = radius * vec2(cos(a), sin(a));
+                sum += hardTest(texel + offset, p.z + dot(dzdt, offset), split, res);
+            }
+            s = sum / float(uTaps);
+        } else {
+            s = chebyshev(uvArray, p.z, split);
+        }
+    }
+    if (ndotl <= 0.0) s = 0.0; // facing away from the light: in its own shadow
+
+    oBase = vec4(uColor * kAmbient, max(viewDepth, 1e-6));
+    oDirect = vec4(uColor * (1.0 - kAmbient) * ndotl, 1.0);
+    oMask = vec4(s);
+    oAux = vec4(texel, float(split), p.z);
 }

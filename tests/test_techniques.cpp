@@ -1,0 +1,195 @@
+// Every technique on OSMesa at small sizes: combinations render without GL errors, and each bias,
+// filter, split and warp control has the effect it promises.
+#include "render_test_util.h"
+
+#include "geometry/builtin_scenes.h"
+#include "renderer/context.h"
+#include "renderer/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <set>
+
+using namespace geometry;
+
+namespace {
+
+/// One OSMesa context and renderer per scene for the whole test binary (contexts are costly).
+struct Bench {
+    std::unique_ptr<renderer::GlContext> context = renderer::createOSMesaContext();
+    Scene scene;
+    std::unique_ptr<renderer::Renderer> r;
+    explicit Bench(Scene s) : scene(std::move(s)), r(std::make_unique<renderer::Renderer>(scene)) {}
+
+    ShadowPlan render(const ShadowSettings& settings, Viewport vp) {
+        context->makeCurrent();
+        const ShadowPlan plan = planShadows(settings, scene.bounds(), scene.camera, scene.light, vp);
+        r->render(plan, vp, 64);
+        return plan;
+    }
+};
+
+Bench& planeBench() {
+    static Bench b(makePlaneScene());
+    return b;
+}
+
+ShadowSettings small(int resolution = 512) {
+    ShadowSettings s;
+    s.resolution = resolution;
+    return s;
+}
+
+/// Fraction of ground pixels (split ≥ 0) whose shadow factor is below 0.5.
+double darkFraction(const std::vector<float>& mask, const std::vector<glm::vec4>& aux) {
+    size_t dark = 0, ground = 0;
+    for (size_t i = 0; i < mask.size(); ++i) {
+        if (aux[i].z < 0.f) continue; // sky
+        ++ground;
+        dark += mask[i] < 0.5f;
+    }
+    return ground ? double(dark) / double(ground) : 0.0;
+}
+
+} // namespace
+
+TEST(Techniques, EveryWarpBiasAndFilterRendersWithoutGlError) {
+    Bench& b = planeBench();
+    int combos = 0;
+    for (int w = 0; w < 6; ++w)
+        for (int bias = 0; bias < 7; ++bias)
+            for (int f = 0; f < 5; ++f) {
+                ShadowSettings s = small(128);
+                s.warp.method = WarpMethod(w);
+                s.bias.type = BiasType(bias);
+                s.filter.type = FilterType(f);
+                s.bias.linearZ = (w + bias + f) % 2 == 0;
+                s.bias.tangentPlane = (w + f) % 3 == 0;
+                s.filter.eyeBlurIterations = (bias == 3) ? 1 : 0;
+                s.splits.count = 1 + (w + bias) % 3;
+                ASSERT_TRUE(validate(s).empty());
+                b.render(s, {64, 48});
+                const std::string errors = renderer::takeGlErrors();
+                ASSERT_EQ(errors, "") << warpMethodName(s.warp.method) << " bias " << bias << " filter " << f;
+                const auto mask = b.r->readShadowMask();
+                ASSERT_TRUE(std::all_of(mask.begin(), mask.end(), [](float v) { return v >= 0.f && v <= 1.f; }));
+                ++combos;
+            }
+    EXPECT_EQ(combos, 210);
+}
+
+// Grazing light on an empty stretch of ground: no bias darkens ground that geometry says is lit;
+// constant, slope and second-depth bias remove it.
+TEST(Techniques, BiasRemovesAcneUnderGrazingLight) {
+    Scene scene = makePlaneScene();
+    scene.camera.eye = {22.f, 4.f, 22.f};
+    scene.camera.target = {32.f, 0.f, 32.f};   // a corner no pole shadow reaches
+    scene.light.direction = {-1.f, -0.2f, -0.15f}; // about 11° above the horizon, shadows go to −x
+    Bench b(scene);
+    const auto acne = [&](BiasType type) {
+        ShadowSettings s = small(512);
+        s.filter.type = FilterType::None;
+        s.bias.type = type;
+        s.bias.constant = 2.0f;
+        s.bias.slope = 2.f;
+        s.bias.units = 4.f;
+        b.render(s, {160, 120});
+        return darkFraction(b.r->readShadowMask(), b.r->readAux());
+    };
+    EXPECT_GT(acne(BiasType::None), 0.2);
+    EXPECT_LT(acne(BiasType::Constant), 0.01);
+    EXPECT_LT(acne(BiasType::Slope), 0.01);
+    EXPECT_LT(acne(BiasType::SecondDepth), 0.01);
+}
+
+// The PCF kernel widens the shadow-edge transition: more pixels with a partial shadow factor.
+TEST(Techniques, PcfTransitionGrowsWithKernel) {
+    Bench& b = planeBench();
+    std::vector<int> partial;
+    for (int k : {1, 3, 5, 7}) {
+        ShadowSettings s = small(256);
+        s.filter.type = FilterType::Pcf;
+        s.filter.kernel = k;
+        s.bias.tangentPlane = true; // taps compare on the receiver's plane: only real edges are partial
+        b.render(s, {320, 240});
+        const auto mask = b.r->readShadowMask();
+        partial.push_back(int(std::count_if(mask.begin(), mask.end(), [](float v) { return v > 0.02f && v < 0.98f; })));
+    }
+    EXPECT_EQ(partial[0], 0);
+    for (size_t i = 1; i < partial.size(); ++i) EXPECT_GT(partial[i], partial[i - 1] + 20) << "kernel index " << i;
+}
+
+TEST(Techniques, ThreeSplitsAllAppearAcrossTheView) {
+    Bench& b = planeBench();
+    ShadowSettings s = small(256);
+    s.splits.count = 3;
+    s.splits.scheme = SplitScheme::Practical; // ground is visible from 8 m to 57 m: all three splits
+    b.render(s, {160, 120});
+    std::set<int> seen;
+    for (const auto& a : b.r->readAux())
+        if (a.z >= 0.f) seen.insert(int(a.z));
+    EXPECT_EQ(seen, (std::set<int>{0, 1, 2}));
+    EXPECT_EQ(b.r->stats().splitTriangles.size(), 3u);
+}
+
+// LiSPSM gives near receivers more texels per pixel than uniform (measured from the rendered
+// map coordinates of the bottom rows of the image).
+TEST(Techniques, LispsmGivesNearReceiversMoreTexelsPerPixel) {
+    Bench& b = planeBench();
+    const auto texelsPerPixel = [&](WarpMethod m) {
+        ShadowSettings s = small(1024);
+        s.warp.method = m;
+        b.render(s, {160, 120});
+        const auto aux = b.r->readAux();
+        double sum = 0;
+        int n = 0;
+        for (int y = 100; y < 118; ++y)
+            for (int x = 40; x < 120; ++x) {
+                const glm::vec4 a = aux[size_t(y) * 160 + x], r = aux[size_t(y) * 160 + x + 1];
+                if (a.z < 0.f || r.z < 0.f) continue;
+                sum += glm::length(glm::vec2(r) - glm::vec2(a));
+                ++n;
+            }
+        return n ? sum / n : 0.0;
+    };
+    EXPECT_GT(texelsPerPixel(WarpMethod::Lispsm), 2.0 * texelsPerPixel(WarpMethod::Uniform));
+}
+
+// Per-split caster culling: three practical splits on the platform submit little more than one
+// uniform map (DESIGN §3.4, Barroso Table 2).
+TEST(Techniques, SplitCullingKeepsShadowTrianglesNearOnePass) {
+    static Bench platform(makePlatformScene());
+    ShadowSettings one = small(256);
+    platform.render(one, {64, 48});
+    const uint64_t single = platform.r->stats().shadowTriangles;
+    ShadowSettings three = one;
+    three.splits.count = 3;
+    three.splits.scheme = SplitScheme::Practical;
+    platform.render(three, {64, 48});
+    const auto& st = platform.r->stats();
+    EXPECT_LE(double(st.shadowTriangles), 1.3 * double(single));
+    EXPECT_LT(st.eyeTriangles, platform.scene.triangleCount()); // the eye pass culls too
+    uint64_t sum = 0;
+    for (auto t : st.splitTriangles) sum += t;
+    EXPECT_EQ(sum, st.shadowTriangles);
+}
+
+TEST(Techniques, ResolutionFalloffUsesPartOfTheArray) {
+    Bench& b = planeBench();
+    ShadowSettings s = small(512);
+    s.splits.count = 2;
+    s.splits.resolutionFalloff = true;
+    const ShadowPlan plan = b.render(s, {160, 120});
+    EXPECT_EQ(plan.splits[1].resolution, 256);
+    EXPECT_EQ(b.r->stats().shadowResolution, 512);
+    EXPECT_EQ(renderer::takeGlErrors(), "");
+    // Texel coordinates of split 1 stay inside its 256² corner.
+    for (const auto& a : b.r->readAux())
+        if (int(a.z) == 1) {
+            EXPECT_LE(a.x, 256.f);
+            EXPECT_LE(a.y, 256.f);
+        }
+}
