@@ -25,10 +25,15 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     for (const auto& info : geometry::settingsDeclaration()) settings[std::string(info.key)] = info.format(o.settings);
     j["settings"] = settings;
     nlohmann::json splits = nlohmann::json::array();
-    for (const auto& s : f.plan.splits)
+    for (size_t i = 0; i < f.plan.splits.size(); ++i) {
+        const auto& s = f.plan.splits[i];
         splits.push_back({{"near", s.near}, {"far", s.far}, {"n_prime", s.warped() ? nlohmann::json(s.nPrime) : nlohmann::json("inf")},
-                          {"lambda", s.lambda}, {"resolution", s.resolution}, {"empty", s.empty()}});
+                          {"lambda", s.lambda}, {"resolution", s.resolution}, {"empty", s.empty()},
+                          {"triangles", i < stats.splitTriangles.size() ? stats.splitTriangles[i] : 0}});
+    }
     j["splits"] = splits;
+    j["shadow_map_resolution_used"] = stats.shadowResolution;
+    j["warnings"] = stats.warnings;
     j["triangles"] = f.scene.triangleCount();
     j["gamma_deg"] = f.plan.gammaDeg;
     j["light_view_angle_deg"] = f.plan.lightViewAngleDeg;
@@ -61,6 +66,7 @@ int runRender(const RenderOptions& o) {
     if (!out) throw std::runtime_error("cannot write " + metrics);
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
+    for (const auto& w : f.renderer->stats().warnings) std::cerr << "shadowscope: warning: " << w << '\n';
     std::cout << eye << '\n' << light << '\n' << metrics << '\n';
     return 0;
 }

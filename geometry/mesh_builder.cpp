@@ -24,6 +24,11 @@ void MeshBuilder::addTriangle(uint32_t a, uint32_t b, uint32_t c) {
 }
 
 void MeshBuilder::addQuad(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& p3) {
+    openSurfaces_ = true; // a lone quad can face away from the light and must still cast
+    addFace(p0, p1, p2, p3);
+}
+
+void MeshBuilder::addFace(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& p3) {
     glm::vec3 n = glm::cross(p1 - p0, p3 - p0);
     const float len = glm::length(n);
     n = len > 0.f ? n / len : glm::vec3(0, 1, 0);
@@ -40,14 +45,14 @@ static void orthonormalBasis(const glm::vec3& w, glm::vec3& u, glm::vec3& v) {
 }
 
 /// Hexahedron from 8 corners indexed as bits (x: 1, y: 2, z: 4) of a local frame.
-static void addHexahedron(MeshBuilder& mb, const glm::vec3 c[8]) {
+void addHexahedron(MeshBuilder& mb, const glm::vec3 c[8]) {
     // Faces wound counter-clockwise seen from outside (for a right-handed frame).
-    mb.addQuad(c[0], c[4], c[6], c[2]); // -x
-    mb.addQuad(c[1], c[3], c[7], c[5]); // +x
-    mb.addQuad(c[0], c[1], c[5], c[4]); // -y
-    mb.addQuad(c[2], c[6], c[7], c[3]); // +y
-    mb.addQuad(c[0], c[2], c[3], c[1]); // -z
-    mb.addQuad(c[4], c[5], c[7], c[6]); // +z
+    mb.addFace(c[0], c[4], c[6], c[2]); // -x
+    mb.addFace(c[1], c[3], c[7], c[5]); // +x
+    mb.addFace(c[0], c[1], c[5], c[4]); // -y
+    mb.addFace(c[2], c[6], c[7], c[3]); // +y
+    mb.addFace(c[0], c[2], c[3], c[1]); // -z
+    mb.addFace(c[4], c[5], c[7], c[6]); // +z
 }
 
 void MeshBuilder::addBox(const glm::vec3& center, const glm::vec3& h) {
@@ -109,6 +114,7 @@ void MeshBuilder::addCylinder(const glm::vec3& a, const glm::vec3& b, float radi
 }
 
 void MeshBuilder::addGroundGrid(const glm::vec3& center, float size, int cells) {
+    openSurfaces_ = true;
     cells = std::max(cells, 1);
     const float step = size / static_cast<float>(cells);
     const glm::vec3 origin = center - glm::vec3(0.5f * size, 0.f, 0.5f * size);
@@ -128,6 +134,8 @@ void MeshBuilder::addGroundGrid(const glm::vec3& center, float size, int cells) 
 
 Mesh MeshBuilder::build() {
     Mesh m = std::move(mesh_);
+    m.twoSided = openSurfaces_;
+    openSurfaces_ = false;
     chunkMesh(m);
     mesh_ = Mesh{};
     return m;

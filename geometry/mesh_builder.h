@@ -25,6 +25,9 @@ public:
     [[nodiscard]] Mesh build();
 
 private:
+    void addFace(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& p3);
+    friend void addHexahedron(MeshBuilder& mb, const glm::vec3 c[8]);
+    bool openSurfaces_ = false;
     uint32_t addVertex(const glm::vec3& p, const glm::vec3& n);
     void addTriangle(uint32_t a, uint32_t b, uint32_t c);
     Mesh mesh_;

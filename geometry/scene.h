@@ -25,6 +25,9 @@ struct Mesh {
     glm::vec3 color{0.7f};
     glm::mat4 transform{1.f};         // object → world
     std::vector<Chunk> chunks;        // filled by chunkMesh()
+    /// Holds open surfaces (quads, grids) that must cast from both faces. Solids cast from their
+    /// faces towards the light alone, which halves shadow-pass rasterization.
+    bool twoSided = true;
 
     [[nodiscard]] size_t triangleCount() const noexcept { return indices.size() / 3; }
     [[nodiscard]] Aabb worldBounds() const noexcept;

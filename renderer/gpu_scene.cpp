@@ -10,6 +10,7 @@ GpuScene::GpuScene(const geometry::Scene& scene) {
         g.color = mesh.color;
         g.chunks = mesh.chunks;
         g.triangles = mesh.triangleCount();
+        g.twoSided = mesh.twoSided;
         std::vector<float> interleaved;
         interleaved.reserve(mesh.positions.size() * 6);
         for (size_t i = 0; i < mesh.positions.size(); ++i) {

@@ -14,6 +14,7 @@ struct GpuMesh {
     glm::vec3 color{0.7f};
     std::vector<geometry::Chunk> chunks;
     uint64_t triangles = 0;
+    bool twoSided = true; // casts from both faces (open surfaces)
 };
 
 class GpuScene {

@@ -14,7 +14,6 @@ using geometry::FilterType;
 
 namespace {
 const glm::vec3 kSky{0.62f, 0.72f, 0.85f};
-constexpr double kShadowMemoryBudget = 1.5 * 1024 * 1024 * 1024; // bytes, all shadow textures
 
 GLuint makeSampler(GLenum filter, bool compare) {
     GLuint s = 0;
@@ -39,7 +38,8 @@ bool needsPeeling(const geometry::ShadowPlan& plan) {
 }
 } // namespace
 
-Renderer::Renderer(const geometry::Scene& scene) : scene_(std::make_unique<GpuScene>(scene)) {
+Renderer::Renderer(const geometry::Scene& scene, RendererLimits limits)
+    : scene_(std::make_unique<GpuScene>(scene)), limits_(limits) {
     glGenVertexArrays(1, &emptyVao_);
     nearestSampler_ = makeSampler(GL_NEAREST, false);
     compareSampler_ = makeSampler(GL_LINEAR, true);
@@ -102,9 +102,20 @@ const PassTimes& Renderer::waitForTimings() noexcept {
     return stats_.gpu;
 }
 
-void Renderer::drawCasters(const geometry::SplitPlan& split, Program& program, int index) {
+void Renderer::drawCasters(const geometry::SplitPlan& split, Program& program, int index, bool backFacesOnly) {
     program.set("uLightViewProj", split.lightViewProj);
     for (const auto& m : scene_->meshes()) {
+        // Faces are wound counter-clockwise as seen from the light (the plan's maps never mirror).
+        // second depth: back faces only; solids: faces towards the light only; open surfaces: both.
+        if (backFacesOnly) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_FRONT);
+        } else if (!m.twoSided) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+        } else {
+            glDisable(GL_CULL_FACE);
+        }
         program.set("uModel", m.transform);
         const uint64_t n = scene_->draw(m, [&](const geometry::Aabb& b) {
             return geometry::intersectsClipVolume(b, split.lightViewProj);
@@ -125,11 +136,13 @@ void Renderer::shadowPass(const geometry::ShadowPlan& plan) {
     }
     // Depth arrays (one, or three when peeling) and VSM moments: halve until they fit the budget.
     const double bytesPerTexel = needsPeeling(plan) ? 12.0 : (plan.filter.type == FilterType::Vsm ? 20.0 : 4.0);
-    while (resolution > 16 && double(resolution) * resolution * layers * bytesPerTexel > kShadowMemoryBudget) {
+    const int requested = resolution;
+    while (resolution > 16 && double(resolution) * resolution * layers * bytesPerTexel > limits_.shadowMemoryBytes)
         resolution /= 2;
-        warnOnce("shadow maps exceed the " + std::to_string(int(kShadowMemoryBudget / (1 << 20))) +
-                 " MiB budget; resolution reduced to " + std::to_string(resolution));
-    }
+    if (resolution != requested)
+        warnOnce("shadow maps of " + std::to_string(requested) + "² exceed the " +
+                 std::to_string(int(limits_.shadowMemoryBytes / (1 << 20))) + " MiB budget; resolution reduced to " +
+                 std::to_string(resolution));
     stats_.shadowResolution = resolution;
     firstDepth_.ensure(resolution, layers, 0, true);
 
@@ -137,13 +150,6 @@ void Renderer::shadowPass(const geometry::ShadowPlan& plan) {
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    // second depth: only back faces go into the map (closed CAD solids); otherwise both faces cast.
-    if (plan.bias.type == BiasType::SecondDepth) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_FRONT);
-    } else {
-        glDisable(GL_CULL_FACE);
-    }
     const bool slope = plan.bias.type == BiasType::Slope;
     const bool linear = plan.bias.linearZ;
     if (slope && !linear) {
@@ -161,7 +167,7 @@ void Renderer::shadowPass(const geometry::ShadowPlan& plan) {
         if (split.empty()) continue;
         program.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
                                               1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
-        drawCasters(split, program, i);
+        drawCasters(split, program, i, plan.bias.type == BiasType::SecondDepth);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
@@ -189,7 +195,7 @@ void Renderer::peelAndCombine(const geometry::ShadowPlan& plan) {
         peel.set("uLayer", i);
         peel.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
                                            1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
-        drawCasters(split, peel, i);
+        drawCasters(split, peel, i, false);
     }
     combineProgram_.use();
     bindTexture(0, GL_TEXTURE_2D_ARRAY, firstDepth_.depthTexture(), nearestSampler_);
@@ -208,6 +214,7 @@ void Renderer::peelAndCombine(const geometry::ShadowPlan& plan) {
         fullscreen();
     }
     glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
     sampledDepth_ = combinedDepth_.depthTexture();
 }
 
@@ -228,8 +235,9 @@ void Renderer::momentsPass(const geometry::ShadowPlan& plan) {
         if (split.empty()) continue;
         program.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
                                               1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
-        drawCasters(split, program, i);
+        drawCasters(split, program, i, false);
     }
+    glDisable(GL_CULL_FACE);
     const int radius = plan.filter.kernel / 2;
     if (radius > 0) {
         glDisable(GL_DEPTH_TEST);

@@ -25,10 +25,14 @@ struct FrameStats {
     std::vector<std::string> warnings;        // e.g. resolution clamped to the GL limit
 };
 
+struct RendererLimits {
+    double shadowMemoryBytes = 1.5 * 1024 * 1024 * 1024; // all shadow textures together
+};
+
 class Renderer {
 public:
     /// Needs a current GL context; uploads the scene.
-    explicit Renderer(const geometry::Scene& scene);
+    explicit Renderer(const geometry::Scene& scene, RendererLimits limits = {});
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
@@ -53,7 +57,7 @@ public:
 
 private:
     void shadowPass(const geometry::ShadowPlan& plan);
-    void drawCasters(const geometry::SplitPlan& split, Program& program, int index);
+    void drawCasters(const geometry::SplitPlan& split, Program& program, int index, bool backFacesOnly);
     void peelAndCombine(const geometry::ShadowPlan& plan);
     void momentsPass(const geometry::ShadowPlan& plan);
     void eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport);
@@ -76,6 +80,7 @@ private:
     GLuint emptyVao_ = 0;
     GLuint nearestSampler_ = 0, compareSampler_ = 0, linearSampler_ = 0;
     GLint maxTextureSize_ = 0;
+    RendererLimits limits_;
     LayeredTarget firstDepth_, secondDepth_, combinedDepth_, moments_, momentsTemp_;
     GLuint sampledDepth_ = 0; // the depth array the eye pass reads this frame
     EyeBuffers eyeBuffers_;

@@ -193,3 +193,19 @@ TEST(Techniques, ResolutionFalloffUsesPartOfTheArray) {
             EXPECT_LE(a.y, 256.f);
         }
 }
+
+// Shadow maps that exceed the memory budget are reduced, with a warning, never a failure.
+TEST(Techniques, ResolutionBeyondTheBudgetIsReducedWithAWarning) {
+    renderer::RendererLimits limits;
+    limits.shadowMemoryBytes = 4.0 * 1024 * 1024; // 4 MiB: 1024² float depth is the most that fits
+    Bench& shared = planeBench();
+    shared.context->makeCurrent();
+    renderer::Renderer r(shared.scene, limits);
+    ShadowSettings s = small(4096);
+    const ShadowPlan plan = planShadows(s, shared.scene.bounds(), shared.scene.camera, shared.scene.light, {64, 48});
+    r.render(plan, {64, 48}, 64);
+    EXPECT_EQ(r.stats().shadowResolution, 1024);
+    ASSERT_FALSE(r.stats().warnings.empty());
+    EXPECT_NE(r.stats().warnings.front().find("resolution reduced to 1024"), std::string::npos);
+    EXPECT_EQ(renderer::takeGlErrors(), "");
+}

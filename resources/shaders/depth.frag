@@ -2,7 +2,9 @@
 // Shadow pass fragment. Variants (defines): LINEAR_Z stores linear light depth (Scherzer §4.2),
 // PEEL keeps only surfaces behind the first layer (second depth for midpoint / dual depth),
 // MOMENTS writes VSM moments of linear depth.
+#if defined(LINEAR_Z) || defined(MOMENTS)
 in vec3 vWorldPos;
+#endif
 uniform vec3 uLightDir;
 uniform vec2 uLinearRange;   // (lo, 1 / (hi − lo)) of l·x for this split
 uniform vec2 uSlopeBias;     // LINEAR_Z: (slope factor, units) applied by hand (polygon offset cannot)
@@ -14,7 +16,9 @@ uniform int uLayer;
 layout(location = 0) out vec2 oMoments;
 #endif
 
+#if defined(LINEAR_Z) || defined(MOMENTS)
 float linearDepth() { return (dot(vWorldPos, uLightDir) - uLinearRange.x) * uLinearRange.y; }
+#endif
 
 void main() {
 #ifdef LINEAR_Z

@@ -3,9 +3,13 @@
 layout(location = 0) in vec3 aPosition;
 uniform mat4 uModel;
 uniform mat4 uLightViewProj;
-out vec3 vWorldPos;
+#if defined(LINEAR_Z) || defined(MOMENTS)
+out vec3 vWorldPos; // only the variants that compute linear depth need it
+#endif
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
+#if defined(LINEAR_Z) || defined(MOMENTS)
     vWorldPos = world.xyz;
+#endif
     gl_Position = uLightViewProj * world;
 }

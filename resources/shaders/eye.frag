@@ -67,6 +67,25 @@ float hardTest(vec2 texel, float z, int split, float res) {
     return z > texelFetch(uShadowMap, ivec3(t, split), 0).r ? 0.0 : 1.0;
 }
 
+/// k×k box PCF one texel apart (k = uKernel, odd), four texels per textureGather: the k×k block
+/// is covered by ⌈k/2⌉² gathers and the extra row and column are masked out.
+float pcfBox(vec2 texel, float z, int split, vec2 dzdt) {
+    vec2 first = floor(texel) - float(uKernel / 2); // lower-left texel of the block
+    float lit = 0.0;
+    for (int j = 0; j < uKernel; j += 2)
+        for (int i = 0; i < uKernel; i += 2) {
+            vec2 corner = first + vec2(i, j) + 1.0; // shared corner of texels (i, j)..(i+1, j+1)
+            vec4 d = textureGather(uShadowMap, vec3(corner / float(uArrayResolution), float(split)), 0);
+            // Gather order: x (i, j+1), y (i+1, j+1), z (i+1, j), w (i, j).
+            vec2 o = first + vec2(i, j) + 0.5 - texel; // offset of texel (i, j) from the receiver
+            vec4 ref = z + vec4(dot(dzdt, o + vec2(0, 1)), dot(dzdt, o + vec2(1, 1)), dot(dzdt, o + vec2(1, 0)), dot(dzdt, o));
+            vec4 inside = vec4(j + 1 < uKernel ? 1.0 : 0.0, (i + 1 < uKernel && j + 1 < uKernel) ? 1.0 : 0.0,
+                               i + 1 < uKernel ? 1.0 : 0.0, 1.0);
+            lit += dot(inside, step(ref, d)); // lit where ref ≤ stored
+        }
+    return lit / float(uKernel * uKernel);
+}
+
 float chebyshev(vec2 uv, float z, int split) {
     vec2 m = texture(uMoments, vec3(uv, float(split))).rg;
     if (z <= m.x) return 1.0;
@@ -107,15 +126,7 @@ void main() {
         } else if (uFilter == 1) {
             s = texture(uShadowMapCmp, vec4(uvArray, float(split), p.z));
         } else if (uFilter == 2) {
-            int r = uKernel / 2;
-            float sum = 0.0;
-            vec2 centre = floor(texel) + 0.5;
-            for (int j = -r; j <= r; ++j)
-                for (int i = -r; i <= r; ++i) {
-                    vec2 offset = centre + vec2(i, j) - texel;
-                    sum += hardTest(texel + offset, p.z + dot(dzdt, offset), split, res);
-                }
-            s = sum / float((2 * r + 1) * (2 * r + 1));
+            s = pcfBox(texel, p.z, split, dzdt);
         } else if (uFilter == 3) {
             // Vogel disk, rotated per pixel (interleaved gradient noise) to trade banding for noise.
             float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
