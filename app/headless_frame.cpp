@@ -7,7 +7,7 @@ namespace app {
 
 int lightViewSize(int shadowRes) noexcept { return std::clamp(shadowRes, 16, 1024); }
 
-HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames) {
+HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames, renderer::ViewOptions views) {
     HeadlessFrame f;
     f.scene = loadScene(options);
     f.context = renderer::createHeadlessContext(renderer::parseBackend(options.backend));
@@ -16,7 +16,8 @@ HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames) {
     f.plan = geometry::planShadows(settings, f.scene.bounds(), f.scene.camera, f.scene.light, options.size);
     f.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     f.renderer = std::make_unique<renderer::Renderer>(f.scene);
-    for (int i = 0; i <= warmupFrames; ++i) f.renderer->render(f.plan, options.size, lightViewSize(settings.resolution));
+    if (views.lightViewSize <= 0) views.lightViewSize = lightViewSize(settings.resolution);
+    for (int i = 0; i <= warmupFrames; ++i) f.renderer->render(f.plan, options.size, views);
     f.renderer->waitForTimings();
     return f;
 }

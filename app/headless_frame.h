@@ -17,7 +17,8 @@ struct HeadlessFrame {
 };
 
 /// Renders `warmupFrames` + 1 frames of the options' scene and waits for GPU timings.
-[[nodiscard]] HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames = 1);
+[[nodiscard]] HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames = 1,
+                                           renderer::ViewOptions views = {});
 
 /// Edge of the square light-view image for a shadow-map resolution.
 [[nodiscard]] int lightViewSize(int shadowRes) noexcept;

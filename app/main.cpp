@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
     app::RenderOptions renderOptions;
     CLI::App* render = cli.add_subcommand("render", "Render the eye and light views headless to PNG + metrics.json");
     app::addRenderOptions(*render, renderOptions);
+    app::ExportOptions exportOptions;
+    app::addExportOptions(*render, exportOptions);
 
     app::CurvesOptions curvesOptions;
     CLI::App* curves = cli.add_subcommand("curves", "Write the analytic curves (warp n', aliasing error m_z, split "
@@ -28,7 +30,7 @@ int main(int argc, char** argv) {
 
     try {
         cli.parse(argc, argv);
-        if (render->parsed()) return app::runRender(renderOptions);
+        if (render->parsed()) return app::runRender(renderOptions, exportOptions);
         if (curves->parsed()) return app::runCurves(curvesOptions);
         return app::runGuiOrHeadless(guiOptions);
     } catch (const CLI::CallForHelp& e) {

@@ -1,12 +1,21 @@
 #include "render_command.h"
 
 #include "headless_frame.h"
+#include "inspection.h"
+#include "view_images.h"
+#include "geometry/ground_truth.h"
+#include "renderer/heatmap.h"
+
+#include <CLI/CLI.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <algorithm>
+#include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace app {
@@ -45,29 +54,94 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     j["timing_ms"] = {{"shadow", stats.gpu.of(Pass::Shadow)},
                       {"eye", stats.gpu.of(Pass::Eye)},
                       {"light_view", stats.gpu.of(Pass::LightView)},
+                      {"frame", stats.gpu.frame()},
                       {"total", stats.gpu.total()}};
     j["plan_us"] = f.planMicroseconds;
     j["triangles_submitted"] = {{"shadow", stats.shadowTriangles}, {"eye", stats.eyeTriangles}};
     return j;
 }
 
-int runRender(const RenderOptions& o) {
-    const HeadlessFrame f = renderHeadless(o);
+void addExportOptions(CLI::App& cmd, ExportOptions& e) {
+    std::string names;
+    for (const auto& v : viewNames()) names += (names.empty() ? "" : ",") + v;
+    cmd.add_option("--views", e.views, "Views to write, comma-separated: " + names)
+        ->delimiter(',')
+        ->check(CLI::IsMember(viewNames()))
+        ->capture_default_str();
+    cmd.add_flag("--truth", e.truth, "Ray-trace ground truth (Embree) and report misclassified pixels");
+    cmd.add_option("--texel-grid", e.texelGrid, "texels view: draw every N-th texel line")->check(CLI::Range(1, 4096));
+    cmd.add_option("--light-split", e.lightSplit, "light views: show this split's map")->check(CLI::Range(0, 7));
+}
+
+namespace {
+
+struct Writer {
+    std::filesystem::path dir;
+    std::vector<std::string> written;
+    void png(const std::string& name, const renderer::Image& img) {
+        const std::string path = (dir / name).string();
+        renderer::writePng(path, img);
+        written.push_back(path);
+    }
+    void pfm(const std::string& name, const std::vector<float>& values, int w, int h) {
+        const std::string path = (dir / name).string();
+        renderer::writePfm(path, values, w, h);
+        written.push_back(path);
+    }
+};
+
+bool wants(const ExportOptions& e, const std::string& view) {
+    return std::find(e.views.begin(), e.views.end(), view) != e.views.end();
+}
+
+} // namespace
+
+int runRender(const RenderOptions& o, const ExportOptions& e) {
+    if (wants(e, "truth") && !e.truth) throw std::invalid_argument("--views truth needs --truth");
+    renderer::ViewOptions views;
+    views.lightViewSize = lightViewSize(o.settings.resolution);
+    views.lightSplit = e.lightSplit;
+    views.unwarped = wants(e, "light_unwarped");
+    const HeadlessFrame f = renderHeadless(o, 1, views);
+    if (e.lightSplit >= int(f.plan.splits.size()))
+        throw std::invalid_argument("--light-split " + std::to_string(e.lightSplit) + ": the plan has " +
+                                    std::to_string(f.plan.splits.size()) + " split(s)");
     std::error_code ec;
     std::filesystem::create_directories(o.out, ec);
     if (ec) throw std::runtime_error("cannot create output folder " + o.out + ": " + ec.message());
-    const auto dir = std::filesystem::path(o.out);
-    const std::string eye = (dir / "eye.png").string(), light = (dir / "light.png").string(),
-                      metrics = (dir / "metrics.json").string();
-    renderer::writePng(eye, f.renderer->readEye());
-    renderer::writePng(light, f.renderer->readLight());
+    Writer w{std::filesystem::path(o.out), {}};
+
+    std::unique_ptr<geometry::GroundTruth> truth;
+    if (e.truth) truth = std::make_unique<geometry::GroundTruth>(f.scene);
+    const Inspection in = inspect(*f.renderer, f.plan, truth.get());
+    const renderer::Image eye = f.renderer->readEye();
+    if (wants(e, "eye")) w.png("eye.png", eye);
+    if (wants(e, "light")) w.png("light.png", f.renderer->readLight());
+    if (wants(e, "light_unwarped")) w.png("light_unwarped.png", f.renderer->readUnwarpedLight());
+    if (wants(e, "aliasing")) {
+        w.png("aliasing.png", aliasingView(in));
+        w.pfm("aliasing.pfm", in.m, in.width, in.height);
+    }
+    if (wants(e, "splits")) w.png("splits.png", splitsView(eye, in, f.plan));
+    if (wants(e, "texels")) w.png("texels.png", texelsView(eye, in, e.texelGrid));
+    if (e.truth) {
+        w.pfm("shadow.pfm", in.shadow, in.width, in.height);
+        std::vector<float> t(in.occluded->size());
+        for (size_t i = 0; i < t.size(); ++i) t[i] = in.receiver[i] ? ((*in.occluded)[i] ? 0.f : 1.f) : NAN;
+        w.pfm("truth.pfm", t, in.width, in.height);
+        if (wants(e, "truth")) w.png("truth.png", truthView(in));
+    }
+    nlohmann::json j = frameMetrics(f, o);
+    addInspectionMetrics(j, in);
+    const std::string metrics = (w.dir / "metrics.json").string();
     std::ofstream out(metrics);
-    out << frameMetrics(f, o).dump(2) << '\n';
+    out << j.dump(2) << '\n';
     if (!out) throw std::runtime_error("cannot write " + metrics);
+    w.written.push_back(metrics);
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
-    for (const auto& w : f.renderer->stats().warnings) std::cerr << "shadowscope: warning: " << w << '\n';
-    std::cout << eye << '\n' << light << '\n' << metrics << '\n';
+    for (const auto& warning : f.renderer->stats().warnings) std::cerr << "shadowscope: warning: " << warning << '\n';
+    for (const auto& path : w.written) std::cout << path << '\n';
     return 0;
 }
 

@@ -3,11 +3,28 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <string>
+#include <vector>
+
+namespace CLI { class App; }
+
 namespace app {
 struct HeadlessFrame;
 
-/// `shadowscope render`: writes DIR/eye.png, DIR/light.png, DIR/metrics.json; prints the paths.
-int runRender(const RenderOptions& options);
+/// What `render` writes besides metrics.json.
+struct ExportOptions {
+    std::vector<std::string> views{"eye", "light"}; // names from viewNames()
+    bool truth = false;                             // ground-truth pass (Embree)
+    int texelGrid = 1;                              // texels view: a line every N texels
+    int lightSplit = 0;                             // light views: which split's map
+};
+
+/// Adds --views, --truth, --texel-grid, --light-split.
+void addExportOptions(CLI::App& cmd, ExportOptions& options);
+
+/// `shadowscope render`: writes one PNG per view (plus PFM raw values for aliasing, the shadow
+/// factor and truth) and DIR/metrics.json; prints the paths.
+int runRender(const RenderOptions& options, const ExportOptions& exports = {});
 
 /// metrics.json content for a rendered frame.
 [[nodiscard]] nlohmann::json frameMetrics(const HeadlessFrame& frame, const RenderOptions& options);

@@ -67,6 +67,42 @@ glm::vec2 linearDepthRange(const std::vector<glm::vec3>& body, const dvec3& l, c
     return {float(lo - pad), float(hi + pad)};
 }
 
+/// World corners of clip space's unit cube under `viewProj` (bits x, y, z: −1 or +1).
+std::array<glm::vec3, 8> unitCubeInWorld(const dmat4& viewProj) noexcept {
+    const dmat4 inv = glm::inverse(viewProj);
+    std::array<glm::vec3, 8> out{};
+    for (int i = 0; i < 8; ++i) {
+        const dvec4 w = inv * dvec4((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0, 1.0);
+        out[i] = glm::vec3(std::abs(w.w) > 1e-300 ? dvec3(w) / w.w : dvec3(0.0));
+    }
+    return out;
+}
+
+/// Orthographic light view over every B_i, the eye and the warp centres, a little larger.
+glm::mat4 unwarpedView(const ShadowPlan& plan) noexcept {
+    const dmat4 view = glm::lookAt(dvec3(0.0), dvec3(plan.l), std::abs(plan.l.y) < 0.9f ? dvec3(0, 1, 0) : dvec3(1, 0, 0));
+    Box box;
+    const auto add = [&](const glm::vec3& p) { box.add(dvec3(view * dvec4(dvec3(p), 1.0))); };
+    add(plan.eye);
+    for (const auto& s : plan.splits) {
+        for (const auto& p : s.body) add(p);
+        if (s.warped()) add(s.warpCentre);
+    }
+    for (const auto& c : plan.sceneBounds.corners()) box.lo.z = std::min(box.lo.z, dvec3(view * dvec4(dvec3(c), 1.0)).z),
+                                                     box.hi.z = std::max(box.hi.z, dvec3(view * dvec4(dvec3(c), 1.0)).z);
+    // Square, centred, 10 % margin, so the picture is not stretched.
+    const glm::dvec2 centre = 0.5 * (glm::dvec2(box.lo) + glm::dvec2(box.hi));
+    const double half = 0.55 * std::max({box.hi.x - box.lo.x, box.hi.y - box.lo.y, 1e-3});
+    box.lo = dvec3(centre.x - half, centre.y - half, box.lo.z);
+    box.hi = dvec3(centre.x + half, centre.y + half, box.hi.z);
+    dmat4 flipZ(1.0);
+    flipZ[2][2] = -1.0;
+    std::swap(box.lo.z, box.hi.z);
+    box.lo.z = -box.lo.z;
+    box.hi.z = -box.hi.z;
+    return glm::mat4(fitUnitCube(box) * flipZ * view);
+}
+
 struct SplitFrame {
     dmat4 lightView;   // world → light space L
     dmat4 lightProj;   // L → shadow clip space
@@ -165,13 +201,17 @@ ShadowPlan planShadows(const ShadowSettings& settings, const Aabb& S, const Came
     const double gamma = glm::radians(double(plan.gammaDeg));
     const double phi = glm::radians(double(camera.fovYDeg)) * 0.5;
     const std::vector<double> c = splitDistances(settings.splits, camera.near, camera.far, gamma);
+    plan.viewFrustum = frustumCorners(camera, viewport.aspect(), camera.near, camera.far);
+    plan.sceneBounds = S;
+    plan.eye = camera.eye;
 
     for (int i = 0; i + 1 < int(c.size()); ++i) {
         SplitPlan split;
         split.near = float(c[i]);
         split.far = float(c[i + 1]);
         split.resolution = splitResolution(settings.splits, settings.resolution, i);
-        if (c[i + 1] > c[i]) split.body = focusBody(frustumCorners(camera, viewport.aspect(), split.near, split.far), S, plan.l);
+        split.frustum = frustumCorners(camera, viewport.aspect(), split.near, split.far);
+        if (c[i + 1] > c[i]) split.body = focusBody(split.frustum, S, plan.l);
         if (split.empty()) {
             plan.splits.push_back(std::move(split));
             continue;
@@ -199,6 +239,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const Aabb& S, const Came
         split.warpCentre = glm::vec3(frame.warpCentre);
         split.warpDepth = float(frame.d);
         split.bodyDepthRange = depthRangeInMap(viewProj, split.body);
+        split.mapVolume = unitCubeInWorld(viewProj);
         split.linearDepthRange = linearDepthRange(split.body, l, S);
         dvec3 centre(0.0);
         for (const auto& p : split.body) centre += dvec3(p);
@@ -207,6 +248,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const Aabb& S, const Came
         split.depthPerUnit = float(std::max(0.0, (depth01(viewProj, centre + step * l) - depth01(viewProj, centre)) / step));
         plan.splits.push_back(std::move(split));
     }
+    plan.unwarpedViewProj = unwarpedView(plan);
     return plan;
 }
 

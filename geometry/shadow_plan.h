@@ -4,6 +4,7 @@
 #include "scene.h"
 #include "settings.h"
 
+#include <array>
 #include <vector>
 
 namespace geometry {
@@ -26,6 +27,8 @@ struct SplitPlan {
     glm::vec3 warpDir{0.f, 0.f, -1.f}; // V_P, ⊥ l
     glm::vec3 warpCentre{0.f};         // projection centre c of P (world), when warped
     float warpDepth = 0.f;             // d: extent of B_i along V_P
+    std::array<glm::vec3, 8> frustum{}; // V_i's corners (bits x: right, y: top, z: far)
+    std::array<glm::vec3, 8> mapVolume{}; // world corners of the map's unit cube (the warp frustum P as fitted)
     glm::vec2 bodyDepthRange{0.f, 1.f}; // depth of B_i in this map, for display
     glm::vec2 linearDepthRange{0.f, 1.f}; // [lo, hi] of l·x over B_i and the casters up to S (linear z)
     float depthPerUnit = 0.f;          // map depth per scene unit along l, at B_i's centre
@@ -39,6 +42,12 @@ struct ShadowPlan {
     float gammaDeg = 0.f;          // γ = acos(|v·l|)
     float lightViewAngleDeg = 0.f; // acos(v·l): 0 light behind the eye, 180 facing it
     glm::mat4 eyeView{1.f}, eyeProj{1.f};
+    std::array<glm::vec3, 8> viewFrustum{}; // V's corners, near to far
+    Aabb sceneBounds;                        // S
+    glm::vec3 eye{0.f};
+    /// An orthographic view from the light framing every B_i, the eye and P's projection centres,
+    /// for the unwarped light view (what the warp does, seen without it).
+    glm::mat4 unwarpedViewProj{1.f};
     /// Constant bias: receivers are tested as if moved this far towards the light (scene units),
     /// which is the same offset in every split whatever its warp.
     float receiverOffset = 0.f;

@@ -14,7 +14,9 @@ struct PassTimes {
     std::array<double, static_cast<std::size_t>(Pass::Count)> ms{}; // GPU milliseconds per pass
     bool valid = false;
     [[nodiscard]] double of(Pass p) const noexcept { return ms[static_cast<std::size_t>(p)]; }
-    [[nodiscard]] double total() const noexcept;
+    [[nodiscard]] double total() const noexcept; // every pass, the inspection views included
+    /// The shadowing itself: shadow maps and eye view, without the inspection views.
+    [[nodiscard]] double frame() const noexcept { return of(Pass::Shadow) + of(Pass::Eye); }
 };
 
 class GpuTimers {

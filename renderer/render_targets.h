@@ -52,10 +52,11 @@ private:
 };
 
 /// The eye pass's outputs: base (albedo·ambient, view depth), direct light, shadow mask, aux
-/// (map texel, split, map depth), depth; plus two mask buffers for the eye-space blur.
+/// (map texel, split, map depth), position (world, aliasing m), normal (n, N·L), depth; plus two
+/// mask buffers for the eye-space blur.
 class EyeBuffers {
 public:
-    enum Attachment { Base, Direct, Mask, Aux, Count };
+    enum Attachment { Base, Direct, Mask, Aux, Position, Normal, Count };
     EyeBuffers() = default;
     ~EyeBuffers();
     EyeBuffers(const EyeBuffers&) = delete;

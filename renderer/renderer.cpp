@@ -79,8 +79,9 @@ float Renderer::mapScale(const geometry::SplitPlan& split) const noexcept {
     return firstDepth_.resolution() > 0 ? float(splitResolution(split)) / float(firstDepth_.resolution()) : 1.f;
 }
 
-void Renderer::render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, int lightViewSize,
-                      int lightSplit) {
+void Renderer::render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, const ViewOptions& options) {
+    ViewOptions views = options;
+    if (views.lightViewSize <= 0) views.lightViewSize = 1024;
     if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
     stats_.shadowTriangles = stats_.eyeTriangles = 0;
     stats_.splitTriangles.assign(plan.splits.size(), 0);
@@ -90,7 +91,8 @@ void Renderer::render(const geometry::ShadowPlan& plan, const geometry::Viewport
     eyePass(plan, viewport);
     eyeBlurAndCompose(plan);
     timers_.begin(Pass::LightView);
-    lightViewPass(plan, lightViewSize, std::clamp(lightSplit, 0, int(plan.splits.size()) - 1));
+    lightViewPass(plan, views);
+    if (views.unwarped) unwarpedViewPass(plan, views);
     timers_.endFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     for (int unit = 0; unit < 4; ++unit) glBindSampler(unit, 0);
@@ -264,12 +266,16 @@ void Renderer::momentsPass(const geometry::ShadowPlan& plan) {
 
 void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport) {
     eyeBuffers_.ensure(viewport.width, viewport.height);
+    stats_.eyeWidth = viewport.width;
+    stats_.eyeHeight = viewport.height;
     eyeBuffers_.bind();
     const float zero[4] = {0.f, 0.f, 0.f, 0.f}, lit[4] = {1.f, 1.f, 1.f, 1.f}, sky[4] = {0.f, 0.f, -1.f, 0.f};
     glClearBufferfv(GL_COLOR, EyeBuffers::Base, zero);
     glClearBufferfv(GL_COLOR, EyeBuffers::Direct, zero);
     glClearBufferfv(GL_COLOR, EyeBuffers::Mask, lit);
     glClearBufferfv(GL_COLOR, EyeBuffers::Aux, sky);
+    glClearBufferfv(GL_COLOR, EyeBuffers::Position, zero);
+    glClearBufferfv(GL_COLOR, EyeBuffers::Normal, zero);
     glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -354,8 +360,9 @@ void Renderer::eyeBlurAndCompose(const geometry::ShadowPlan& plan) {
     glEnable(GL_DEPTH_TEST);
 }
 
-void Renderer::lightViewPass(const geometry::ShadowPlan& plan, int size, int split) {
-    light_.ensure(size, size);
+void Renderer::lightViewPass(const geometry::ShadowPlan& plan, const ViewOptions& views) {
+    const int split = std::clamp(views.lightSplit, 0, int(plan.splits.size()) - 1);
+    light_.ensure(views.lightViewSize, views.lightViewSize);
     light_.bind();
     glDisable(GL_DEPTH_TEST);
     lightViewProgram_.use();
@@ -365,9 +372,31 @@ void Renderer::lightViewPass(const geometry::ShadowPlan& plan, int size, int spl
     lightViewProgram_.set("uMapScale", mapScale(plan.splits[split]));
     const auto& s = plan.splits[split];
     const bool linear = plan.bias.linearZ || plan.filter.type == FilterType::Vsm;
-    lightViewProgram_.set("uDepthRange", linear ? glm::vec2(0.f, 1.f) : s.bodyDepthRange);
+    glm::vec2 range = views.depthRange;
+    if (range.x < 0.f) range = linear ? glm::vec2(0.f, 1.f) : s.bodyDepthRange;
+    lightViewProgram_.set("uDepthRange", range);
     fullscreen();
+    if (views.overlays) lines_.draw(geometry::warpedViewOverlays(plan, split), s.lightViewProj);
     glEnable(GL_DEPTH_TEST);
+}
+
+void Renderer::unwarpedViewPass(const geometry::ShadowPlan& plan, const ViewOptions& views) {
+    lightUnwarped_.ensure(views.lightViewSize, views.lightViewSize);
+    lightUnwarped_.bind();
+    const float background[4] = {0.08f, 0.10f, 0.22f, 1.f};
+    glClearBufferfv(GL_COLOR, 0, background);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    unlitProgram_.use();
+    unlitProgram_.set("uViewProj", plan.unwarpedViewProj);
+    unlitProgram_.set("uLightDir", plan.l);
+    for (const auto& m : scene_->meshes()) {
+        unlitProgram_.set("uModel", m.transform);
+        unlitProgram_.set("uColor", m.color);
+        scene_->draw(m, [&](const geometry::Aabb& b) { return geometry::intersectsClipVolume(b, plan.unwarpedViewProj); });
+    }
+    if (views.overlays) lines_.draw(geometry::unwarpedViewOverlays(plan), plan.unwarpedViewProj);
 }
 
 std::vector<float> Renderer::readShadowMask() const {
@@ -380,15 +409,19 @@ std::vector<float> Renderer::readShadowMask() const {
     return out;
 }
 
-std::vector<glm::vec4> Renderer::readAux() const {
+std::vector<glm::vec4> Renderer::readFloat4(EyeBuffers::Attachment a) const {
     const int w = eyeBuffers_.width(), h = eyeBuffers_.height();
     std::vector<glm::vec4> raw(size_t(w) * h), out(raw.size());
-    glBindTexture(GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Aux));
+    glBindTexture(GL_TEXTURE_2D, eyeBuffers_.texture(a));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, raw.data());
     for (int y = 0; y < h; ++y)
         std::memcpy(&out[size_t(y) * w], &raw[size_t(h - 1 - y) * w], size_t(w) * sizeof(glm::vec4));
     return out;
 }
+
+std::vector<glm::vec4> Renderer::readAux() const { return readFloat4(EyeBuffers::Aux); }
+std::vector<glm::vec4> Renderer::readPositions() const { return readFloat4(EyeBuffers::Position); }
+std::vector<glm::vec4> Renderer::readNormals() const { return readFloat4(EyeBuffers::Normal); }
 
 } // namespace renderer

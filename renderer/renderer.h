@@ -5,6 +5,7 @@
 #include "gpu_scene.h"
 #include "gpu_timers.h"
 #include "image.h"
+#include "line_renderer.h"
 #include "program.h"
 #include "render_targets.h"
 #include "geometry/shadow_plan.h"
@@ -21,8 +22,18 @@ struct FrameStats {
     uint64_t eyeTriangles = 0;
     std::vector<uint64_t> splitTriangles;     // per split
     int shadowResolution = 0;                 // of the array actually allocated
+    int eyeWidth = 0, eyeHeight = 0;
     PassTimes gpu;                            // from an earlier frame (see GpuTimers)
     std::vector<std::string> warnings;        // e.g. resolution clamped to the GL limit
+};
+
+/// What the light views show.
+struct ViewOptions {
+    int lightViewSize = 0;      // edge of the square light-view images; 0: the caller's default
+    int lightSplit = 0;         // which split's map the warped light view shows
+    bool overlays = true;       // frusta, B_i, P, S drawn over the light views
+    bool unwarped = true;       // also render the unwarped light view
+    glm::vec2 depthRange{-1.f}; // light view's black and white points; x < 0: auto-fit to B_i
 };
 
 struct RendererLimits {
@@ -38,15 +49,26 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     void setScene(const geometry::Scene& scene);
-    /// Renders the eye view at `viewport` and the light view of split `lightSplit` at
-    /// `lightViewSize`² into textures.
-    void render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, int lightViewSize,
-                int lightSplit = 0);
+    /// Renders the eye view at `viewport` and the light views into textures.
+    void render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, const ViewOptions& views);
+    void render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, int lightViewSize) {
+        ViewOptions v;
+        v.lightViewSize = lightViewSize;
+        render(plan, viewport, v);
+    }
 
     [[nodiscard]] GLuint eyeTexture() const noexcept { return eye_.texture(); }
     [[nodiscard]] GLuint lightTexture() const noexcept { return light_.texture(); }
     [[nodiscard]] Image readEye() const { return readTexture(eye_.texture(), eye_.width(), eye_.height()); }
     [[nodiscard]] Image readLight() const { return readTexture(light_.texture(), light_.width(), light_.height()); }
+    [[nodiscard]] GLuint unwarpedLightTexture() const noexcept { return lightUnwarped_.texture(); }
+    [[nodiscard]] Image readUnwarpedLight() const {
+        return readTexture(lightUnwarped_.texture(), lightUnwarped_.width(), lightUnwarped_.height());
+    }
+    /// Per pixel (world position, aliasing error m); m is meaningful on receivers only.
+    [[nodiscard]] std::vector<glm::vec4> readPositions() const;
+    /// Per pixel (facing normal, N·L); N·L > 0 marks a receiver, 0 for sky.
+    [[nodiscard]] std::vector<glm::vec4> readNormals() const;
     /// The eye pass's per-pixel shadow factor s ∈ [0, 1] (top row first; sky pixels are 1).
     [[nodiscard]] std::vector<float> readShadowMask() const;
     /// Per pixel (map texel u, v, split index, map depth); split −1 for sky.
@@ -62,7 +84,9 @@ private:
     void momentsPass(const geometry::ShadowPlan& plan);
     void eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport);
     void eyeBlurAndCompose(const geometry::ShadowPlan& plan);
-    void lightViewPass(const geometry::ShadowPlan& plan, int size, int split);
+    void lightViewPass(const geometry::ShadowPlan& plan, const ViewOptions& views);
+    void unwarpedViewPass(const geometry::ShadowPlan& plan, const ViewOptions& views);
+    [[nodiscard]] std::vector<glm::vec4> readFloat4(EyeBuffers::Attachment a) const;
     void fullscreen() const noexcept;
     [[nodiscard]] int splitResolution(const geometry::SplitPlan& split) const noexcept;
     [[nodiscard]] float mapScale(const geometry::SplitPlan& split) const noexcept;
@@ -77,6 +101,8 @@ private:
     Program eyeBlurProgram_{"fullscreen.vert", "eye_blur.frag"};
     Program composeProgram_{"fullscreen.vert", "compose.frag"};
     Program lightViewProgram_{"fullscreen.vert", "light_view.frag"};
+    Program unlitProgram_{"eye.vert", "unlit.frag"};
+    LineRenderer lines_;
     GLuint emptyVao_ = 0;
     GLuint nearestSampler_ = 0, compareSampler_ = 0, linearSampler_ = 0;
     GLint maxTextureSize_ = 0;
@@ -84,7 +110,7 @@ private:
     LayeredTarget firstDepth_, secondDepth_, combinedDepth_, moments_, momentsTemp_;
     GLuint sampledDepth_ = 0; // the depth array the eye pass reads this frame
     EyeBuffers eyeBuffers_;
-    ColorTarget eye_, light_;
+    ColorTarget eye_, light_, lightUnwarped_;
     GpuTimers timers_;
     FrameStats stats_;
 };

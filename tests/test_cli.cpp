@@ -1,11 +1,14 @@
 // The shadowscope executable: `render` writes valid PNGs and JSON; bad input gives a one-line
 // error and a non-zero exit.
+#include "renderer/heatmap.h"
 #include "renderer/image.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -104,4 +107,39 @@ TEST(Cli, WithoutADisplayTheMainJobRendersHeadless) {
     // The test runs with DISPLAY unset (see tests/CMakeLists.txt).
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(fs::exists(dir / "eye.png"));
+}
+
+TEST(Cli, RenderWritesEveryViewAndRawValues) {
+    const fs::path dir = freshDir("views");
+    const CommandResult r = run("render --backend osmesa --scene plane --size 96x72 --shadow-res 256 --truth "
+                                "--views eye,light,light_unwarped,aliasing,truth,splits,texels --set splits.count=2 --out " +
+                                dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* name : {"eye.png", "light.png", "light_unwarped.png", "aliasing.png", "truth.png", "splits.png",
+                             "texels.png"}) {
+        const renderer::Image img = renderer::readImageFile((dir / name).string());
+        EXPECT_GT(img.width, 0) << name;
+    }
+    int w = 0, h = 0;
+    const auto m = renderer::readPfm((dir / "aliasing.pfm").string(), w, h);
+    EXPECT_EQ(w, 96);
+    EXPECT_EQ(h, 72);
+    EXPECT_TRUE(std::any_of(m.begin(), m.end(), [](float v) { return std::isfinite(v) && v > 0.f; }));
+    (void)renderer::readPfm((dir / "shadow.pfm").string(), w, h);
+    (void)renderer::readPfm((dir / "truth.pfm").string(), w, h);
+    std::ifstream in(dir / "metrics.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const char* k : {"mean", "p50", "p95", "max", "undersampled"}) EXPECT_TRUE(j.at("aliasing").contains(k)) << k;
+    for (const char* k : {"false_shadow", "false_lit", "mean_abs"}) EXPECT_TRUE(j.at("truth").contains(k)) << k;
+    ASSERT_EQ(j.at("splits").size(), 2u);
+    for (const auto& s : j.at("splits"))
+        for (const char* k : {"near", "far", "n_prime", "lambda", "resolution", "triangles", "utilization"})
+            EXPECT_TRUE(s.contains(k)) << k;
+}
+
+TEST(Cli, TruthViewWithoutTruthIsAnError) {
+    const CommandResult r = run("render --backend osmesa --scene plane --size 32x32 --views truth --out " +
+                                freshDir("notruth").string());
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("--truth"), std::string::npos);
 }

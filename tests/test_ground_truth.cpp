@@ -1,0 +1,422 @@
+// Ground truth by ray casting (Embree): known answers on the plane scene and tiny scenes,
+// agreement with a brute-force tracer, input validation, and the platform as a whole.
+#include "geometry/builtin_scenes.h"
+#include "geometry/ground_truth.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+namespace geometry {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+const glm::vec3 kUp{0.f, 1.f, 0.f};
+
+const Scene& planeScene() {
+    static const Scene scene = makePlaneScene();
+    return scene;
+}
+
+const GroundTruth& planeTruth() {
+    static const GroundTruth truth(planeScene());
+    return truth;
+}
+
+/// One receiver: 1 if occluded.
+uint8_t occludedAt(const GroundTruth& truth, const glm::vec3& p, const glm::vec3& n, const glm::vec3& l) {
+    return truth.occluded({p}, {n}, l).at(0);
+}
+
+/// Horizontal unit vector along the light's ground shadow direction, and the one across it.
+glm::vec3 shadowDir(const glm::vec3& l) { return glm::normalize(glm::vec3(l.x, 0.f, l.z)); }
+glm::vec3 acrossShadow(const glm::vec3& l) { return glm::normalize(glm::cross(kUp, shadowDir(l))); }
+
+/// Points on the ground inside pole `pole`'s geometric shadow: base + t·h·(l.x, 0, l.z)/(−l.y).
+std::vector<glm::vec3> shadowPoints(const Pole& pole, const glm::vec3& l) {
+    std::vector<glm::vec3> pts;
+    for (float t = 0.2f; t <= 0.9001f; t += 0.1f)
+        pts.push_back(pole.base + t * pole.height * glm::vec3(l.x, 0.f, l.z) / -l.y);
+    return pts;
+}
+
+struct Face {
+    glm::vec3 centroid;
+    glm::vec3 normal; // geometric, unit, pointing out of the pole
+};
+
+glm::vec3 worldVertex(const Mesh& m, size_t corner) {
+    return glm::vec3(m.transform * glm::vec4(m.positions[m.indices[corner]], 1.f));
+}
+
+/// The triangle of pole `pole` (in the plane scene's "poles" mesh) whose outward normal is
+/// closest to `dir`: a point exactly on the traced geometry, not on the ideal cylinder.
+Face poleFace(size_t pole, const glm::vec3& dir) {
+    const Mesh* poles = nullptr;
+    for (const Mesh& m : planeScene().meshes)
+        if (m.name == "poles") poles = &m;
+    if (!poles) throw std::logic_error("plane scene has no 'poles' mesh");
+    const Pole& p = planeScenePoles().at(pole);
+    std::optional<Face> best;
+    for (size_t t = 0; t < poles->triangleCount(); ++t) {
+        const glm::vec3 a = worldVertex(*poles, 3 * t), b = worldVertex(*poles, 3 * t + 1), c = worldVertex(*poles, 3 * t + 2);
+        Face f{(a + b + c) / 3.f, glm::normalize(glm::cross(b - a, c - a))};
+        const glm::vec3 offAxis(f.centroid.x - p.base.x, 0.f, f.centroid.z - p.base.z);
+        if (glm::length(offAxis) > p.radius * 1.01f) continue; // another pole
+        // Outward whatever the winding: caps point away from the pole's middle, sides away from its axis.
+        const glm::vec3 out = std::abs(f.normal.y) > 0.9f ? glm::vec3(0.f, f.centroid.y - p.base.y - 0.5f * p.height, 0.f) : offAxis;
+        if (glm::dot(f.normal, out) < 0.f) f.normal = -f.normal;
+        if (!best || glm::dot(f.normal, dir) > glm::dot(best->normal, dir)) best = f;
+    }
+    if (!best) throw std::logic_error("pole has no triangles");
+    return *best;
+}
+
+/// A scene of one mesh holding the given triangles (one-sided winding irrelevant to Embree).
+Scene trianglesScene(const std::vector<glm::vec3>& corners, const glm::mat4& transform = glm::mat4(1.f)) {
+    Mesh m;
+    m.name = "triangles";
+    m.positions = corners;
+    m.normals.assign(corners.size(), kUp);
+    for (uint32_t i = 0; i < corners.size(); ++i) m.indices.push_back(i);
+    m.transform = transform;
+    Scene s;
+    s.name = "triangles";
+    s.meshes.push_back(std::move(m));
+    return s;
+}
+
+/// A 2 × 2 m horizontal triangle at height 1 around the origin's vertical (covers (0, 0, 0)
+/// seen straight from above, and, with light from straight above, shades the ground under it).
+const std::vector<glm::vec3> kRoof{{-2.f, 1.f, -2.f}, {2.f, 1.f, -2.f}, {0.f, 1.f, 2.f}};
+const glm::vec3 kStraightDown{0.f, -1.f, 0.f};
+
+/// World-space corners of every triangle of a scene, three per triangle.
+std::vector<glm::vec3> worldTriangles(const Scene& scene) {
+    std::vector<glm::vec3> corners;
+    for (const Mesh& m : scene.meshes)
+        for (size_t i = 0; i < m.triangleCount() * 3; ++i) corners.push_back(worldVertex(m, i));
+    return corners;
+}
+
+/// Brute-force reference: Möller–Trumbore against every triangle, with the same offset rule.
+uint8_t bruteOccluded(const std::vector<glm::vec3>& tris, const GroundTruth& truth, const glm::vec3& p, const glm::vec3& n,
+                      const glm::vec3& l) {
+    if (!std::isfinite(p.x + p.y + p.z + n.x + n.y + n.z) || glm::length(n) == 0.f) return 0;
+    const glm::vec3 d = -glm::normalize(l);
+    const float eps = truth.epsilon(p);
+    const glm::vec3 o = p + (glm::dot(n, d) > 0.f ? n : -n) * (eps / glm::length(n));
+    for (size_t t = 0; t + 2 < tris.size(); t += 3) {
+        const glm::vec3 a = tris[t], e1 = tris[t + 1] - a, e2 = tris[t + 2] - a;
+        const glm::vec3 q = glm::cross(d, e2);
+        const float det = glm::dot(e1, q);
+        if (std::abs(det) < 1e-12f) continue;
+        const glm::vec3 s = o - a;
+        const float u = glm::dot(s, q) / det;
+        const glm::vec3 r = glm::cross(s, e1);
+        const float v = glm::dot(d, r) / det;
+        const float dist = glm::dot(e2, r) / det;
+        if (u >= 0.f && v >= 0.f && u + v <= 1.f && dist > eps) return 1;
+    }
+    return 0;
+}
+
+size_t countDifferences(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+    size_t diff = 0;
+    for (size_t i = 0; i < a.size(); ++i) diff += a[i] != b[i];
+    return diff;
+}
+
+// ---- Plane scene: known answers --------------------------------------------------------------
+
+TEST(GroundTruthPlane, CountsEveryTriangle) {
+    EXPECT_EQ(planeTruth().triangleCount(), planeScene().triangleCount());
+    EXPECT_GT(planeTruth().triangleCount(), 0u);
+}
+
+TEST(GroundTruthPlane, GroundInsideEachPoleShadowIsOccluded) {
+    const glm::vec3 l = planeScene().light.l();
+    for (size_t i = 0; i < planeScenePoles().size(); ++i)
+        for (const glm::vec3& p : shadowPoints(planeScenePoles()[i], l))
+            EXPECT_EQ(occludedAt(planeTruth(), p, kUp, l), 1) << "pole " << i << " at " << p.x << ", " << p.z;
+}
+
+TEST(GroundTruthPlane, GroundBesideEachPoleShadowIsLit) {
+    const glm::vec3 l = planeScene().light.l();
+    for (size_t i = 0; i < planeScenePoles().size(); ++i)
+        for (const glm::vec3& p : shadowPoints(planeScenePoles()[i], l))
+            for (float side : {-0.6f, 0.6f}) {
+                const glm::vec3 q = p + side * acrossShadow(l);
+                EXPECT_EQ(occludedAt(planeTruth(), q, kUp, l), 0) << "pole " << i << " at " << q.x << ", " << q.z;
+            }
+}
+
+TEST(GroundTruthPlane, GroundFarFromPolesIsLit) {
+    const glm::vec3 l = planeScene().light.l();
+    const std::vector<glm::vec3> far{{15.f, 0.f, 15.f}, {-20.f, 0.f, 20.f}, {25.f, 0.f, -25.f}, {-30.f, 0.f, -30.f}, {10.f, 0.f, 3.f}};
+    const std::vector<glm::vec3> normals(far.size(), kUp);
+    EXPECT_EQ(planeTruth().occluded(far, normals, l), std::vector<uint8_t>(far.size(), 0));
+}
+
+TEST(GroundTruthPlane, PoleFacesTowardsTheLightAreLit) {
+    // No self-intersection acne: the cap and the side facing the light see the sky.
+    const glm::vec3 l = planeScene().light.l();
+    for (size_t i = 0; i < planeScenePoles().size(); ++i) {
+        const Face top = poleFace(i, kUp);
+        ASSERT_GT(top.normal.y, 0.99f);
+        EXPECT_EQ(occludedAt(planeTruth(), top.centroid, top.normal, l), 0) << "top of pole " << i;
+        const Face lit = poleFace(i, -shadowDir(l));
+        ASSERT_GT(glm::dot(lit.normal, -l), 0.5f);
+        EXPECT_EQ(occludedAt(planeTruth(), lit.centroid, lit.normal, l), 0) << "lit side of pole " << i;
+    }
+}
+
+TEST(GroundTruthPlane, PoleSideAwayFromTheLightIsOccludedByItsOwnPole) {
+    // The side facing away (n·(−l) < 0): the ray starts just inside the pole and leaves through
+    // its lit side, so the pole itself occludes it, as the geometry says (an attached shadow).
+    const glm::vec3 l = planeScene().light.l();
+    for (size_t i = 0; i < planeScenePoles().size(); ++i) {
+        const Face dark = poleFace(i, shadowDir(l));
+        ASSERT_LT(glm::dot(dark.normal, -l), -0.5f);
+        EXPECT_EQ(occludedAt(planeTruth(), dark.centroid, dark.normal, l), 1) << "dark side of pole " << i;
+    }
+}
+
+TEST(GroundTruthPlane, CameraCentrePixelSeesTheTarget) {
+    // A view of bare ground (the default one looks through pole 0 at its target). Odd size: the
+    // centre pixel's ray is the view direction, and the target lies on the ground.
+    Camera cam = planeScene().camera;
+    cam.eye = {20.f, 6.f, 30.f};
+    cam.target = {20.f, 0.f, 20.f};
+    const PrimaryHits hits = planeTruth().primaryHits(cam, 101, 61);
+    ASSERT_EQ(hits.points.size(), 101u * 61u);
+    const size_t centre = 30 * 101 + 50;
+    EXPECT_NEAR(glm::distance(hits.points[centre], cam.target), 0.f, 1e-3f);
+    EXPECT_NEAR(hits.normals[centre].y, 1.f, 1e-5f);
+    // Image order, top row first: a row above the centre sees further along −z.
+    EXPECT_LT(hits.points[20 * 101 + 50].z, hits.points[centre].z);
+    EXPECT_LT(hits.points[centre].z, hits.points[40 * 101 + 50].z);
+    // Every pixel below the horizon sees the ground (all of the lower half here).
+    for (size_t i = 30 * 101; i < hits.points.size(); ++i) ASSERT_TRUE(std::isfinite(hits.points[i].y)) << "pixel " << i;
+    // Left column is at smaller x (the camera looks along −z, so +x is to the right).
+    EXPECT_LT(hits.points[centre - 20].x, hits.points[centre + 20].x);
+}
+
+TEST(GroundTruthPlane, MatchesBruteForceOverTheCameraImage) {
+    const Scene& scene = planeScene();
+    const PrimaryHits hits = planeTruth().primaryHits(scene.camera, 120, 68);
+    ASSERT_GT(hits.hitCount(), hits.points.size() / 2);
+    const auto fast = planeTruth().occluded(hits.points, hits.normals, scene.light.l());
+    const std::vector<glm::vec3> tris = worldTriangles(scene);
+    std::vector<uint8_t> slow(hits.points.size());
+    size_t shadowed = 0;
+    for (size_t i = 0; i < slow.size(); ++i) {
+        slow[i] = bruteOccluded(tris, planeTruth(), hits.points[i], hits.normals[i], scene.light.l());
+        shadowed += slow[i];
+    }
+    EXPECT_GT(shadowed, 20u); // the poles' shadows are in view
+    // Only pixels straddling a shadow edge may disagree (different float arithmetic).
+    EXPECT_LE(countDifferences(fast, slow), 2u);
+}
+
+TEST(GroundTruthPlane, ReceiverOrderDoesNotMatter) {
+    // Packets of 16 consecutive points: reversing the order regroups every packet (and the
+    // 130 × 71 image is not a whole number of packets) but must not change any answer.
+    const Scene& scene = planeScene();
+    const PrimaryHits hits = planeTruth().primaryHits(scene.camera, 130, 71);
+    const auto forward = planeTruth().occluded(hits.points, hits.normals, scene.light.l());
+    EXPECT_GT(std::count(forward.begin(), forward.end(), 1), 0);
+    const std::vector<glm::vec3> pts(hits.points.rbegin(), hits.points.rend() - 3), nrm(hits.normals.rbegin(), hits.normals.rend() - 3);
+    const auto backward = planeTruth().occluded(pts, nrm, scene.light.l());
+    EXPECT_EQ(backward, std::vector<uint8_t>(forward.rbegin(), forward.rend() - 3));
+}
+
+// ---- Tiny scenes -----------------------------------------------------------------------------
+
+TEST(GroundTruthTriangle, ShadesTheGroundUnderItOnly) {
+    const GroundTruth truth(trianglesScene(kRoof));
+    EXPECT_EQ(truth.triangleCount(), 1u);
+    const std::vector<glm::vec3> pts{{0.f, 0.f, 0.f}, {0.f, 0.f, -1.5f}, {5.f, 0.f, 0.f}, {0.f, 2.f, 0.f}, {-1.5f, 0.f, 1.5f}};
+    const std::vector<glm::vec3> nrm(pts.size(), kUp);
+    EXPECT_EQ(truth.occluded(pts, nrm, kStraightDown), (std::vector<uint8_t>{1, 1, 0, 0, 0}));
+    // Slanted light (travelling towards +x) moves the shadow 3 m along +x: (0, 0, 0) is now lit,
+    // (3, 0, 0) shaded.
+    const glm::vec3 slanted = glm::normalize(glm::vec3(3.f, -1.f, 0.f));
+    EXPECT_EQ(occludedAt(truth, {0.f, 0.f, 0.f}, kUp, slanted), 0);
+    EXPECT_EQ(occludedAt(truth, {3.f, 0.f, 0.f}, kUp, slanted), 1);
+}
+
+TEST(GroundTruthTriangle, OwnSurfaceHasNoAcneAndItsBackIsJudgedByTheGeometry) {
+    const GroundTruth truth(trianglesScene(kRoof));
+    const glm::vec3 onIt{0.2f, 1.f, -0.3f};
+    const glm::vec3 slanted = glm::normalize(glm::vec3(0.3f, -1.f, 0.2f));
+    // Seen from above, facing the light: lit, though the point lies exactly on the triangle.
+    EXPECT_EQ(occludedAt(truth, onIt, kUp, slanted), 0);
+    // Seen from below (normal away from the light): the origin moves to the light's side of this
+    // open surface, and nothing else is there, so it is not occluded.
+    EXPECT_EQ(occludedAt(truth, onIt, -kUp, slanted), 0);
+    // Grazing light (n·(−l) = 0 exactly): still no acne.
+    EXPECT_EQ(occludedAt(truth, onIt, kUp, glm::vec3(1.f, 0.f, 0.f)), 0);
+}
+
+TEST(GroundTruthTriangle, MeshTransformIsApplied) {
+    // The roof moved 10 m along +x: the origin is lit, (10, 0, 0) is shaded.
+    const GroundTruth truth(trianglesScene(kRoof, glm::translate(glm::mat4(1.f), glm::vec3(10.f, 0.f, 0.f))));
+    EXPECT_EQ(occludedAt(truth, {0.f, 0.f, 0.f}, kUp, kStraightDown), 0);
+    EXPECT_EQ(occludedAt(truth, {10.f, 0.f, 0.f}, kUp, kStraightDown), 1);
+}
+
+TEST(GroundTruthTriangle, PrimaryHitNormalsFaceTheCamera) {
+    // The same triangle seen from above and from below: its geometric normal flips to face the eye.
+    const GroundTruth truth(trianglesScene(kRoof));
+    Camera cam;
+    cam.up = {0.f, 0.f, -1.f};
+    cam.fovYDeg = 10.f;
+    for (float eyeY : {5.f, -3.f}) {
+        cam.eye = {0.f, eyeY, 0.f};
+        cam.target = {0.f, 1.f, 0.f};
+        const PrimaryHits hits = truth.primaryHits(cam, 5, 5);
+        ASSERT_EQ(hits.hitCount(), 25u) << "eye at y = " << eyeY;
+        for (size_t i = 0; i < hits.points.size(); ++i) {
+            EXPECT_NEAR(hits.points[i].y, 1.f, 1e-5f);
+            EXPECT_NEAR(hits.normals[i].y, eyeY > 1.f ? 1.f : -1.f, 1e-6f) << "eye at y = " << eyeY;
+        }
+    }
+}
+
+TEST(GroundTruthTriangle, PrimaryHitsClipAtNearAndFar) {
+    // Roof at y = 1 over a floor at y = 0; the camera looks straight down from y = 5 (depth 4 to
+    // the roof, 5 to the floor).
+    std::vector<glm::vec3> corners = kRoof;
+    for (const glm::vec3& c : kRoof) corners.push_back(c * 3.f - glm::vec3(0.f, 3.f, 0.f)); // floor, bigger
+    const GroundTruth truth(trianglesScene(corners));
+    Camera cam;
+    cam.eye = {0.f, 5.f, 0.f};
+    cam.target = {0.f, 0.f, 0.f};
+    cam.up = {0.f, 0.f, -1.f};
+    cam.fovYDeg = 5.f;
+    const auto centreY = [&](float near, float far) {
+        cam.near = near;
+        cam.far = far;
+        return truth.primaryHits(cam, 3, 3).points[4].y;
+    };
+    EXPECT_NEAR(centreY(0.5f, 100.f), 1.f, 1e-5f);  // the roof
+    EXPECT_NEAR(centreY(4.5f, 100.f), 0.f, 1e-5f);  // near plane past the roof: the floor
+    EXPECT_TRUE(std::isnan(centreY(0.5f, 3.5f)));   // far plane short of both
+}
+
+TEST(GroundTruthEmpty, NothingOccludesAndNothingIsSeen) {
+    const Scene empty;
+    const GroundTruth truth(empty);
+    EXPECT_EQ(truth.triangleCount(), 0u);
+    const std::vector<glm::vec3> pts{{0.f, 0.f, 0.f}, {1.f, -3.f, 2.f}};
+    EXPECT_EQ(truth.occluded(pts, {kUp, -kUp}, kStraightDown), (std::vector<uint8_t>{0, 0}));
+    EXPECT_TRUE(truth.occluded({}, {}, kStraightDown).empty());
+    EXPECT_EQ(truth.primaryHits(empty.camera, 8, 4).hitCount(), 0u);
+}
+
+TEST(GroundTruthEmpty, MeshesWithoutTrianglesAreSkipped) {
+    Scene s = trianglesScene({});
+    s.meshes.front().positions = {{0.f, 0.f, 0.f}};
+    const GroundTruth truth(s);
+    EXPECT_EQ(truth.triangleCount(), 0u);
+    EXPECT_EQ(occludedAt(truth, {0.f, -1.f, 0.f}, kUp, kStraightDown), 0);
+}
+
+// ---- Input validation ------------------------------------------------------------------------
+
+TEST(GroundTruthInput, NonFiniteReceiversGiveZeroAndLeaveTheirNeighboursAlone) {
+    const GroundTruth truth(trianglesScene(kRoof));
+    // 40 receivers (more than one packet), shaded ones interleaved with broken ones.
+    std::vector<glm::vec3> pts, nrm;
+    std::vector<uint8_t> expected;
+    const std::vector<std::pair<glm::vec3, glm::vec3>> broken{
+        {{kNaN, 0.f, 0.f}, kUp}, {{0.f, kInf, 0.f}, kUp}, {{0.f, 0.f, 0.f}, {0.f, kNaN, 0.f}},
+        {{0.f, 0.f, 0.f}, {-kInf, 1.f, 0.f}}, {{0.f, 0.f, 0.f}, glm::vec3(0.f)}};
+    for (int i = 0; i < 40; ++i) {
+        if (i % 3 == 1) {
+            const auto& [p, n] = broken[static_cast<size_t>(i) % broken.size()];
+            pts.push_back(p);
+            nrm.push_back(n);
+            expected.push_back(0);
+        } else {
+            pts.push_back({0.01f * static_cast<float>(i), 0.f, 0.f});
+            nrm.push_back(kUp);
+            expected.push_back(1);
+        }
+    }
+    EXPECT_EQ(truth.occluded(pts, nrm, kStraightDown), expected);
+}
+
+TEST(GroundTruthInput, MismatchedSizesThrow) {
+    const GroundTruth truth(trianglesScene(kRoof));
+    EXPECT_THROW((void)truth.occluded({{0.f, 0.f, 0.f}}, {}, kStraightDown), std::invalid_argument);
+    EXPECT_THROW((void)truth.occluded({}, {kUp}, kStraightDown), std::invalid_argument);
+    EXPECT_THROW((void)truth.occluded({{0.f, 0.f, 0.f}}, {kUp, kUp}, kStraightDown), std::invalid_argument);
+}
+
+TEST(GroundTruthInput, BadLightOrImageSizeThrow) {
+    const GroundTruth truth(trianglesScene(kRoof));
+    EXPECT_THROW((void)truth.occluded({}, {}, glm::vec3(0.f)), std::invalid_argument);
+    EXPECT_THROW((void)truth.occluded({}, {}, glm::vec3(kNaN, -1.f, 0.f)), std::invalid_argument);
+    EXPECT_THROW((void)truth.primaryHits(Camera{}, 0, 10), std::invalid_argument);
+    EXPECT_THROW((void)truth.primaryHits(Camera{}, 10, -1), std::invalid_argument);
+}
+
+TEST(GroundTruthInput, IndexOutOfRangeThrowsRuntimeError) {
+    Scene s = trianglesScene(kRoof);
+    s.meshes.front().indices[2] = 3;
+    EXPECT_THROW(GroundTruth{s}, std::runtime_error);
+}
+
+TEST(GroundTruthInput, MovedTruthStillTraces) {
+    GroundTruth a(trianglesScene(kRoof));
+    GroundTruth b(std::move(a));
+    EXPECT_EQ(b.triangleCount(), 1u);
+    EXPECT_EQ(occludedAt(b, {0.f, 0.f, 0.f}, kUp, kStraightDown), 1);
+}
+
+TEST(GroundTruthInput, EpsilonFollowsThePointsMagnitude) {
+    const GroundTruth truth(planeScene());
+    const float diag = glm::length(planeScene().bounds().extent());
+    EXPECT_NEAR(truth.epsilon(glm::vec3(0.f)), 1e-7f * diag, 1e-6f * 1e-7f * diag * 10.f);
+    EXPECT_FLOAT_EQ(truth.epsilon({0.f, 0.f, -1000.f}), 1e-2f);
+    EXPECT_GE(GroundTruth(Scene{}).epsilon(glm::vec3(0.f)), 1e-6f);
+}
+
+// ---- Platform --------------------------------------------------------------------------------
+
+TEST(GroundTruthPlatform, DefaultViewHasLitAndShadowedReceiversAndIsDeterministic) {
+    const Scene scene = makePlatformScene();
+    const GroundTruth truth(scene);
+    EXPECT_EQ(truth.triangleCount(), scene.triangleCount());
+    const PrimaryHits hits = truth.primaryHits(scene.camera, 160, 90);
+    ASSERT_GT(hits.hitCount(), hits.points.size() / 2);
+    const glm::vec3 l = scene.light.l();
+    const auto one = truth.occluded(hits.points, hits.normals, l, 1);
+    const auto two = truth.occluded(hits.points, hits.normals, l, 2);
+    EXPECT_EQ(one, two);
+    const PrimaryHits single = truth.primaryHits(scene.camera, 160, 90, 1);
+    EXPECT_EQ(single.normals, hits.normals);
+    EXPECT_EQ(truth.occluded(single.points, single.normals, l, 1), one);
+
+    size_t facing = 0, shadowed = 0;
+    for (size_t i = 0; i < one.size(); ++i) {
+        if (!std::isfinite(hits.points[i].x) || glm::dot(hits.normals[i], -l) <= 0.f) continue;
+        ++facing;
+        shadowed += one[i];
+    }
+    ASSERT_GT(facing, 0u);
+    const double shadowedShare = static_cast<double>(shadowed) / static_cast<double>(facing);
+    EXPECT_GT(shadowedShare, 0.02) << shadowed << " of " << facing;
+    EXPECT_LT(shadowedShare, 0.98) << shadowed << " of " << facing;
+}
+} // namespace
+} // namespace geometry

@@ -33,6 +33,8 @@ layout(location = 0) out vec4 oBase;   // rgb albedo·ambient, a view depth
 layout(location = 1) out vec4 oDirect; // rgb albedo·(1−ambient)·N·L
 layout(location = 2) out vec4 oMask;   // r shadow factor
 layout(location = 3) out vec4 oAux;    // map u, v (texels), split index, receiver depth in the map
+layout(location = 4) out vec4 oPosition; // world position, aliasing error m
+layout(location = 5) out vec4 oNormal;   // facing normal, N·L
 
 const float kAmbient = 0.28;
 const float kGoldenAngle = 2.39996323;
@@ -148,4 +150,10 @@ void main() {
     oDirect = vec4(uColor * (1.0 - kAmbient) * ndotl, 1.0);
     oMask = vec4(s);
     oAux = vec4(texel, float(split), p.z);
+    // DESIGN §4: J = texels per pixel (screen derivatives of the map coordinates, taken above in
+    // uniform control flow); m = 1/σ_min(J), screen pixels per texel along the worst direction.
+    float a = dot(dTdx, dTdx) + dot(dTdy, dTdy);
+    float sigmaMin2 = 0.5 * (a - sqrt(max(a * a - 4.0 * det * det, 0.0)));
+    oPosition = vec4(vWorldPos, 1.0 / sqrt(max(sigmaMin2, 1e-20)));
+    oNormal = vec4(n, ndotl);
 }

@@ -1,0 +1,64 @@
+#include "view_images.h"
+
+#include "renderer/heatmap.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace app {
+
+const std::vector<std::string>& viewNames() {
+    static const std::vector<std::string> names = {"eye", "light", "light_unwarped", "aliasing", "truth", "splits", "texels"};
+    return names;
+}
+
+namespace {
+void blend(uint8_t* px, const glm::vec3& c, float t) {
+    for (int k = 0; k < 3; ++k) px[k] = uint8_t(std::lround((1.f - t) * float(px[k]) + t * 255.f * c[k]));
+}
+} // namespace
+
+renderer::Image splitsView(const renderer::Image& eye, const Inspection& in, const geometry::ShadowPlan& plan) {
+    renderer::Image img = eye;
+    for (size_t i = 0; i < in.aux.size(); ++i)
+        if (in.aux[i].z >= 0.f) blend(&img.rgba[4 * i], renderer::splitColour(int(in.aux[i].z)), 0.45f);
+    std::vector<glm::vec2> ranges;
+    for (const auto& s : plan.splits) ranges.emplace_back(s.near, s.far);
+    const renderer::Legend legend = renderer::splitLegend(ranges);
+    renderer::drawLegend(img, legend);
+    return img;
+}
+
+renderer::Image texelsView(const renderer::Image& eye, const Inspection& in, int every) {
+    if (every < 1) throw std::invalid_argument("texel grid spacing must be at least 1");
+    renderer::Image img = eye;
+    const int w = in.width, h = in.height;
+    const auto cell = [&](int x, int y) {
+        const glm::vec4& a = in.aux[size_t(y) * w + x];
+        return glm::ivec3(int(std::floor(a.x / float(every))), int(std::floor(a.y / float(every))), int(a.z));
+    };
+    // A pixel is on a grid line when its right or lower neighbour lies in another texel cell.
+    for (int y = 0; y + 1 < h; ++y)
+        for (int x = 0; x + 1 < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            if (!in.receiver[i]) continue;
+            const glm::ivec3 c = cell(x, y);
+            if (c != cell(x + 1, y) || c != cell(x, y + 1)) blend(&img.rgba[4 * i], {0.05f, 0.05f, 0.05f}, 0.8f);
+        }
+    return img;
+}
+
+renderer::Image aliasingView(const Inspection& in) {
+    renderer::Image img = renderer::aliasingHeatmap(in.m, in.receiver, in.width, in.height);
+    renderer::drawLegend(img, renderer::aliasingLegend());
+    return img;
+}
+
+renderer::Image truthView(const Inspection& in) {
+    if (!in.occluded) throw std::invalid_argument("the truth view needs --truth");
+    renderer::Image img = renderer::truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height);
+    renderer::drawLegend(img, renderer::truthLegend());
+    return img;
+}
+
+} // namespace app

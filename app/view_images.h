@@ -1,0 +1,23 @@
+#pragma once
+// The inspection views as images: split colouring, texel grid, aliasing and truth heatmaps.
+#include "inspection.h"
+
+#include <string>
+#include <vector>
+
+namespace app {
+
+/// View names `render --views` accepts.
+[[nodiscard]] const std::vector<std::string>& viewNames();
+
+/// The eye image tinted by the split each pixel uses, with a legend of the splits' ranges.
+[[nodiscard]] renderer::Image splitsView(const renderer::Image& eye, const Inspection& in,
+                                         const geometry::ShadowPlan& plan);
+/// The shadow map's texel grid (every `every` texels) drawn over the receivers of the eye image.
+[[nodiscard]] renderer::Image texelsView(const renderer::Image& eye, const Inspection& in, int every = 1);
+/// log2 m heatmap with a legend (DESIGN §4).
+[[nodiscard]] renderer::Image aliasingView(const Inspection& in);
+/// False shadow red, false lit blue, over the grey scene; needs in.occluded.
+[[nodiscard]] renderer::Image truthView(const Inspection& in);
+
+} // namespace app
