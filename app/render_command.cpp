@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 
 namespace app {
@@ -71,6 +72,21 @@ void addExportOptions(CLI::App& cmd, ExportOptions& e) {
     cmd.add_flag("--truth", e.truth, "Ray-trace ground truth (Embree) and report misclassified pixels");
     cmd.add_option("--texel-grid", e.texelGrid, "texels view: draw every N-th texel line")->check(CLI::Range(1, 4096));
     cmd.add_option("--light-split", e.lightSplit, "light views: show this split's map")->check(CLI::Range(0, 7));
+    cmd.add_option_function<std::string>(
+        "--depth-range",
+        [&e](const std::string& text) {
+            float lo = 0, hi = 0;
+            char comma = 0;
+            std::istringstream in(text);
+            if (!(in >> lo >> comma >> hi) || comma != ',' || !(in >> std::ws).eof() || !std::isfinite(lo) ||
+                !std::isfinite(hi) || lo < 0.f || hi > 1.f || !(lo < hi))
+                throw std::invalid_argument("--depth-range: expected LO,HI with 0 <= LO < HI <= 1, got '" + text + "'");
+            e.depthRange = {lo, hi};
+        },
+        "light view: depth shown from black to white (map depth, 0..1); default: fitted to B_i");
+    cmd.add_flag("--light-texels", e.lightTexels, "light view: tint the texels that visible pixels sample");
+    cmd.add_option("--heatmap-blend", e.heatmapBlend, "aliasing/truth views: 0 heatmap alone, up to 1 over the eye view")
+        ->check(CLI::Range(0.0, 1.0));
 }
 
 namespace {
@@ -102,6 +118,7 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     views.lightViewSize = lightViewSize(o.settings.resolution);
     views.lightSplit = e.lightSplit;
     views.unwarped = wants(e, "light_unwarped");
+    views.depthRange = e.depthRange;
     const HeadlessFrame f = renderHeadless(o, 1, views);
     if (e.lightSplit >= int(f.plan.splits.size()))
         throw std::invalid_argument("--light-split " + std::to_string(e.lightSplit) + ": the plan has " +
@@ -116,10 +133,15 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     const Inspection in = inspect(*f.renderer, f.plan, truth.get());
     const renderer::Image eye = f.renderer->readEye();
     if (wants(e, "eye")) w.png("eye.png", eye);
-    if (wants(e, "light")) w.png("light.png", f.renderer->readLight());
+    if (wants(e, "light")) {
+        renderer::Image light = f.renderer->readLight();
+        if (e.lightTexels) tintSampledTexels(light, in, e.lightSplit, std::min(f.plan.splits[e.lightSplit].resolution,
+                                                                                 f.renderer->stats().shadowResolution));
+        w.png("light.png", light);
+    }
     if (wants(e, "light_unwarped")) w.png("light_unwarped.png", f.renderer->readUnwarpedLight());
     if (wants(e, "aliasing")) {
-        w.png("aliasing.png", aliasingView(in));
+        w.png("aliasing.png", aliasingView(in, eye, e.heatmapBlend));
         w.pfm("aliasing.pfm", in.m, in.width, in.height);
     }
     if (wants(e, "splits")) w.png("splits.png", splitsView(eye, in, f.plan));
@@ -129,7 +151,7 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
         std::vector<float> t(in.occluded->size());
         for (size_t i = 0; i < t.size(); ++i) t[i] = in.receiver[i] ? ((*in.occluded)[i] ? 0.f : 1.f) : NAN;
         w.pfm("truth.pfm", t, in.width, in.height);
-        if (wants(e, "truth")) w.png("truth.png", truthView(in));
+        if (wants(e, "truth")) w.png("truth.png", truthView(in, eye, e.heatmapBlend));
     }
     nlohmann::json j = frameMetrics(f, o);
     addInspectionMetrics(j, in);

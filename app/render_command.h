@@ -1,6 +1,7 @@
 #pragma once
 #include "render_options.h"
 
+#include <glm/glm.hpp>
 #include <nlohmann/json_fwd.hpp>
 
 #include <string>
@@ -17,9 +18,12 @@ struct ExportOptions {
     bool truth = false;                             // ground-truth pass (Embree)
     int texelGrid = 1;                              // texels view: a line every N texels
     int lightSplit = 0;                             // light views: which split's map
+    glm::vec2 depthRange{-1.f};                     // light view black/white points; x < 0: auto-fit
+    bool lightTexels = false;                       // tint the texels visible pixels sample
+    float heatmapBlend = 0.f;                       // heatmaps over the eye image: 0 alone … 1 opaque
 };
 
-/// Adds --views, --truth, --texel-grid, --light-split.
+/// Adds --views, --truth, --texel-grid, --light-split, --depth-range, --light-texels, --heatmap-blend.
 void addExportOptions(CLI::App& cmd, ExportOptions& options);
 
 /// `shadowscope render`: writes one PNG per view (plus PFM raw values for aliasing, the shadow

@@ -48,15 +48,40 @@ renderer::Image texelsView(const renderer::Image& eye, const Inspection& in, int
     return img;
 }
 
-renderer::Image aliasingView(const Inspection& in) {
-    renderer::Image img = renderer::aliasingHeatmap(in.m, in.receiver, in.width, in.height);
+void tintSampledTexels(renderer::Image& light, const Inspection& in, int split, int res) {
+    const std::vector<uint8_t> used = geometry::texelUsageMask(in.aux, in.receiver, split, res);
+    if (used.empty()) return;
+    // Each light-view pixel covers res/size texels; tint it when any of them is used.
+    const int size = light.width;
+    std::vector<uint8_t> hit(size_t(size) * size, 0);
+    for (int v = 0; v < res; ++v)
+        for (int u = 0; u < res; ++u)
+            if (used[size_t(v) * res + u]) hit[size_t(size - 1 - v * size / res) * size + size_t(u) * size / res] = 1;
+    for (size_t i = 0; i < hit.size(); ++i)
+        if (hit[i]) blend(&light.rgba[4 * i], {1.f, 0.2f, 0.8f}, 0.6f);
+}
+
+namespace {
+/// eye·weight + heat·(1 − weight) per pixel.
+renderer::Image blendOver(renderer::Image heat, const renderer::Image& eye, float weight) {
+    if (weight <= 0.f) return heat;
+    for (size_t i = 0; i + 3 < heat.rgba.size() && i + 3 < eye.rgba.size(); i += 4)
+        for (int k = 0; k < 3; ++k)
+            heat.rgba[i + k] = uint8_t(std::lround((1.f - weight) * heat.rgba[i + k] + weight * eye.rgba[i + k]));
+    return heat;
+}
+} // namespace
+
+renderer::Image aliasingView(const Inspection& in, const renderer::Image& eye, float blend) {
+    renderer::Image img = blendOver(renderer::aliasingHeatmap(in.m, in.receiver, in.width, in.height), eye, blend);
     renderer::drawLegend(img, renderer::aliasingLegend());
     return img;
 }
 
-renderer::Image truthView(const Inspection& in) {
+renderer::Image truthView(const Inspection& in, const renderer::Image& eye, float blend) {
     if (!in.occluded) throw std::invalid_argument("the truth view needs --truth");
-    renderer::Image img = renderer::truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height);
+    renderer::Image img =
+        blendOver(renderer::truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height), eye, blend);
     renderer::drawLegend(img, renderer::truthLegend());
     return img;
 }
