@@ -1,5 +1,6 @@
 // The shadowscope executable: `render` writes valid PNGs and JSON; bad input gives a one-line
 // error and a non-zero exit.
+#include "cli_test_util.h"
 #include "renderer/heatmap.h"
 #include "renderer/image.h"
 
@@ -16,31 +17,11 @@
 
 namespace fs = std::filesystem;
 
+using testutil::CommandResult;
+using testutil::freshDir;
+
 namespace {
-
-struct CommandResult {
-    int exitCode = -1;
-    std::string output; // stdout and stderr
-};
-
-CommandResult run(const std::string& args) {
-    CommandResult r;
-    const std::string cmd = std::string(SHADOWSCOPE_EXE) + " " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("shadowscope_test_" + name);
-    fs::remove_all(dir);
-    return dir;
-}
-
+CommandResult run(const std::string& args) { return testutil::runShadowscope(args); }
 } // namespace
 
 TEST(Cli, RenderWritesPngsAndMetrics) {

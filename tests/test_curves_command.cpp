@@ -1,6 +1,7 @@
 // `shadowscope curves`: the CSV tables hold the DESIGN §3 reference values, the SVG charts have a
 // line and a legend entry per series, bad input gives a one-line error; and the chart axis ticks
 // (ui/chart.h) are round numbers.
+#include "cli_test_util.h"
 #include "ui/chart.h"
 
 #include <gtest/gtest.h>
@@ -19,28 +20,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CurvesResult {
-    int exitCode = -1;
-    std::string output; // stdout and stderr
-};
+using CurvesResult = testutil::CommandResult;
+using testutil::runShadowscope;
 
-CurvesResult runShadowscope(const std::string& args) {
-    CurvesResult r;
-    const std::string cmd = std::string(SHADOWSCOPE_EXE) + " " + args + " 2>&1";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buf{};
-    while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-fs::path curvesDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("shadowscope_curves_" + name);
-    fs::remove_all(dir);
-    return dir;
-}
+fs::path curvesDir(const std::string& name) { return testutil::freshDir("curves_" + name); }
 
 const std::string kFrustum = "curves --near 1 --far 100 --fov-y 60 --gamma-step 5";
 

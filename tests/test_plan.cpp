@@ -7,19 +7,14 @@
 
 #include <random>
 
+#include "random_util.h"
+
 using namespace geometry;
+using testutil::randomUnit;
+using testutil::uniform;
+using testutil::uniform01;
 
 namespace {
-
-float uniform01(std::mt19937& rng) { return float(rng() >> 8) * (1.f / 16777216.f); }
-float uniform(std::mt19937& rng, float a, float b) { return a + (b - a) * uniform01(rng); }
-glm::vec3 randomUnit(std::mt19937& rng) {
-    for (;;) {
-        const glm::vec3 v(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
-        const float len = glm::length(v);
-        if (len > 0.1f && len <= 1.f) return v / len;
-    }
-}
 
 bool finite(const glm::mat4& m) {
     for (int i = 0; i < 4; ++i)
@@ -28,12 +23,7 @@ bool finite(const glm::mat4& m) {
     return true;
 }
 
-bool insideUnitCube(const glm::mat4& m, const glm::vec3& p, float eps = 2e-4f) {
-    const glm::vec4 c = m * glm::vec4(p, 1.f);
-    if (!(c.w > 0.f)) return false;
-    const glm::vec3 ndc = glm::vec3(c) / c.w;
-    return std::abs(ndc.x) <= 1.f + eps && std::abs(ndc.y) <= 1.f + eps && std::abs(ndc.z) <= 1.f + eps;
-}
+bool insideUnitCube(const glm::mat4& m, const glm::vec3& p) { return testutil::insideUnitCube(m, p, 2e-4f); }
 
 const WarpMethod kMethods[] = {WarpMethod::Uniform, WarpMethod::Psm, WarpMethod::Lispsm,
                                WarpMethod::Glispsm, WarpMethod::Gmnpr, WarpMethod::Manual};
