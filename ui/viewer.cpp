@@ -88,7 +88,10 @@ int runViewer(geometry::Scene scene, const ViewerOptions& options) {
         scene.light.direction = sun.direction();
         const geometry::ShadowPlan plan =
             geometry::planShadows(settings, scene.bounds(), scene.camera, scene.light, eyeSize);
-        renderer.render(plan, eyeSize, std::clamp(settings.resolution, 16, 1024));
+        renderer::ViewOptions views;
+        views.lightViewSize = std::clamp(settings.resolution, 16, 1024);
+        views.unwarped = false; // not shown in this window
+        renderer.render(plan, eyeSize, views);
 
         renderer::beginWindowFrame(fbW, fbH);
         ImGui_ImplOpenGL3_NewFrame();
