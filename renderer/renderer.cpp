@@ -280,8 +280,22 @@ void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewpor
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    eyeProgram_.use();
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
+    const auto inView = [&](const geometry::Aabb& box) { return geometry::intersectsClipVolume(box, viewProj); };
+    // Depth pre-pass: the heavy eye shader (filter taps, six targets) then runs once per pixel
+    // instead of once per overlapping surface.
+    Program& depthOnly = depthProgram("");
+    depthOnly.use();
+    depthOnly.set("uLightViewProj", viewProj);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    for (const auto& m : scene_->meshes()) {
+        depthOnly.set("uModel", m.transform);
+        scene_->draw(m, inView);
+    }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    eyeProgram_.use();
     eyeProgram_.set("uViewProj", viewProj);
     eyeProgram_.set("uLightDir", plan.l);
     eyeProgram_.set("uEye", glm::vec3(glm::inverse(plan.eyeView)[3]));
@@ -320,9 +334,10 @@ void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewpor
     for (const auto& m : scene_->meshes()) {
         eyeProgram_.set("uModel", m.transform);
         eyeProgram_.set("uColor", m.color);
-        stats_.eyeTriangles +=
-            scene_->draw(m, [&](const geometry::Aabb& box) { return geometry::intersectsClipVolume(box, viewProj); });
+        stats_.eyeTriangles += scene_->draw(m, inView);
     }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
 }
 
 void Renderer::eyeBlurAndCompose(const geometry::ShadowPlan& plan) {

@@ -1,6 +1,7 @@
 #version 430 core
 // Shadow pass: world → shadow clip space of one split.
 layout(location = 0) in vec3 aPosition;
+invariant gl_Position; // the eye pass's depth pre-pass (depth.vert) must match eye.vert bit for bit
 uniform mat4 uModel;
 uniform mat4 uLightViewProj;
 #if defined(LINEAR_Z) || defined(MOMENTS)

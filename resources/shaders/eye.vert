@@ -1,5 +1,6 @@
 #version 430 core
 layout(location = 0) in vec3 aPosition;
+invariant gl_Position; // the eye pass's depth pre-pass (depth.vert) must match eye.vert bit for bit
 layout(location = 1) in vec3 aNormal;
 uniform mat4 uModel;
 uniform mat4 uViewProj;
