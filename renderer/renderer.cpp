@@ -265,6 +265,14 @@ void Renderer::momentsPass(const geometry::ShadowPlan& plan) {
 }
 
 void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport) {
+    // 58 bytes per pixel over eight targets; refuse before the driver fails (or swaps) on a huge size.
+    const double bytes = 58.0 * viewport.width * viewport.height;
+    if (viewport.width > maxTextureSize_ || viewport.height > maxTextureSize_ || bytes > limits_.viewMemoryBytes)
+        throw std::runtime_error("view " + std::to_string(viewport.width) + "x" + std::to_string(viewport.height) +
+                                 " is too large (needs " + std::to_string(int(bytes / (1 << 20))) +
+                                 " MiB of eye buffers; the limit is " +
+                                 std::to_string(int(limits_.viewMemoryBytes / (1 << 20))) + " MiB and " +
+                                 std::to_string(maxTextureSize_) + " pixels a side)");
     eyeBuffers_.ensure(viewport.width, viewport.height);
     stats_.eyeWidth = viewport.width;
     stats_.eyeHeight = viewport.height;

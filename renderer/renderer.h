@@ -38,6 +38,7 @@ struct ViewOptions {
 
 struct RendererLimits {
     double shadowMemoryBytes = 1.5 * 1024 * 1024 * 1024; // all shadow textures together
+    double viewMemoryBytes = 4.0 * 1024 * 1024 * 1024;   // the eye pass's buffers (beyond: an error)
 };
 
 class Renderer {

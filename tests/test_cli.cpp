@@ -62,7 +62,8 @@ TEST(Cli, BadInputGivesOneLineErrorAndNonZeroExit) {
         "render --size 0x100",          "render --size abc",          "render --scene nosuchscene --backend osmesa",
         "render --camera 1,2,3",        "render --camera 1,2,3,1,2,3", "render --light 0,0,0",
         "render --light nan,1,0",       "render --shadow-res 5",       "render --backend vulkan",
-        "render --no-such-option",
+        "render --no-such-option",      "render --backend osmesa --scene plane --size 16384x16384",
+        "render --set splits.count=9",  "render --preset /nonexistent.json",
     };
     for (const char* args : cases) {
         const CommandResult r = run(std::string(args) + " --out " + freshDir("bad").string());
