@@ -1,6 +1,7 @@
 // shadowscope: inspect, tune and document real-time shadows on CAD models.
 #include "curves_command.h"
 #include "gui_command.h"
+#include "mesh_command.h"
 #include "render_command.h"
 
 #include <CLI/CLI.hpp>
@@ -28,8 +29,12 @@ int main(int argc, char** argv) {
                                                     "boundaries) as CSV + SVG charts, without rendering");
     app::addCurvesCommand(*curves, curvesOptions);
 
+    app::MeshOptions meshOptions;
+    CLI::App* mesh = app::addMeshCommand(cli, meshOptions);
+
     try {
         cli.parse(argc, argv);
+        if (mesh->parsed()) return app::runMesh(*mesh, meshOptions);
         if (render->parsed()) return app::runRender(renderOptions, exportOptions);
         if (curves->parsed()) return app::runCurves(curvesOptions);
         return app::runGuiOrHeadless(guiOptions);

@@ -2,15 +2,24 @@
 
 #include "preset.h"
 
-#include "geometry/builtin_scenes.h"
+#include "geometry/scene_file.h"
 
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
 #include <functional>
+#include <iostream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 namespace app {
@@ -105,10 +114,61 @@ void addSettingSources(CLI::App& cmd, RenderOptions& o) {
     sources->assignments = addSetOption(cmd, rebuild);
 }
 
+/// Shows "loading NAME: STAGE NN%" on stderr, rewriting one line, once a load has taken half a
+/// second (quick loads stay silent) and at most ten times a second, then "loaded NAME in T s".
+/// Only on a terminal: captured output and logs keep their one-line errors.
+class LoadProgress {
+public:
+    explicit LoadProgress(std::string label) : label_(std::move(label)), terminal_(isatty(STDERR_FILENO) == 1) {}
+    LoadProgress(const LoadProgress&) = delete;
+    LoadProgress& operator=(const LoadProgress&) = delete;
+    ~LoadProgress() {
+        if (!shown_) return;
+        // A failed load clears the line, so its error message stands alone.
+        if (std::uncaught_exceptions() > 0) std::cerr << "\r\033[K" << std::flush;
+        else std::cerr << "\r\033[Kloaded " << label_ << " in " << seconds(Clock::now()) << " s\n" << std::flush;
+    }
+
+    void operator()(float fraction, std::string_view stage) {
+        if (!terminal_) return;
+        const auto now = Clock::now();
+        if (now - start_ < std::chrono::milliseconds(500) || now - last_ < std::chrono::milliseconds(100)) return;
+        last_ = now;
+        shown_ = true;
+        const int percent = static_cast<int>(std::lround(100.f * std::clamp(fraction, 0.f, 1.f)));
+        std::cerr << "\r\033[Kloading " << label_ << ": " << stage << ' ' << percent << '%' << std::flush;
+    }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    std::string seconds(Clock::time_point now) const {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f", std::chrono::duration<double>(now - start_).count());
+        return text;
+    }
+    std::string label_;
+    bool terminal_;
+    bool shown_ = false;
+    Clock::time_point start_ = Clock::now();
+    Clock::time_point last_{};
+};
+
+std::string unknownView(const RenderOptions& o, const geometry::SceneFile& file) {
+    std::string names;
+    for (const auto& [name, view] : file.views) names += (names.empty() ? "" : ", ") + name;
+    return "--view " + o.view + ": scene '" + o.scene + "' has no such view (" +
+           (names.empty() ? std::string("it has none") : "available: " + names) + ")";
+}
+
 } // namespace
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
-    cmd.add_option("--scene", o.scene, "Built-in scene: platform, plane")->capture_default_str();
+    cmd.add_option("--scene", o.scene,
+                   "Scene: a built-in name (platform, plane), a scene file (resources/scenes/*.json) or a model "
+                   "file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
+        ->capture_default_str();
+    cmd.add_option("--view", o.view, "Canonical view (camera and light) named in the scene file, e.g. deck, overview "
+                                      "(default: the scene's camera and light)");
     cmd.add_option_function<std::string>(
            "--size", [&o](const std::string& s) { o.size = parseSize(s); }, "Image size WxH (default 1280x720)");
     cmd.add_option("--out", o.out, "Output folder")->capture_default_str();
@@ -146,7 +206,18 @@ void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings) {
 }
 
 geometry::Scene loadScene(const RenderOptions& o) {
-    geometry::Scene scene = geometry::makeBuiltinScene(o.scene);
+    geometry::SceneFile file;
+    {
+        LoadProgress progress(std::filesystem::path(o.scene).filename().string());
+        file = geometry::resolveScene(o.scene, std::ref(progress));
+    }
+    geometry::Scene scene = std::move(file.scene);
+    if (!o.view.empty()) {
+        const auto it = file.views.find(o.view);
+        if (it == file.views.end()) throw std::invalid_argument(unknownView(o, file));
+        scene.camera = it->second.camera;
+        scene.light = it->second.light;
+    }
     if (o.camera) {
         scene.camera.eye = o.camera->eye;
         scene.camera.target = o.camera->target;

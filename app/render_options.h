@@ -12,7 +12,8 @@ namespace CLI { class App; }
 namespace app {
 
 struct RenderOptions {
-    std::string scene = "platform";
+    std::string scene = "platform";                 // built-in name, scene file (.json) or model file
+    std::string view;                               // a canonical view of the scene; empty: the scene's camera
     geometry::Viewport size{1280, 720};
     std::string out = "out";
     std::string backend = "auto";
@@ -21,7 +22,7 @@ struct RenderOptions {
     geometry::ShadowSettings settings;             // --preset FILE, --shadow-res, --set key=value
 };
 
-/// Adds --scene, --size, --out, --backend, --camera, --light, --preset, --shadow-res, --set to `cmd`.
+/// Adds --scene, --view, --size, --out, --backend, --camera, --light, --preset, --shadow-res, --set to `cmd`.
 /// After parsing, options.settings is: its value when this was called, then every --preset file
 /// (in command-line order), then --shadow-res, then every --set (in command-line order), whatever
 /// the order of those options on the command line. Untouched when none of the three is given.
@@ -31,8 +32,11 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& options);
 /// applied directly to `settings`; for commands without --preset.
 void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings);
 
-/// The scene named by options.scene with the camera and light overrides applied.
-/// Throws std::invalid_argument with a one-line reason.
+/// The scene named by options.scene (geometry::resolveScene: a built-in name, a scene file or a
+/// model file), seen from options.view when given, with the camera and light overrides applied
+/// last. Loads that take longer than half a second show a progress line on stderr (a terminal
+/// only). Throws std::invalid_argument (unknown view) or std::runtime_error (the scene does not
+/// load), each with a one-line reason.
 [[nodiscard]] geometry::Scene loadScene(const RenderOptions& options);
 
 } // namespace app

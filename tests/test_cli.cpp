@@ -125,3 +125,27 @@ TEST(Cli, TruthViewWithoutTruthIsAnError) {
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.output.find("--truth"), std::string::npos);
 }
+
+TEST(Cli, MeshInfoAndCleanReportTheCleanup) {
+    const fs::path dir = freshDir("mesh");
+    fs::create_directories(dir);
+    // Two triangles sharing an edge written with duplicated vertices, plus a zero-area face.
+    {
+        std::ofstream obj(dir / "in.obj");
+        obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 4 5 6\nf 1 2 7\n";
+    }
+    const CommandResult info = run("mesh info --json " + (dir / "in.obj").string());
+    ASSERT_EQ(info.exitCode, 0) << info.output;
+    const nlohmann::json j = nlohmann::json::parse(info.output);
+    EXPECT_EQ(j.at("triangles"), 2);
+    EXPECT_EQ(j.at("cleanup").at("merged_vertices"), 2);
+    EXPECT_EQ(j.at("cleanup").at("degenerate_faces"), 1);
+    const CommandResult clean = run("mesh clean " + (dir / "in.obj").string() + " " + (dir / "out.stl").string());
+    ASSERT_EQ(clean.exitCode, 0) << clean.output;
+    const CommandResult again = run("mesh info --json " + (dir / "out.stl").string());
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_EQ(nlohmann::json::parse(again.output).at("triangles"), 2);
+    const CommandResult missing = run("mesh info " + (dir / "nope.stl").string());
+    EXPECT_NE(missing.exitCode, 0);
+    EXPECT_NE(missing.output.find("nope.stl"), std::string::npos);
+}

@@ -1,0 +1,109 @@
+#include "mesh_command.h"
+
+#include "geometry/model_loader.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+
+namespace app {
+
+namespace {
+
+nlohmann::json reportJson(const geometry::LoadedModel& m) {
+    const auto& r = m.report;
+    geometry::Aabb bounds;
+    size_t triangles = 0, vertices = 0;
+    for (const auto& mesh : m.meshes) {
+        bounds.add(mesh.worldBounds());
+        triangles += mesh.triangleCount();
+        vertices += mesh.positions.size();
+    }
+    nlohmann::json j;
+    j["format"] = m.format;
+    j["meshes"] = m.meshes.size();
+    j["triangles"] = triangles;
+    j["vertices"] = vertices;
+    j["bounds"] = {{"min", {bounds.lo.x, bounds.lo.y, bounds.lo.z}}, {"max", {bounds.hi.x, bounds.hi.y, bounds.hi.z}}};
+    j["cleanup"] = {{"input_vertices", r.inputVertices},   {"input_faces", r.inputFaces},
+                    {"non_finite_vertices", r.nonFiniteVertices}, {"non_finite_faces", r.nonFiniteFaces},
+                    {"degenerate_faces", r.degenerateFaces}, {"merged_vertices", r.mergedVertices},
+                    {"duplicate_faces", r.duplicateFaces}, {"isolated_vertices", r.isolatedVertices},
+                    {"flipped_faces", r.flippedFaces},     {"output_vertices", r.outputVertices},
+                    {"output_faces", r.outputFaces},       {"notes", r.notes}};
+    return j;
+}
+
+void printText(const nlohmann::json& j) {
+    const auto& b = j["bounds"];
+    std::cout << "format     " << j["format"].get<std::string>() << "\n"
+              << "meshes     " << j["meshes"] << "\n"
+              << "triangles  " << j["triangles"] << "\n"
+              << "vertices   " << j["vertices"] << "\n"
+              << "bounds     " << b["min"].dump() << " .. " << b["max"].dump() << "\n"
+              << "cleanup\n";
+    for (const auto& [key, value] : j["cleanup"].items())
+        if (key != "notes") std::cout << "  " << key << ' ' << value << "\n";
+    for (const auto& note : j["cleanup"]["notes"]) std::cout << "  note: " << note.get<std::string>() << "\n";
+}
+
+geometry::LoadedModel load(const MeshOptions& o) {
+    geometry::CleanupOptions c;
+    c.creaseAngleDeg = o.creaseAngleDeg;
+    c.mergeTolerance = o.mergeTolerance;
+    c.fixOrientation = o.fixOrientation;
+    return geometry::loadModel(o.input, c);
+}
+
+void addCleanupOptions(CLI::App& cmd, MeshOptions& o) {
+    cmd.add_option("--crease-angle", o.creaseAngleDeg, "Normals: sharper edges than this stay sharp (degrees)")
+        ->check(CLI::Range(0.0, 180.0))
+        ->capture_default_str();
+    cmd.add_option("--merge-tolerance", o.mergeTolerance, "Merge vertices closer than this × the bounds' diagonal")
+        ->check(CLI::Range(0.0, 0.1))
+        ->capture_default_str();
+    cmd.add_flag("--fix-orientation", o.fixOrientation, "Make face winding consistent per connected part");
+}
+
+} // namespace
+
+CLI::App* addMeshCommand(CLI::App& cli, MeshOptions& o) {
+    CLI::App* mesh = cli.add_subcommand("mesh", "Inspect or clean a mesh file (OBJ, STL, OFF, PLY, glTF)");
+    mesh->require_subcommand(1);
+    CLI::App* info = mesh->add_subcommand("info", "Counts, bounds and the cleanup report of a mesh file");
+    info->add_option("FILE", o.input, "Mesh file")->required();
+    info->add_flag("--json", o.json, "Print JSON");
+    addCleanupOptions(*info, o);
+    CLI::App* clean = mesh->add_subcommand("clean", "Load, clean and write a mesh (format from OUT's extension)");
+    clean->add_option("IN", o.input, "Mesh file to read")->required();
+    clean->add_option("OUT", o.output, "Mesh file to write (.obj, .stl, .off, .ply)")->required();
+    addCleanupOptions(*clean, o);
+    return mesh;
+}
+
+int runMesh(const CLI::App& mesh, const MeshOptions& o) {
+    const geometry::LoadedModel model = load(o);
+    if (mesh.get_subcommand("info")->parsed()) {
+        const nlohmann::json j = reportJson(model);
+        if (o.json) std::cout << j.dump(2) << '\n';
+        else printText(j);
+        return 0;
+    }
+    // One output mesh: the model's meshes merged with their transforms applied.
+    geometry::Mesh merged;
+    for (const auto& m : model.meshes) {
+        const auto base = static_cast<uint32_t>(merged.positions.size());
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m.transform)));
+        for (size_t i = 0; i < m.positions.size(); ++i) {
+            merged.positions.push_back(glm::vec3(m.transform * glm::vec4(m.positions[i], 1.f)));
+            merged.normals.push_back(i < m.normals.size() ? glm::normalize(normalMatrix * m.normals[i]) : glm::vec3(0, 1, 0));
+        }
+        for (uint32_t idx : m.indices) merged.indices.push_back(base + idx);
+    }
+    geometry::saveMesh(o.output, merged);
+    std::cout << o.output << '\n';
+    return 0;
+}
+
+} // namespace app

@@ -1,0 +1,452 @@
+// glTF loading: hierarchy, materials, modes, buffers, and hostile files. Fixtures are generated
+// into a temporary folder (JSON via nlohmann, GLB assembled byte by byte) so every malformed
+// variant is a small, visible edit of one valid document.
+#include "geometry/gltf_loader.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using geometry::LoadedModel;
+using nlohmann::json;
+
+constexpr int kFloat = 5126, kUShort = 5123, kUByte = 5121;
+
+using Bytes = std::vector<unsigned char>;
+
+/// A binary buffer assembled piece by piece, each piece 4-byte aligned as glTF requires.
+struct Bin {
+    Bytes bytes;
+    template <typename T>
+    size_t add(const std::vector<T>& values) {
+        while (bytes.size() % 4) bytes.push_back(0);
+        const size_t offset = bytes.size();
+        bytes.resize(offset + values.size() * sizeof(T));
+        std::memcpy(bytes.data() + offset, values.data(), values.size() * sizeof(T));
+        return offset;
+    }
+};
+
+std::string base64(const Bytes& data) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < data.size(); i += 3) {
+        const uint32_t n = uint32_t(data[i]) << 16 | (i + 1 < data.size() ? uint32_t(data[i + 1]) << 8 : 0) |
+                           (i + 2 < data.size() ? uint32_t(data[i + 2]) : 0);
+        out += table[n >> 18 & 63];
+        out += table[n >> 12 & 63];
+        out += i + 1 < data.size() ? table[n >> 6 & 63] : '=';
+        out += i + 2 < data.size() ? table[n & 63] : '=';
+    }
+    return out;
+}
+
+void putU32(Bytes& out, uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+
+/// GLB 2.0 container: 12-byte header, JSON chunk, optional BIN chunk, both padded to 4 bytes.
+Bytes makeGlb(std::string text, Bytes bin) {
+    while (text.size() % 4) text += ' ';
+    while (bin.size() % 4) bin.push_back(0);
+    const size_t total = 12 + 8 + text.size() + (bin.empty() ? 0 : 8 + bin.size());
+    Bytes out;
+    putU32(out, 0x46546C67); // "glTF"
+    putU32(out, 2);
+    putU32(out, uint32_t(total));
+    putU32(out, uint32_t(text.size()));
+    putU32(out, 0x4E4F534A); // "JSON"
+    out.insert(out.end(), text.begin(), text.end());
+    if (!bin.empty()) {
+        putU32(out, uint32_t(bin.size()));
+        putU32(out, 0x004E4942); // "BIN\0"
+        out.insert(out.end(), bin.begin(), bin.end());
+    }
+    return out;
+}
+
+/// The unit triangle (0,0,0) (1,0,0) (0,1,0): POSITION accessor 0, UNSIGNED_SHORT indices 1.
+Bin triangleBin() {
+    Bin bin;
+    bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0});
+    bin.add(std::vector<uint16_t>{0, 1, 2});
+    return bin;
+}
+
+json triangleDoc(const Bytes& bin, const std::string& uri) {
+    json buffer = {{"byteLength", bin.size()}};
+    if (!uri.empty()) buffer["uri"] = uri;
+    return {
+        {"asset", {{"version", "2.0"}}},
+        {"buffers", json::array({buffer})},
+        {"bufferViews", json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
+                                     {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 6}}})},
+        {"accessors", json::array({{{"bufferView", 0}, {"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}},
+                                   {{"bufferView", 1}, {"componentType", kUShort}, {"count", 3}, {"type", "SCALAR"}}})},
+        {"meshes", json::array({{{"primitives", json::array({{{"attributes", {{"POSITION", 0}}}, {"indices", 1}}})}}})},
+        {"nodes", json::array({{{"mesh", 0}}})},
+        {"scenes", json::array({{{"nodes", json::array({0})}}})},
+        {"scene", 0},
+    };
+}
+
+std::string dataUri(const Bytes& bin) { return "data:application/octet-stream;base64," + base64(bin); }
+
+/// The triangle document with its buffer embedded as a data URI.
+json embeddedTriangle() {
+    const Bytes bin = triangleBin().bytes;
+    return triangleDoc(bin, dataUri(bin));
+}
+
+json primitive(int position, int indices, int mode = 4, int material = -1) {
+    json p = {{"attributes", {{"POSITION", position}}}, {"mode", mode}};
+    if (indices >= 0) p["indices"] = indices;
+    if (material >= 0) p["material"] = material;
+    return p;
+}
+
+class GltfTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() /
+               ("shadowscope_gltf_" + std::to_string(getpid()) + "_" + info->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(dir_, ec);
+    }
+
+    std::string writeBytes(const std::string& name, const Bytes& bytes) const {
+        const fs::path path = dir_ / name;
+        std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                                    std::streamsize(bytes.size()));
+        return path.string();
+    }
+    std::string writeText(const std::string& name, const std::string& text) const {
+        return writeBytes(name, Bytes(text.begin(), text.end()));
+    }
+    std::string writeDoc(const std::string& name, const json& doc) const { return writeText(name, doc.dump()); }
+
+    /// Expects loadGltf to throw, fast, a one-line message naming the file; returns it.
+    static std::string expectFailure(const std::string& path) {
+        const auto start = std::chrono::steady_clock::now();
+        std::string message;
+        try {
+            (void)geometry::loadGltf(path);
+            ADD_FAILURE() << path << " loaded without error";
+        } catch (const std::runtime_error& e) {
+            message = e.what();
+        }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_LT(seconds, 1.0) << message;
+        EXPECT_NE(message.find(fs::path(path).filename().string()), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        return message;
+    }
+
+    fs::path dir_;
+};
+
+bool near(const glm::vec3& a, const glm::vec3& b) { return glm::all(glm::lessThan(glm::abs(a - b), glm::vec3(1e-4f))); }
+
+bool hasNote(const LoadedModel& model, const std::string& text) {
+    for (const auto& note : model.report.notes)
+        if (note.find(text) != std::string::npos) return true;
+    return false;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Valid files
+
+TEST_F(GltfTest, EmbeddedDataUriTriangle) {
+    const LoadedModel model = geometry::loadGltf(writeDoc("triangle.gltf", embeddedTriangle()));
+    EXPECT_EQ(model.format, "gltf");
+    ASSERT_EQ(model.meshes.size(), 1u);
+    const geometry::Mesh& mesh = model.meshes[0];
+    EXPECT_EQ(mesh.triangleCount(), 1u);
+    EXPECT_EQ(mesh.positions.size(), 3u);
+    EXPECT_EQ(mesh.normals.size(), mesh.positions.size()); // computed by cleanMesh
+    EXPECT_TRUE(near(mesh.color, glm::vec3(0.8f)));
+    EXPECT_TRUE(mesh.twoSided);
+    EXPECT_FALSE(mesh.chunks.empty());
+    EXPECT_EQ(model.report.inputFaces, 1u);
+    EXPECT_EQ(model.report.outputFaces, 1u);
+}
+
+TEST_F(GltfTest, ChildTransformComposesWithParents) {
+    json doc = embeddedTriangle();
+    const double s = std::sqrt(0.5);
+    doc["nodes"] = json::array({
+        // matrix form, column-major: translate z by 5
+        {{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1}}, {"children", {1}}},
+        {{"translation", {10, 0, 0}}, {"children", {2}}},
+        // 90° about +z, then uniform scale 2 (T * R * S inside the node)
+        {{"rotation", {0, 0, s, s}}, {"scale", {2, 2, 2}}, {"mesh", 0}},
+        {{"mesh", 0}}, // a second root, untransformed
+    });
+    doc["scenes"] = json::array({{{"nodes", {0, 3}}}});
+    const LoadedModel model = geometry::loadGltf(writeDoc("hierarchy.gltf", doc));
+    ASSERT_EQ(model.meshes.size(), 2u);
+    // (0,0) (1,0) (0,1) → ×2 → rotated to (0,0) (0,2) (−2,0) → +(10,0,5)
+    const geometry::Aabb child = model.meshes[0].worldBounds();
+    EXPECT_TRUE(near(child.lo, {8, 0, 5})) << child.lo.x << " " << child.lo.y << " " << child.lo.z;
+    EXPECT_TRUE(near(child.hi, {10, 2, 5})) << child.hi.x << " " << child.hi.y << " " << child.hi.z;
+    const geometry::Aabb root = model.meshes[1].worldBounds();
+    EXPECT_TRUE(near(root.lo, {0, 0, 0}));
+    EXPECT_TRUE(near(root.hi, {1, 1, 0}));
+    EXPECT_EQ(model.report.outputFaces, 2u); // instances summed
+}
+
+TEST_F(GltfTest, WithoutDefaultSceneAllRootsLoad) {
+    json doc = embeddedTriangle();
+    doc.erase("scene");
+    doc.erase("scenes");
+    doc["nodes"] = json::array({{{"children", {1}}, {"translation", {0, 3, 0}}}, {{"mesh", 0}}, {{"mesh", 0}}});
+    const LoadedModel model = geometry::loadGltf(writeDoc("noscene.gltf", doc));
+    ASSERT_EQ(model.meshes.size(), 2u);
+    EXPECT_TRUE(near(model.meshes[0].worldBounds().lo, {0, 3, 0}));
+    EXPECT_TRUE(near(model.meshes[1].worldBounds().lo, {0, 0, 0}));
+}
+
+TEST_F(GltfTest, BaseColourPerPrimitive) {
+    json doc = embeddedTriangle();
+    doc["materials"] = json::array({
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}},
+        {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0.5, 1, 1}}}}, {"doubleSided", true}},
+    });
+    doc["meshes"][0]["primitives"] = json::array({primitive(0, 1, 4, 0), primitive(0, 1, 4, 1), primitive(0, 1)});
+    const LoadedModel model = geometry::loadGltf(writeDoc("colours.gltf", doc));
+    ASSERT_EQ(model.meshes.size(), 3u);
+    EXPECT_TRUE(near(model.meshes[0].color, {1, 0, 0}));
+    EXPECT_TRUE(near(model.meshes[1].color, {0, 0.5f, 1}));
+    EXPECT_TRUE(near(model.meshes[2].color, glm::vec3(0.8f)));
+    for (const auto& mesh : model.meshes) EXPECT_TRUE(mesh.twoSided);
+}
+
+TEST_F(GltfTest, LinesPrimitiveSkippedWithNote) {
+    json doc = embeddedTriangle();
+    doc["meshes"][0]["primitives"] = json::array({primitive(0, 1), primitive(0, -1, 1)});
+    const LoadedModel model = geometry::loadGltf(writeDoc("lines.gltf", doc));
+    ASSERT_EQ(model.meshes.size(), 1u);
+    EXPECT_TRUE(hasNote(model, "mesh 0 primitive 1: mode LINES skipped"));
+}
+
+TEST_F(GltfTest, StripAndFanAreUnrolled) {
+    Bin bin;
+    bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0});
+    json doc = triangleDoc(bin.bytes, dataUri(bin.bytes));
+    doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteLength", 48}}});
+    doc["accessors"] = json::array({{{"bufferView", 0}, {"componentType", kFloat}, {"count", 4}, {"type", "VEC3"}}});
+    doc["meshes"][0]["primitives"] = json::array({primitive(0, -1, 5), primitive(0, -1, 6)});
+    const LoadedModel model = geometry::loadGltf(writeDoc("strip.gltf", doc));
+    ASSERT_EQ(model.meshes.size(), 2u);
+    EXPECT_EQ(model.meshes[0].triangleCount(), 2u);
+    EXPECT_EQ(model.meshes[1].triangleCount(), 2u);
+}
+
+TEST_F(GltfTest, ExternalBinBuffer) {
+    const Bytes bin = triangleBin().bytes;
+    writeBytes("triangle.bin", bin);
+    const LoadedModel model = geometry::loadGltf(writeDoc("external.gltf", triangleDoc(bin, "triangle.bin")));
+    ASSERT_EQ(model.meshes.size(), 1u);
+    EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
+}
+
+TEST_F(GltfTest, GlbWithBinChunk) {
+    const Bytes bin = triangleBin().bytes;
+    const LoadedModel model = geometry::loadGltf(writeBytes("triangle.glb", makeGlb(triangleDoc(bin, "").dump(), bin)));
+    EXPECT_EQ(model.format, "glb");
+    ASSERT_EQ(model.meshes.size(), 1u);
+    EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
+}
+
+TEST_F(GltfTest, NonFinitePositionsAreCleanedNotFatal) {
+    Bin bin;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, nan, 0, 0});
+    bin.add(std::vector<uint8_t>{0, 1, 2, 0, 1, 3});
+    json doc = triangleDoc(bin.bytes, dataUri(bin.bytes));
+    doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 6}}});
+    doc["accessors"][0]["count"] = 4;
+    doc["accessors"][1] = {{"bufferView", 1}, {"componentType", kUByte}, {"count", 6}, {"type", "SCALAR"}};
+    const LoadedModel model = geometry::loadGltf(writeDoc("nan.gltf", doc));
+    ASSERT_EQ(model.meshes.size(), 1u);
+    EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
+    EXPECT_EQ(model.report.nonFiniteVertices, 1u);
+}
+
+TEST_F(GltfTest, ProgressStartsWithReadingThenReportsPrimitives) {
+    json doc = embeddedTriangle();
+    doc["meshes"][0]["primitives"] = json::array({primitive(0, 1), primitive(0, 1)});
+    std::vector<std::string> stages;
+    (void)geometry::loadGltf(writeDoc("progress.gltf", doc), {}, [&](float fraction, std::string_view stage) {
+        EXPECT_GE(fraction, 0.f);
+        EXPECT_LE(fraction, 1.f);
+        stages.emplace_back(stage);
+    });
+    ASSERT_FALSE(stages.empty());
+    EXPECT_EQ(stages.front(), "reading");
+    EXPECT_EQ(std::count(stages.begin(), stages.end(), "cleaning"), 2);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hostile files: each a one-line "PATH: problem", fast
+
+TEST_F(GltfTest, MissingFile) {
+    EXPECT_NE(expectFailure((dir_ / "absent.gltf").string()).find("not found"), std::string::npos);
+}
+
+TEST_F(GltfTest, NotJsonAtAll) {
+    expectFailure(writeText("garbage.gltf", "solid cube\nfacet normal 0 0 1\n"));
+    expectFailure(writeText("broken.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"nodes\": [ {"));
+    expectFailure(writeText("empty.glb", ""));
+}
+
+TEST_F(GltfTest, TruncatedGlb) {
+    const Bytes bin = triangleBin().bytes;
+    const Bytes glb = makeGlb(triangleDoc(bin, "").dump(), bin);
+    for (size_t keep : {size_t(10), size_t(24), glb.size() / 2, glb.size() - 4})
+        expectFailure(writeBytes("truncated" + std::to_string(keep) + ".glb", Bytes(glb.begin(), glb.begin() + long(keep))));
+}
+
+TEST_F(GltfTest, NodeCycle) {
+    json doc = embeddedTriangle();
+    doc["nodes"] = json::array({{{"mesh", 0}, {"children", {1}}}, {{"children", {0}}}});
+    EXPECT_NE(expectFailure(writeDoc("cycle.gltf", doc)).find("cycle"), std::string::npos);
+    doc["nodes"][0]["children"] = {0}; // its own child
+    expectFailure(writeDoc("selfchild.gltf", doc));
+    doc.erase("scene"); // no default scene: every node has a parent
+    doc["nodes"] = json::array({{{"mesh", 0}, {"children", {1}}}, {{"children", {0}}}});
+    EXPECT_NE(expectFailure(writeDoc("rootless.gltf", doc)).find("cycle"), std::string::npos);
+}
+
+TEST_F(GltfTest, DeepAndExponentialHierarchies) {
+    json doc = embeddedTriangle();
+    json chain = json::array();
+    for (int i = 0; i < 100; ++i) chain.push_back({{"children", {i + 1}}});
+    chain.push_back({{"mesh", 0}});
+    doc["nodes"] = chain;
+    expectFailure(writeDoc("deep.gltf", doc));
+
+    // No cycle, but every node lists its successor twice: 2^40 instances.
+    json dag = json::array();
+    for (int i = 0; i < 40; ++i) dag.push_back({{"children", {i + 1, i + 1}}});
+    dag.push_back({{"mesh", 0}});
+    doc["nodes"] = dag;
+    expectFailure(writeDoc("exponential.gltf", doc));
+}
+
+TEST_F(GltfTest, MissingMeshAndNode) {
+    json doc = embeddedTriangle();
+    doc["nodes"][0]["mesh"] = 5;
+    EXPECT_NE(expectFailure(writeDoc("nomesh.gltf", doc)).find("mesh 5"), std::string::npos);
+    doc = embeddedTriangle();
+    doc["nodes"][0]["children"] = {7};
+    expectFailure(writeDoc("nochild.gltf", doc));
+}
+
+TEST_F(GltfTest, MissingBinBuffer) {
+    const Bytes bin = triangleBin().bytes;
+    expectFailure(writeDoc("missingbin.gltf", triangleDoc(bin, "absent.bin")));
+    fs::create_directories(dir_ / "folder.bin");
+    expectFailure(writeDoc("dirbin.gltf", triangleDoc(bin, "folder.bin")));
+}
+
+TEST_F(GltfTest, AccessorOutOfRange) {
+    json doc = embeddedTriangle();
+    doc["accessors"][0]["count"] = 4; // 48 bytes in a 36-byte view
+    EXPECT_NE(expectFailure(writeDoc("count.gltf", doc)).find("accessor 0"), std::string::npos);
+    doc = embeddedTriangle();
+    doc["accessors"][0]["byteOffset"] = 4;
+    expectFailure(writeDoc("offset.gltf", doc));
+    doc = embeddedTriangle();
+    doc["bufferViews"][0]["byteLength"] = 1000; // view past the buffer
+    expectFailure(writeDoc("view.gltf", doc));
+    doc = embeddedTriangle();
+    doc["accessors"][0]["bufferView"] = 9;
+    expectFailure(writeDoc("noview.gltf", doc));
+}
+
+TEST_F(GltfTest, AbsurdCountClaim) {
+    json doc = embeddedTriangle();
+    doc["accessors"][0]["count"] = 1000000000000ull;
+    expectFailure(writeDoc("huge.gltf", doc));
+    doc = embeddedTriangle();
+    doc["accessors"][1]["count"] = 1000000000000ull;
+    expectFailure(writeDoc("hugeindices.gltf", doc));
+}
+
+TEST_F(GltfTest, IndexOutOfRange) {
+    Bin bin = triangleBin();
+    bin.bytes[36 + 4] = 7; // third index: 7 with 3 vertices
+    const std::string message = expectFailure(writeDoc("index.gltf", triangleDoc(bin.bytes, dataUri(bin.bytes))));
+    EXPECT_NE(message.find("index 7"), std::string::npos) << message;
+}
+
+TEST_F(GltfTest, WrongAccessorTypes) {
+    json doc = embeddedTriangle();
+    doc["accessors"][0]["componentType"] = kUShort;
+    EXPECT_NE(expectFailure(writeDoc("ushortpos.gltf", doc)).find("POSITION"), std::string::npos);
+    doc = embeddedTriangle();
+    doc["accessors"][0]["type"] = "VEC2";
+    expectFailure(writeDoc("vec2pos.gltf", doc));
+    doc = embeddedTriangle();
+    doc["accessors"][1]["componentType"] = kFloat;
+    doc["accessors"][1]["count"] = 1;
+    expectFailure(writeDoc("floatindex.gltf", doc));
+}
+
+TEST_F(GltfTest, SparseAccessorRejected) {
+    json doc = embeddedTriangle();
+    doc["accessors"][0]["sparse"] = {{"count", 1},
+                                     {"indices", {{"bufferView", 1}, {"componentType", kUShort}}},
+                                     {"values", {{"bufferView", 0}}}};
+    expectFailure(writeDoc("sparse.gltf", doc));
+}
+
+TEST_F(GltfTest, SharedAccessorAmplificationRefused) {
+    // 120 KB of vertices referenced by 400 primitives: each accessor fits, the sum would not.
+    Bin bin;
+    bin.add(std::vector<float>(30000, 0.f));
+    json doc = triangleDoc(bin.bytes, "");
+    doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteLength", bin.bytes.size()}}});
+    doc["accessors"] = json::array({{{"bufferView", 0}, {"componentType", kFloat}, {"count", 10000}, {"type", "VEC3"}}});
+    doc["meshes"][0]["primitives"] = json::array();
+    for (int i = 0; i < 400; ++i) doc["meshes"][0]["primitives"].push_back(primitive(0, -1));
+    const std::string message = expectFailure(writeBytes("amplified.glb", makeGlb(doc.dump(), bin.bytes)));
+    EXPECT_NE(message.find("MiB"), std::string::npos) << message;
+}
+
+TEST_F(GltfTest, DeeplyNestedJsonRefused) {
+    json doc = embeddedTriangle();
+    const std::string text = doc.dump();
+    const std::string nested = std::string(100000, '[') + std::string(100000, ']');
+    expectFailure(writeText("nested.gltf", text.substr(0, text.size() - 1) + ",\"extras\":" + nested + "}"));
+}
+
+TEST_F(GltfTest, NoTriangles) {
+    json doc = embeddedTriangle();
+    doc["meshes"][0]["primitives"] = json::array({primitive(0, -1, 1), primitive(0, -1, 0)});
+    EXPECT_NE(expectFailure(writeDoc("linesonly.gltf", doc)).find("no triangles"), std::string::npos);
+    doc = embeddedTriangle();
+    doc["nodes"] = json::array({json::object()});
+    expectFailure(writeDoc("nomeshes.gltf", doc));
+}
+
+} // namespace

@@ -1,0 +1,261 @@
+// cleanMesh(): every step on hand-built meshes, counted and checked.
+#include "geometry/mesh_builder.h"
+#include "geometry/model_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+using namespace geometry;
+
+namespace {
+
+Mesh makeMesh(std::vector<glm::vec3> positions, std::vector<uint32_t> indices) {
+    Mesh m;
+    m.positions = std::move(positions);
+    m.indices = std::move(indices);
+    return m;
+}
+
+/// Unit cube on 8 shared vertices, 12 triangles wound counter-clockwise seen from outside.
+Mesh sharedCube() {
+    std::vector<glm::vec3> p;
+    for (int i = 0; i < 8; ++i) p.emplace_back(i & 1 ? 1.f : 0.f, i & 2 ? 1.f : 0.f, i & 4 ? 1.f : 0.f);
+    // Quads listed counter-clockwise from outside.
+    const uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    std::vector<uint32_t> idx;
+    for (const auto& q : quads) idx.insert(idx.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+    return makeMesh(p, idx);
+}
+
+/// True when every triangle's normal points away from the cube's centre.
+bool allOutward(const Mesh& m) {
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        c = m.positions[m.indices[3 * t + 2]];
+        if (glm::dot(glm::cross(b - a, c - a), (a + b + c) / 3.f - glm::vec3(0.5f)) <= 0) return false;
+    }
+    return true;
+}
+
+void expectValid(const Mesh& m) {
+    ASSERT_EQ(m.normals.size(), m.positions.size());
+    for (uint32_t i : m.indices) ASSERT_LT(i, m.positions.size());
+    for (const glm::vec3& n : m.normals) EXPECT_NEAR(glm::length(n), 1.f, 1e-4f);
+    for (const glm::vec3& p : m.positions) EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+}
+
+} // namespace
+
+TEST(MeshCleanup, SharedEdgeWrittenTwiceMergesToFourVertices) {
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 1, 2, 3, 4, 5});
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.inputVertices, 6u);
+    EXPECT_EQ(r.inputFaces, 2u);
+    EXPECT_EQ(r.mergedVertices, 2u);
+    EXPECT_EQ(r.outputVertices, 4u);
+    EXPECT_EQ(r.outputFaces, 2u);
+    EXPECT_EQ(m.positions.size(), 4u);
+    expectValid(m);
+    for (const glm::vec3& n : m.normals) EXPECT_NEAR(n.z, 1.f, 1e-5f);
+}
+
+TEST(MeshCleanup, MergeRespectsTolerance) {
+    // 1e-7 apart in a unit-sized mesh merges at the default 1e-6; 1e-3 apart does not.
+    Mesh close = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1e-7f, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 1, 2, 3, 4, 5});
+    EXPECT_EQ(cleanMesh(close).mergedVertices, 2u);
+    Mesh far = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1e-3f, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 1, 2, 3, 4, 5});
+    EXPECT_EQ(cleanMesh(far).mergedVertices, 1u);
+}
+
+TEST(MeshCleanup, NonFiniteVertexRemovesItsFaces) {
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {nan, 0, 0}, {1, inf, 0}},
+                      {0, 1, 2, 1, 3, 2, 0, 4, 1});
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.nonFiniteVertices, 2u);
+    EXPECT_EQ(r.nonFiniteFaces, 2u);
+    EXPECT_EQ(r.outputFaces, 1u);
+    EXPECT_EQ(r.outputVertices, 3u);
+    expectValid(m);
+}
+
+TEST(MeshCleanup, DegenerateFacesRemoved) {
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}},
+                      {0, 1, 2,   // good
+                       0, 0, 1,   // repeated index
+                       0, 1, 3}); // collinear: zero area
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.degenerateFaces, 2u);
+    EXPECT_EQ(r.outputFaces, 1u);
+    EXPECT_EQ(r.isolatedVertices, 1u); // vertex 3 was used by the collinear face alone
+    EXPECT_EQ(r.outputVertices, 3u);
+    expectValid(m);
+}
+
+TEST(MeshCleanup, IndexOutOfRangeDropsFace) {
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2, 0, 1, 7});
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.outputFaces, 1u);
+    EXPECT_EQ(r.degenerateFaces, 1u);
+}
+
+TEST(MeshCleanup, DuplicateFacesAnyWindingRemoved) {
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}},
+                      {0, 1, 2, 2, 1, 0, 1, 2, 0, 1, 3, 2});
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.duplicateFaces, 2u);
+    EXPECT_EQ(r.outputFaces, 2u);
+    EXPECT_EQ(m.indices[0], 0u); // the first occurrence is the one kept
+    EXPECT_EQ(m.indices[1], 1u);
+    EXPECT_EQ(m.indices[2], 2u);
+}
+
+TEST(MeshCleanup, IsolatedVerticesRemoved) {
+    Mesh m = makeMesh({{5, 5, 5}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {9, 9, 9}}, {1, 2, 3});
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.isolatedVertices, 2u);
+    EXPECT_EQ(r.outputVertices, 3u);
+    EXPECT_EQ(m.positions[0], glm::vec3(0, 0, 0)); // order of the kept vertices preserved
+    expectValid(m);
+}
+
+TEST(MeshCleanup, CubeNormalsSharpAtThirtyDegreeCrease) {
+    Mesh m = sharedCube();
+    CleanupOptions o;
+    o.creaseAngleDeg = 30;
+    const CleanupReport r = cleanMesh(m, o);
+    EXPECT_EQ(r.outputVertices, 24u);
+    EXPECT_EQ(r.outputFaces, 12u);
+    expectValid(m);
+    for (const glm::vec3& n : m.normals) // axis-aligned: one component ±1
+        EXPECT_NEAR(std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}), 1.f, 1e-5f);
+    // Each triangle's corner normals equal its face normal.
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        c = m.positions[m.indices[3 * t + 2]];
+        const glm::vec3 fn = glm::normalize(glm::cross(b - a, c - a));
+        for (int k = 0; k < 3; ++k) EXPECT_GT(glm::dot(fn, m.normals[m.indices[3 * t + k]]), 0.9999f);
+    }
+}
+
+TEST(MeshCleanup, CubeNormalsSmoothAtHundredDegreeCrease) {
+    Mesh m = sharedCube();
+    CleanupOptions o;
+    o.creaseAngleDeg = 100;
+    EXPECT_EQ(cleanMesh(m, o).outputVertices, 8u);
+    expectValid(m);
+    for (size_t i = 0; i < m.positions.size(); ++i) // every normal points outward from the corner
+        EXPECT_GT(glm::dot(m.normals[i], m.positions[i] - glm::vec3(0.5f)), 0.f);
+}
+
+TEST(MeshCleanup, FlatShadedBoxMergesThenSplitsAgain) {
+    MeshBuilder mb("box", glm::vec3(1.f));
+    mb.addBox(glm::vec3(0.f), glm::vec3(1.f, 2.f, 3.f));
+    Mesh m = mb.build();
+    ASSERT_EQ(m.positions.size(), 24u);
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.mergedVertices, 16u);
+    EXPECT_EQ(r.outputVertices, 24u);
+    EXPECT_EQ(r.outputFaces, 12u);
+    expectValid(m);
+}
+
+TEST(MeshCleanup, OrientationFixFlipsExactlyTheFlippedFaces) {
+    Mesh m = sharedCube();
+    const std::set<size_t> flipped{1, 4, 9};
+    for (size_t t : flipped) std::swap(m.indices[3 * t + 1], m.indices[3 * t + 2]);
+    ASSERT_FALSE(allOutward(m));
+    CleanupOptions o;
+    o.fixOrientation = true;
+    const CleanupReport r = cleanMesh(m, o);
+    EXPECT_EQ(r.flippedFaces, flipped.size());
+    EXPECT_TRUE(allOutward(m));
+    expectValid(m);
+}
+
+TEST(MeshCleanup, OrientationFixLeavesConsistentMeshAlone) {
+    Mesh m = sharedCube();
+    CleanupOptions o;
+    o.fixOrientation = true;
+    EXPECT_EQ(cleanMesh(m, o).flippedFaces, 0u);
+    EXPECT_TRUE(allOutward(m));
+}
+
+TEST(MeshCleanup, OrientationOffKeepsWinding) {
+    Mesh m = sharedCube();
+    std::swap(m.indices[1], m.indices[2]);
+    EXPECT_EQ(cleanMesh(m).flippedFaces, 0u);
+    EXPECT_FALSE(allOutward(m));
+}
+
+TEST(MeshCleanup, TriangleSoupGridWeldsIntoGrid) {
+    // A 60×60 grid written as an STL-style soup (three vertices per triangle).
+    constexpr int n = 60;
+    Mesh m;
+    auto corner = [](int i, int j) { return glm::vec3(i * 0.1f, 0.f, j * 0.1f); };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            for (const glm::vec3& p : {corner(i, j), corner(i, j + 1), corner(i + 1, j + 1), corner(i, j),
+                                       corner(i + 1, j + 1), corner(i + 1, j)}) {
+                m.indices.push_back(static_cast<uint32_t>(m.positions.size()));
+                m.positions.push_back(p);
+            }
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.outputFaces, size_t(2 * n * n));
+    EXPECT_EQ(r.outputVertices, size_t((n + 1) * (n + 1)));
+    EXPECT_EQ(r.mergedVertices, size_t(6 * n * n - (n + 1) * (n + 1)));
+    expectValid(m);
+}
+
+TEST(MeshCleanup, EmptyMeshStaysEmpty) {
+    Mesh m;
+    const CleanupReport r = cleanMesh(m);
+    EXPECT_EQ(r.outputFaces, 0u);
+    EXPECT_TRUE(m.positions.empty());
+}
+
+TEST(MeshCleanup, ReportsAdd) {
+    CleanupReport a, b;
+    a.inputFaces = 2;
+    a.notes = {"x"};
+    b.inputFaces = 3;
+    b.flippedFaces = 1;
+    b.notes = {"y"};
+    a += b;
+    EXPECT_EQ(a.inputFaces, 5u);
+    EXPECT_EQ(a.flippedFaces, 1u);
+    EXPECT_EQ(a.notes.size(), 2u);
+}
+
+TEST(MeshCleanup, ZeroToleranceMergesExactDuplicatesOnly) {
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1e-7f, 0}, {1, 1, 0}, {0, 1, 0}, {-0.f, 0, 0}},
+                      {0, 1, 2, 3, 4, 5, 6, 2, 3});
+    CleanupOptions o;
+    o.mergeTolerance = 0;
+    const CleanupReport r = cleanMesh(m, o);
+    EXPECT_EQ(r.mergedVertices, 2u); // (0,1,0) twice and -0 = +0; not the 1e-7 neighbour
+}
+
+TEST(MeshCleanup, HighDegreeFanStaysFastAndSmooth) {
+    // A flat disc of 5000 triangles around one centre vertex, and a shallow cone of as many:
+    // the grouped path above kExactCornerDegree.
+    constexpr int n = 5000;
+    for (const float apex : {0.f, 0.05f}) {
+        Mesh m;
+        m.positions.emplace_back(0.f, 0.f, apex);
+        for (int i = 0; i < n; ++i) {
+            const float a = 2.f * 3.14159265f * float(i) / n;
+            m.positions.emplace_back(std::cos(a), std::sin(a), 0.f);
+            m.indices.insert(m.indices.end(), {0u, uint32_t(1 + i), uint32_t(1 + (i + 1) % n)});
+        }
+        const CleanupReport r = cleanMesh(m);
+        EXPECT_EQ(r.outputFaces, size_t(n));
+        expectValid(m);
+        // Every face lies within the crease angle of every other: one vertex at the centre.
+        EXPECT_EQ(r.outputVertices, size_t(n + 1));
+        EXPECT_GT(m.normals[0].z, 0.99f);
+    }
+}

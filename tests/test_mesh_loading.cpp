@@ -1,0 +1,432 @@
+// loadModel()/saveMesh() for OBJ, STL, OFF, PLY: fixtures are written by the tests into a
+// temporary folder, good and hostile alike.
+#include "geometry/mesh_builder.h"
+#include "geometry/model_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <unistd.h>
+
+using namespace geometry;
+namespace fs = std::filesystem;
+
+namespace {
+
+class MeshLoading : public ::testing::Test {
+protected:
+    fs::path dir;
+
+    void SetUp() override {
+        dir = fs::temp_directory_path() /
+              ("shadowscope_meshio_" + std::to_string(::getpid()) + "_" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir);
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+
+    std::string write(const std::string& name, const std::string& bytes) const {
+        const fs::path p = dir / name;
+        std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        return p.string();
+    }
+
+    /// loadModel must throw a one-line runtime_error naming the file (and `needle`, if given).
+    static void expectRejected(const std::string& path, const std::string& needle = {}) {
+        try {
+            (void)loadModel(path);
+            ADD_FAILURE() << path << " was accepted";
+        } catch (const std::runtime_error& e) {
+            const std::string msg = e.what();
+            EXPECT_NE(msg.find(fs::path(path).filename().string()), std::string::npos) << msg;
+            EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+            if (!needle.empty()) {
+                EXPECT_NE(msg.find(needle), std::string::npos) << msg;
+            }
+        }
+    }
+};
+
+void put32(std::string& s, uint32_t v) {
+    for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
+}
+void putFloat(std::string& s, float f) {
+    uint32_t v;
+    std::memcpy(&v, &f, 4);
+    put32(s, v);
+}
+
+using Triangle = std::array<glm::vec3, 3>;
+
+/// Tetrahedron, outward winding.
+std::vector<Triangle> tetra() {
+    const glm::vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), d(0, 0, 1);
+    return {{a, c, b}, {a, b, d}, {a, d, c}, {b, c, d}};
+}
+
+std::string binaryStl(const std::vector<Triangle>& tris, uint32_t claimed) {
+    std::string s(80, ' ');
+    std::memcpy(s.data(), "binary stl from shadowscope tests", 33);
+    put32(s, claimed);
+    for (const Triangle& t : tris) {
+        for (int k = 0; k < 3; ++k) putFloat(s, 0.f);
+        for (const glm::vec3& p : t)
+            for (int k = 0; k < 3; ++k) putFloat(s, p[k]);
+        s += std::string(2, '\0');
+    }
+    return s;
+}
+std::string binaryStl(const std::vector<Triangle>& tris) { return binaryStl(tris, static_cast<uint32_t>(tris.size())); }
+
+std::string asciiStl(const std::vector<Triangle>& tris) {
+    std::string s = "solid tetra\n";
+    for (const Triangle& t : tris) {
+        s += "  facet normal 0 0 0\n    outer loop\n";
+        for (const glm::vec3& p : t)
+            s += "      vertex " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+        s += "    endloop\n  endfacet\n";
+    }
+    return s + "endsolid tetra\n";
+}
+
+const char* kCubeObj = "# unit cube, quads\n"
+                       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                       "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n";
+
+const char* kCubeOff = "OFF\n8 6 12\n"
+                       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                       "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 3 7 6 2\n4 0 4 7 3\n4 1 2 6 5\n";
+
+const char* kTetraPly = "ply\nformat ascii 1.0\ncomment tetra\nelement vertex 4\nproperty float x\n"
+                        "property float y\nproperty float z\nelement face 4\n"
+                        "property list uchar int vertex_indices\nend_header\n"
+                        "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+std::string binaryPlyHeader(uint32_t vertices, uint32_t faces, const char* countType = "uchar") {
+    return "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(vertices) +
+           "\nproperty float x\nproperty float y\nproperty float z\nelement face " + std::to_string(faces) +
+           "\nproperty list " + countType + " int vertex_indices\nend_header\n";
+}
+
+std::string binaryTetraPly(float firstX = 0.f) {
+    std::string s = binaryPlyHeader(4, 4);
+    const float v[4][3] = {{firstX, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (const auto& p : v)
+        for (float f : p) putFloat(s, f);
+    const uint32_t f[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    for (const auto& t : f) {
+        s.push_back(3);
+        for (uint32_t i : t) put32(s, i);
+    }
+    return s;
+}
+
+void expectClosedTetra(const LoadedModel& m) {
+    ASSERT_EQ(m.meshes.size(), 1u);
+    const Mesh& mesh = m.meshes[0];
+    EXPECT_EQ(mesh.triangleCount(), 4u);
+    EXPECT_EQ(mesh.positions.size(), 12u); // every edge sharper than 30°: split per face
+    EXPECT_EQ(mesh.normals.size(), mesh.positions.size());
+    EXPECT_TRUE(mesh.twoSided);
+    EXPECT_FALSE(mesh.chunks.empty());
+    EXPECT_EQ(m.report.outputFaces, 4u);
+}
+
+} // namespace
+
+TEST_F(MeshLoading, AsciiStl) {
+    const LoadedModel m = loadModel(write("tetra.stl", asciiStl(tetra())));
+    EXPECT_EQ(m.format, "stl");
+    expectClosedTetra(m);
+    EXPECT_EQ(m.meshes[0].name, "tetra");
+}
+
+TEST_F(MeshLoading, BinaryStl) {
+    const LoadedModel m = loadModel(write("tetra.stl", binaryStl(tetra())));
+    expectClosedTetra(m);
+}
+
+TEST_F(MeshLoading, ExtensionIsCaseInsensitive) {
+    expectClosedTetra(loadModel(write("TETRA.STL", binaryStl(tetra()))));
+    EXPECT_TRUE(isModelFile("a/b/PART.Obj"));
+    EXPECT_TRUE(isModelFile("x.glb"));
+    EXPECT_FALSE(isModelFile("x.step"));
+    EXPECT_FALSE(isModelFile("obj"));
+}
+
+TEST_F(MeshLoading, ObjQuadsAreTriangulated) {
+    const LoadedModel m = loadModel(write("cube.obj", kCubeObj));
+    EXPECT_EQ(m.format, "obj");
+    ASSERT_EQ(m.meshes.size(), 1u);
+    EXPECT_EQ(m.meshes[0].triangleCount(), 12u);
+    EXPECT_EQ(m.meshes[0].positions.size(), 24u);
+}
+
+TEST_F(MeshLoading, ObjNegativeIndices) {
+    const LoadedModel m = loadModel(write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n"));
+    EXPECT_EQ(m.meshes[0].triangleCount(), 1u);
+}
+
+TEST_F(MeshLoading, OffQuads) {
+    const LoadedModel m = loadModel(write("cube.off", kCubeOff));
+    EXPECT_EQ(m.format, "off");
+    EXPECT_EQ(m.meshes[0].triangleCount(), 12u);
+}
+
+TEST_F(MeshLoading, AsciiPly) {
+    const LoadedModel m = loadModel(write("tetra.ply", kTetraPly));
+    EXPECT_EQ(m.format, "ply");
+    expectClosedTetra(m);
+}
+
+TEST_F(MeshLoading, BinaryPly) { expectClosedTetra(loadModel(write("tetra.ply", binaryTetraPly()))); }
+
+TEST_F(MeshLoading, ProgressReportsEveryStage) {
+    std::vector<std::string> stages;
+    (void)loadModel(write("tetra.stl", binaryStl(tetra())), {},
+                    [&](float f, std::string_view stage) {
+                        EXPECT_GE(f, 0.f);
+                        EXPECT_LE(f, 1.f);
+                        if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
+                    });
+    EXPECT_EQ(stages, (std::vector<std::string>{"reading", "cleaning", "chunking"}));
+}
+
+TEST_F(MeshLoading, RoundTripEveryFormat) {
+    MeshBuilder mb("parts", glm::vec3(1.f));
+    mb.addBox(glm::vec3(0.f), glm::vec3(1.f, 2.f, 3.f));
+    mb.addCylinder(glm::vec3(5, 0, 0), glm::vec3(5, 4, 0), 1.f, 16);
+    const Mesh source = mb.build();
+    for (const char* ext : {"obj", "stl", "off", "ply"}) {
+        SCOPED_TRACE(ext);
+        const std::string path = (dir / (std::string("parts.") + ext)).string();
+        saveMesh(path, source);
+        const LoadedModel m = loadModel(path);
+        ASSERT_EQ(m.meshes.size(), 1u);
+        EXPECT_EQ(m.meshes[0].triangleCount(), source.triangleCount());
+        EXPECT_EQ(m.format, ext);
+        Aabb a, b;
+        for (const glm::vec3& p : source.positions) a.add(p);
+        for (const glm::vec3& p : m.meshes[0].positions) b.add(p);
+        EXPECT_NEAR(glm::length(a.lo - b.lo), 0.f, 1e-5f);
+        EXPECT_NEAR(glm::length(a.hi - b.hi), 0.f, 1e-5f);
+    }
+}
+
+TEST_F(MeshLoading, SaveNonManifoldKeepsEveryTriangle) {
+    // Three triangles on one edge: a halfedge mesh refuses the third; saveMesh must not lose it.
+    Mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+    m.indices = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+    const std::string path = (dir / "fin.obj").string();
+    saveMesh(path, m);
+    EXPECT_EQ(loadModel(path).meshes[0].triangleCount(), 3u);
+}
+
+TEST_F(MeshLoading, SaveRejectsUnknownExtension) {
+    Mesh m;
+    try {
+        saveMesh((dir / "x.step").string(), m);
+        ADD_FAILURE();
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("x.step"), std::string::npos);
+    }
+}
+
+// ---- hostile and broken input ------------------------------------------------------------------
+
+TEST_F(MeshLoading, MissingFile) { expectRejected((dir / "nope.stl").string(), "not found"); }
+
+TEST_F(MeshLoading, DirectoryIsNotAFile) {
+    fs::create_directories(dir / "folder.obj");
+    expectRejected((dir / "folder.obj").string());
+}
+
+TEST_F(MeshLoading, EmptyFiles) {
+    for (const char* name : {"e.obj", "e.stl", "e.off", "e.ply"}) expectRejected(write(name, ""), "empty");
+}
+
+TEST_F(MeshLoading, UnknownExtensionListsSupported) {
+    expectRejected(write("part.step", "ISO-10303-21;"), ".obj, .stl, .off, .ply, .gltf, .glb");
+    expectRejected(write("noext", "x"), ".stl");
+}
+
+TEST_F(MeshLoading, BinaryStlCountDisagreesWithSize) {
+    expectRejected(write("short.stl", binaryStl(tetra(), 5)), "5 triangles");
+    std::string truncated = binaryStl(tetra());
+    truncated.resize(truncated.size() - 20);
+    expectRejected(write("truncated.stl", truncated), "truncated");
+    expectRejected(write("tiny.stl", std::string(40, '\x01')), "too small");
+}
+
+TEST_F(MeshLoading, AbsurdBinaryStlCountFailsAtOnce) {
+    // The count field is 32 bits: 0xFFFFFFFF is the largest claim (4.3e9 triangles, 214 GB).
+    const auto start = std::chrono::steady_clock::now();
+    expectRejected(write("huge.stl", binaryStl(tetra(), 0xFFFFFFFFu)), "4294967295 triangles");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+}
+
+TEST_F(MeshLoading, BinaryStlWithSolidHeaderAndWrongCount) {
+    std::string s = binaryStl(tetra(), 99);
+    std::memcpy(s.data(), "solid but binary", 16);
+    expectRejected(write("solid.stl", s), "99 triangles");
+}
+
+TEST_F(MeshLoading, AsciiStlWithoutFacetsHasNoTriangles) {
+    expectRejected(write("nofacets.stl", "solid x\nendsolid x\n"), "no triangles");
+}
+
+TEST_F(MeshLoading, NonFiniteStlVerticesAreCleaned) {
+    std::vector<Triangle> tris = tetra();
+    tris[1][1].x = std::numeric_limits<float>::quiet_NaN();
+    const LoadedModel m = loadModel(write("nan.stl", binaryStl(tris)));
+    EXPECT_EQ(m.meshes[0].triangleCount(), 3u);
+    EXPECT_EQ(m.report.nonFiniteFaces, 1u);
+    for (const glm::vec3& p : m.meshes[0].positions) EXPECT_TRUE(std::isfinite(p.x));
+}
+
+TEST_F(MeshLoading, AllNonFiniteLeavesNothing) {
+    std::vector<Triangle> tris = tetra();
+    for (Triangle& t : tris) t[0].y = std::numeric_limits<float>::infinity();
+    expectRejected(write("inf.stl", binaryStl(tris)), "no triangles left after cleanup");
+}
+
+TEST_F(MeshLoading, NonFinitePlyVertexIsCleaned) {
+    const LoadedModel m = loadModel(write("nan.ply", binaryTetraPly(std::numeric_limits<float>::quiet_NaN())));
+    EXPECT_EQ(m.report.nonFiniteVertices, 1u);
+    EXPECT_EQ(m.meshes[0].triangleCount(), 1u); // vertex 0 is in three of the four faces
+}
+
+TEST_F(MeshLoading, ObjIndexOutOfRange) {
+    expectRejected(write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"), "vertex");
+    expectRejected(write("neg.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -7\n"), "vertex");
+}
+
+TEST_F(MeshLoading, ObjWithoutFaces) { expectRejected(write("points.obj", "v 0 0 0\nv 1 0 0\n"), "no triangles"); }
+
+TEST_F(MeshLoading, GarbageFiles) {
+    std::string noise;
+    for (int i = 0; i < 4000; ++i) noise.push_back(static_cast<char>((i * 7919 + 13) % 251));
+    for (const char* name : {"g.stl", "g.off", "g.ply"}) expectRejected(write(name, noise));
+    // OBJ has no header: noise parses as nothing.
+    expectRejected(write("g.obj", noise));
+}
+
+TEST_F(MeshLoading, OffCountsTooLargeForFile) {
+    expectRejected(write("big.off", "OFF\n1000000 2000000 0\n0 0 0\n"), "cannot fit");
+    expectRejected(write("cap.off", "OFF\n4000000000 4000000000 0\n"), "limit");
+}
+
+TEST_F(MeshLoading, OffTruncated) {
+    std::string s = kCubeOff;
+    s.resize(s.find("4 0 1 5 4"));
+    expectRejected(write("cut.off", s), "truncated");
+}
+
+TEST_F(MeshLoading, OffIndexOutOfRange) {
+    expectRejected(write("idx.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"), "references vertex 3");
+}
+
+TEST_F(MeshLoading, OffHugeValence) {
+    expectRejected(write("valence.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n"));
+}
+
+TEST_F(MeshLoading, OffBadHeader) {
+    expectRejected(write("hdr.off", "FOO\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "header");
+    expectRejected(write("bin.off", "OFF BINARY\n"), "binary");
+}
+
+TEST_F(MeshLoading, PlyCountsTooLargeForFile) {
+    expectRejected(write("big.ply", binaryPlyHeader(100000000, 1)), "limit");
+    expectRejected(write("fit.ply", binaryPlyHeader(1000, 1000) + std::string(100, '\0')), "cannot fit");
+}
+
+TEST_F(MeshLoading, PlyIndexOutOfRange) {
+    std::string s = kTetraPly;
+    s.replace(s.rfind("3 1 2 3"), 7, "3 1 2 4");
+    expectRejected(write("idx.ply", s), "references vertex 4");
+    std::string b = binaryTetraPly();
+    b[b.size() - 4] = 9; // last index of the last face
+    expectRejected(write("idxb.ply", b), "references vertex 9");
+}
+
+TEST_F(MeshLoading, PlyHugeListCount) {
+    std::string s = binaryPlyHeader(3, 1, "int");
+    for (int i = 0; i < 9; ++i) putFloat(s, float(i % 2));
+    put32(s, 0x7fffffffu);
+    put32(s, 0);
+    expectRejected(write("list.ply", s), "list");
+}
+
+TEST_F(MeshLoading, PlyTruncatedAndBadHeader) {
+    std::string b = binaryTetraPly();
+    b.resize(b.size() - 6);
+    expectRejected(write("cut.ply", b), "truncated");
+    expectRejected(write("nohdr.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"), "end_header");
+    expectRejected(write("magic.ply", "plx\n"), "magic");
+}
+
+TEST_F(MeshLoading, OffStrayValueWouldShiftFaces) {
+    // OpenMesh would read the stray 4000000000 as the next face's vertex count.
+    expectRejected(write("stray.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 4000000000\n3 0 2 1\n"), "COFF");
+    expectRejected(write("counts.off", "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "counts");
+}
+
+TEST_F(MeshLoading, CoffFaceColoursAccepted) {
+    const LoadedModel m = loadModel(write("c.off", "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 255 0 0 255\n"
+                                                   "0 1 0 255 0 0 255\n3 0 1 2 0 255 0\n"));
+    EXPECT_EQ(m.meshes[0].triangleCount(), 1u);
+}
+
+TEST_F(MeshLoading, PlyAsciiStrayValue) {
+    std::string s = kTetraPly;
+    s.replace(s.find("3 0 1 3"), 7, "3 0 1 3 9");
+    expectRejected(write("stray.ply", s), "more values");
+}
+
+TEST_F(MeshLoading, CorruptedFixturesNeverCrashOrHang) {
+    // Every prefix length (sampled) and single-byte corruptions of each good fixture either
+    // loads or throws std::runtime_error, and quickly.
+    const std::vector<std::pair<std::string, std::string>> fixtures = {
+        {"a.stl", asciiStl(tetra())}, {"b.stl", binaryStl(tetra())}, {"c.obj", kCubeObj},
+        {"d.off", kCubeOff},          {"e.ply", kTetraPly},          {"f.ply", binaryTetraPly()}};
+    const auto start = std::chrono::steady_clock::now();
+    int loaded = 0, rejected = 0;
+    auto attempt = [&](const std::string& name, const std::string& bytes) {
+        try {
+            (void)loadModel(write(name, bytes));
+            ++loaded;
+        } catch (const std::runtime_error& e) {
+            ++rejected;
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+        }
+    };
+    for (const auto& [name, bytes] : fixtures) {
+        for (size_t len = 0; len < bytes.size(); len += 1 + bytes.size() / 40) attempt(name, bytes.substr(0, len));
+        for (size_t i = 0; i < bytes.size(); i += 1 + bytes.size() / 60) {
+            for (const char c : {'\0', '\xff', '9', '-', '\n'}) {
+                std::string b = bytes;
+                b[i] = c;
+                attempt(name, b);
+            }
+        }
+    }
+    EXPECT_GT(loaded, 0);
+    EXPECT_GT(rejected, 0);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+}
+
+TEST_F(MeshLoading, HeaderWithoutTrailingNewline) {
+    expectRejected(write("end.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                                    "property float y\nproperty float z\nend_header"),
+                   "cannot fit");
+    expectRejected(write("end.off", "OFF\n0 0 0"), "no triangles");
+}
