@@ -405,11 +405,24 @@ void validatePly(const std::string& path, uint64_t size) {
     std::vector<PlyElement> elements;
     bool ended = false;
     while (!ended && lines.nextLine(line)) {
+        for (const char c : line)
+            if ((c < 32 || c > 126) && c != '\t' && c != '\r') fail(path, "PLY header is not plain text (corrupt file)");
         tokenize(line, tok);
         if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
         if (tok[0] == "end_header") { ended = true; break; }
-        if (tok[0] == "format" && tok.size() >= 2) format = tok[1];
+        if (tok[0] == "format") {
+            // OpenMesh's header reader loops for ever on a version it cannot parse: accept only
+            // the one version PLY has, exactly.
+            if (tok.size() != 3 || tok[2] != "1.0" ||
+                (tok[1] != "ascii" && tok[1] != "binary_little_endian" && tok[1] != "binary_big_endian"))
+                fail(path, "bad PLY format line (expected 'format ascii|binary_little_endian|binary_big_endian 1.0')");
+            format = tok[1];
+        }
         else if (tok[0] == "element" && tok.size() >= 3) {
+            // OpenMesh's PLY header reader misbehaves (copies without end) on elements it does not
+            // know; CAD meshes need only vertices and faces.
+            if (tok.size() != 3 || (tok[1] != "vertex" && tok[1] != "face"))
+                fail(path, "unsupported PLY element line (only 'element vertex N' and 'element face N')");
             int64_t n = 0;
             if (!parseInt(tok[2], n) || n < 0) fail(path, "bad element count in PLY header");
             elements.push_back({std::string(tok[1]), static_cast<uint64_t>(n), {}});
