@@ -1,3 +1,4 @@
+#include "geometry/json_file.h"
 #include "preset.h"
 
 #include <algorithm>
@@ -153,58 +154,6 @@ std::runtime_error fileError(const std::string& path, const std::string& problem
     return std::runtime_error("preset " + path + ": " + problem);
 }
 
-/// The whole file, refusing anything over kMaxPresetBytes without reading more than that (so a
-/// FIFO or /dev/zero cannot exhaust memory).
-std::string readBounded(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) throw fileError(path, "no such file");
-    if (fs::is_directory(status)) throw fileError(path, "is a directory");
-    if (fs::is_regular_file(status)) {
-        const auto size = fs::file_size(path, ec);
-        if (!ec && size > kMaxPresetBytes)
-            throw fileError(path, "larger than 1 MiB (" + std::to_string(size) + " bytes)");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw fileError(path, std::string("cannot be opened (") + std::strerror(errno) + ")");
-    std::string text(kMaxPresetBytes + 1, '\0');
-    in.read(text.data(), std::streamsize(text.size()));
-    if (in.bad()) throw fileError(path, "cannot be read");
-    text.resize(size_t(in.gcount()));
-    if (text.size() > kMaxPresetBytes) throw fileError(path, "larger than 1 MiB");
-    return text;
-}
-
-/// 1-based line and column of a 1-based byte position, as in nlohmann's parse_error::byte.
-std::string lineAndColumn(const std::string& text, std::size_t byte) {
-    const std::size_t before = std::min(byte > 0 ? byte - 1 : 0, text.size());
-    std::size_t line = 1, lineStart = 0;
-    for (std::size_t i = 0; i < before; ++i)
-        if (text[i] == '\n') ++line, lineStart = i + 1;
-    return "line " + std::to_string(line) + ", column " + std::to_string(before - lineStart + 1);
-}
-
-json parseBounded(const std::string& path, const std::string& text) {
-    // Refuse deep nesting while parsing, so a hostile file never builds a deep tree.
-    const json::parser_callback_t limitDepth = [&path](int depth, json::parse_event_t event, json&) {
-        const bool opens = event == json::parse_event_t::object_start || event == json::parse_event_t::array_start;
-        if (opens && depth + 1 > kMaxPresetDepth)
-            throw fileError(path, "nested deeper than " + std::to_string(kMaxPresetDepth) + " levels");
-        return true;
-    };
-    try {
-        return json::parse(text, limitDepth);
-    } catch (const json::parse_error& e) {
-        throw fileError(path, "not valid JSON (" + lineAndColumn(text, e.byte) + ")");
-    } catch (const json::exception& e) {
-        // e.g. out_of_range for 1e999 (JSON has no infinity): keep nlohmann's reason, minus its "[json.exception...] " tag
-        const std::string what = e.what();
-        const auto tag = what.find("] ");
-        throw fileError(path, "not valid JSON (" + (tag == std::string::npos ? what : what.substr(tag + 2)) + ")");
-    }
-}
-
 } // namespace
 
 json settingsToJson(const ShadowSettings& s) { return toJson(s, json::object()); }
@@ -218,9 +167,7 @@ ShadowSettings settingsFromJson(const json& j, ShadowSettings base) {
 }
 
 ShadowSettings loadPreset(const std::string& path, ShadowSettings base) {
-    const std::string text = readBounded(path);
-    if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw fileError(path, "file is empty");
-    const json j = parseBounded(path, text);
+    const json j = geometry::readJsonFile(path, "preset " + path, kMaxPresetBytes, kMaxPresetDepth);
     if (!j.is_object()) throw fileError(path, std::string("expected a JSON object at the top level, got ") + j.type_name());
     try {
         return applyTopLevel(j, std::move(base));
