@@ -1,8 +1,8 @@
 #include "render_command.h"
 
 #include "headless_frame.h"
-#include "inspection.h"
-#include "view_images.h"
+#include "renderer/inspection.h"
+#include "renderer/view_images.h"
 #include "geometry/ground_truth.h"
 #include "renderer/heatmap.h"
 
@@ -20,6 +20,14 @@
 #include <stdexcept>
 
 namespace app {
+
+const std::vector<std::string>& viewNames() {
+    static const std::vector<std::string> names = {"eye", "light", "light_unwarped", "aliasing", "truth", "splits", "texels"};
+    return names;
+}
+
+using renderer::Inspection;
+using renderer::inspect;
 
 nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     const auto& stats = f.renderer->stats();

@@ -12,6 +12,9 @@ namespace CLI { class App; }
 namespace app {
 struct HeadlessFrame;
 
+/// View names `render --views` accepts.
+[[nodiscard]] const std::vector<std::string>& viewNames();
+
 /// What `render` writes besides metrics.json.
 struct ExportOptions {
     std::vector<std::string> views{"eye", "light"}; // names from viewNames()

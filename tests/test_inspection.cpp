@@ -3,7 +3,7 @@
 #include "render_test_util.h"
 
 #include "app/headless_frame.h"
-#include "app/inspection.h"
+#include "renderer/inspection.h"
 #include "geometry/analytic_error.h"
 #include "geometry/builtin_scenes.h"
 #include "geometry/ground_truth.h"
@@ -81,7 +81,7 @@ TEST(Inspection, LispsmBalancesNearAndFarErrorUniformDoesNot) {
 }
 
 namespace {
-app::Inspection planeWithTruth(float bias) {
+renderer::Inspection planeWithTruth(float bias) {
     app::RenderOptions o;
     o.scene = "plane";
     o.backend = "osmesa";
@@ -91,12 +91,12 @@ app::Inspection planeWithTruth(float bias) {
     o.settings.bias.constant = bias;
     const app::HeadlessFrame f = app::renderHeadless(o, 0);
     const GroundTruth truth(f.scene);
-    return app::inspect(*f.renderer, f.plan, &truth);
+    return renderer::inspect(*f.renderer, f.plan, &truth);
 }
 } // namespace
 
 TEST(Inspection, TruthAgreesOnPoleShadowsAndCatchesNegativeBias) {
-    const app::Inspection good = planeWithTruth(0.05f);
+    const renderer::Inspection good = planeWithTruth(0.05f);
     ASSERT_TRUE(good.truth);
     EXPECT_GT(good.truth->count, 20000u);
     EXPECT_LT(good.truth->falseShadow + good.truth->falseLit, 0.005);
@@ -104,7 +104,7 @@ TEST(Inspection, TruthAgreesOnPoleShadowsAndCatchesNegativeBias) {
     size_t shadowed = 0;
     for (size_t i = 0; i < good.occluded->size(); ++i) shadowed += good.receiver[i] && (*good.occluded)[i];
     EXPECT_GT(shadowed, 100u);
-    const app::Inspection bad = planeWithTruth(-0.5f);
+    const renderer::Inspection bad = planeWithTruth(-0.5f);
     EXPECT_GT(bad.truth->falseShadow, 0.2);
 }
 
@@ -117,7 +117,7 @@ TEST(Inspection, TexelUtilizationFallsWithResolution) {
     for (int res : {128, 512, 2048}) {
         o.settings.resolution = res;
         const app::HeadlessFrame f = app::renderHeadless(o, 0);
-        const app::Inspection in = app::inspect(*f.renderer, f.plan, nullptr);
+        const renderer::Inspection in = renderer::inspect(*f.renderer, f.plan, nullptr);
         ASSERT_EQ(in.utilization.size(), 1u);
         EXPECT_GT(in.utilization[0], 0.0);
         EXPECT_LT(in.utilization[0], previous) << res;

@@ -5,12 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace app {
-
-const std::vector<std::string>& viewNames() {
-    static const std::vector<std::string> names = {"eye", "light", "light_unwarped", "aliasing", "truth", "splits", "texels"};
-    return names;
-}
+namespace renderer {
 
 namespace {
 void blend(uint8_t* px, const glm::vec3& c, float t) {
@@ -18,20 +13,20 @@ void blend(uint8_t* px, const glm::vec3& c, float t) {
 }
 } // namespace
 
-renderer::Image splitsView(const renderer::Image& eye, const Inspection& in, const geometry::ShadowPlan& plan) {
-    renderer::Image img = eye;
+Image splitsView(const Image& eye, const Inspection& in, const geometry::ShadowPlan& plan) {
+    Image img = eye;
     for (size_t i = 0; i < in.aux.size(); ++i)
-        if (in.aux[i].z >= 0.f) blend(&img.rgba[4 * i], renderer::splitColour(int(in.aux[i].z)), 0.45f);
+        if (in.aux[i].z >= 0.f) blend(&img.rgba[4 * i], splitColour(int(in.aux[i].z)), 0.45f);
     std::vector<glm::vec2> ranges;
     for (const auto& s : plan.splits) ranges.emplace_back(s.near, s.far);
-    const renderer::Legend legend = renderer::splitLegend(ranges);
-    renderer::drawLegend(img, legend);
+    const Legend legend = splitLegend(ranges);
+    drawLegend(img, legend);
     return img;
 }
 
-renderer::Image texelsView(const renderer::Image& eye, const Inspection& in, int every) {
+Image texelsView(const Image& eye, const Inspection& in, int every) {
     if (every < 1) throw std::invalid_argument("texel grid spacing must be at least 1");
-    renderer::Image img = eye;
+    Image img = eye;
     const int w = in.width, h = in.height;
     const auto cell = [&](int x, int y) {
         const glm::vec4& a = in.aux[size_t(y) * w + x];
@@ -48,7 +43,7 @@ renderer::Image texelsView(const renderer::Image& eye, const Inspection& in, int
     return img;
 }
 
-void tintSampledTexels(renderer::Image& light, const Inspection& in, int split, int res) {
+void tintSampledTexels(Image& light, const Inspection& in, int split, int res) {
     const std::vector<uint8_t> used = geometry::texelUsageMask(in.aux, in.receiver, split, res);
     if (used.empty()) return;
     // Each light-view pixel covers res/size texels; tint it when any of them is used.
@@ -63,7 +58,7 @@ void tintSampledTexels(renderer::Image& light, const Inspection& in, int split, 
 
 namespace {
 /// eye·weight + heat·(1 − weight) per pixel.
-renderer::Image blendOver(renderer::Image heat, const renderer::Image& eye, float weight) {
+Image blendOver(Image heat, const Image& eye, float weight) {
     if (weight <= 0.f) return heat;
     for (size_t i = 0; i + 3 < heat.rgba.size() && i + 3 < eye.rgba.size(); i += 4)
         for (int k = 0; k < 3; ++k)
@@ -72,18 +67,18 @@ renderer::Image blendOver(renderer::Image heat, const renderer::Image& eye, floa
 }
 } // namespace
 
-renderer::Image aliasingView(const Inspection& in, const renderer::Image& eye, float blend) {
-    renderer::Image img = blendOver(renderer::aliasingHeatmap(in.m, in.receiver, in.width, in.height), eye, blend);
-    renderer::drawLegend(img, renderer::aliasingLegend());
+Image aliasingView(const Inspection& in, const Image& eye, float blend) {
+    Image img = blendOver(aliasingHeatmap(in.m, in.receiver, in.width, in.height), eye, blend);
+    drawLegend(img, aliasingLegend());
     return img;
 }
 
-renderer::Image truthView(const Inspection& in, const renderer::Image& eye, float blend) {
+Image truthView(const Inspection& in, const Image& eye, float blend) {
     if (!in.occluded) throw std::invalid_argument("the truth view needs --truth");
-    renderer::Image img =
-        blendOver(renderer::truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height), eye, blend);
-    renderer::drawLegend(img, renderer::truthLegend());
+    Image img =
+        blendOver(truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height), eye, blend);
+    drawLegend(img, truthLegend());
     return img;
 }
 
-} // namespace app
+} // namespace renderer

@@ -13,7 +13,7 @@
 
 namespace geometry { class GroundTruth; }
 
-namespace app {
+namespace renderer {
 
 struct Inspection {
     int width = 0, height = 0;
@@ -31,10 +31,10 @@ struct Inspection {
 };
 
 /// Reads back the last frame and computes the statistics; `truth` adds the ground-truth pass.
-[[nodiscard]] Inspection inspect(const renderer::Renderer& r, const geometry::ShadowPlan& plan,
+[[nodiscard]] Inspection inspect(const Renderer& r, const geometry::ShadowPlan& plan,
                                  const geometry::GroundTruth* truth);
 
 /// metrics.json fields: aliasing{mean,p50,p95,max,undersampled}, truth{false_shadow,false_lit,mean_abs}.
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in);
 
-} // namespace app
+} // namespace renderer

@@ -5,23 +5,20 @@
 #include <string>
 #include <vector>
 
-namespace app {
-
-/// View names `render --views` accepts.
-[[nodiscard]] const std::vector<std::string>& viewNames();
+namespace renderer {
 
 /// The eye image tinted by the split each pixel uses, with a legend of the splits' ranges.
-[[nodiscard]] renderer::Image splitsView(const renderer::Image& eye, const Inspection& in,
+[[nodiscard]] Image splitsView(const Image& eye, const Inspection& in,
                                          const geometry::ShadowPlan& plan);
 /// The shadow map's texel grid (every `every` texels) drawn over the receivers of the eye image.
-[[nodiscard]] renderer::Image texelsView(const renderer::Image& eye, const Inspection& in, int every = 1);
+[[nodiscard]] Image texelsView(const Image& eye, const Inspection& in, int every = 1);
 /// log2 m heatmap with a legend (DESIGN §4); `blend` > 0 mixes the eye image in (0 heatmap alone).
-[[nodiscard]] renderer::Image aliasingView(const Inspection& in, const renderer::Image& eye, float blend = 0.f);
+[[nodiscard]] Image aliasingView(const Inspection& in, const Image& eye, float blend = 0.f);
 /// False shadow red, false lit blue, over the grey scene; needs in.occluded.
-[[nodiscard]] renderer::Image truthView(const Inspection& in, const renderer::Image& eye, float blend = 0.f);
+[[nodiscard]] Image truthView(const Inspection& in, const Image& eye, float blend = 0.f);
 
 /// Tints, in a light-view image of split `split` (resolution `res` texels), every texel that some
 /// visible receiver pixel samples (DESIGN §4 texel utilization, shown).
-void tintSampledTexels(renderer::Image& light, const Inspection& in, int split, int res);
+void tintSampledTexels(Image& light, const Inspection& in, int split, int res);
 
-} // namespace app
+} // namespace renderer

@@ -4,9 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace app {
+namespace renderer {
 
-Inspection inspect(const renderer::Renderer& r, const geometry::ShadowPlan& plan, const geometry::GroundTruth* truth) {
+Inspection inspect(const Renderer& r, const geometry::ShadowPlan& plan, const geometry::GroundTruth* truth) {
     Inspection in;
     const auto aux = r.readAux();
     const auto positions = r.readPositions();
@@ -50,4 +50,4 @@ void addInspectionMetrics(nlohmann::json& j, const Inspection& in) {
         j["splits"][s]["utilization"] = in.utilization[s];
 }
 
-} // namespace app
+} // namespace renderer
