@@ -1,6 +1,6 @@
 #include "render_options.h"
 
-#include "preset.h"
+#include "geometry/preset.h"
 
 #include "geometry/scene_file.h"
 
@@ -89,7 +89,7 @@ struct SettingSources {
 
     void rebuild() const {
         geometry::ShadowSettings s = base;
-        for (const auto& path : presets->results()) s = loadPreset(path, s);
+        for (const auto& path : presets->results()) s = geometry::loadPreset(path, s);
         if (shadowRes->count() > 0)
             geometry::applySetting(s, "shadow_map.resolution", std::to_string(shadowRes->as<int>()));
         for (const auto& a : assignments->results()) geometry::applyAssignment(s, a);

@@ -1,7 +1,7 @@
 // JSON presets: settingsToJson/settingsFromJson round-trip every declared key, the shipped presets
 // hold what they promise, bad files give one-line errors, and --preset / --set precedence does not
 // depend on the order on the command line.
-#include "app/preset.h"
+#include "geometry/preset.h"
 #include "app/render_options.h"
 
 #include <CLI/CLI.hpp>
@@ -53,11 +53,11 @@ std::string errorOf(const std::function<void()>& f) {
 }
 
 std::string loadError(const std::string& path) {
-    return errorOf([&] { (void)app::loadPreset(path); });
+    return errorOf([&] { (void)geometry::loadPreset(path); });
 }
 
 std::string fromJsonError(const json& j) {
-    return errorOf([&] { (void)app::settingsFromJson(j); });
+    return errorOf([&] { (void)geometry::settingsFromJson(j); });
 }
 
 /// The JSON leaf of a dotted key, or nullptr.
@@ -102,7 +102,7 @@ void parseArgs(CLI::App& cli, std::vector<std::string> args) {
 
 TEST(Presets, EveryKeyIsPresentWithItsJsonType) {
     const ShadowSettings s = extremeSettings();
-    const json j = app::settingsToJson(s);
+    const json j = geometry::settingsToJson(s);
     for (const auto& info : geometry::settingsDeclaration()) {
         const json* v = leaf(j, info.key);
         ASSERT_NE(v, nullptr) << info.key;
@@ -114,7 +114,7 @@ TEST(Presets, EveryKeyIsPresentWithItsJsonType) {
         }
     }
     EXPECT_EQ(j.at("filter").at("eye_blur").at("iterations"), 8);
-    EXPECT_EQ(app::settingsToJson(ShadowSettings{}).at("bias").at("constant").dump(), "0.05") << "floats print short";
+    EXPECT_EQ(geometry::settingsToJson(ShadowSettings{}).at("bias").at("constant").dump(), "0.05") << "floats print short";
 }
 
 TEST(Presets, EveryKeyRoundTrips) {
@@ -122,23 +122,23 @@ TEST(Presets, EveryKeyRoundTrips) {
     for (const ShadowSettings& s : {extremeSettings(), awkwardSettings()}) {
         for (const auto& info : geometry::settingsDeclaration())
             EXPECT_NE(info.get(s), info.get(defaults)) << info.key << " should differ from its default";
-        expectSameSettings(app::settingsFromJson(app::settingsToJson(s)), s);
-        expectSameSettings(app::settingsFromJson(json::parse(app::settingsToJson(s).dump())), s);
+        expectSameSettings(geometry::settingsFromJson(geometry::settingsToJson(s)), s);
+        expectSameSettings(geometry::settingsFromJson(json::parse(geometry::settingsToJson(s).dump())), s);
         const std::string path = (testDir() / "roundtrip.json").string();
-        app::savePreset(path, s, "round trip");
-        expectSameSettings(app::loadPreset(path), s);
+        geometry::savePreset(path, s, "round trip");
+        expectSameSettings(geometry::loadPreset(path), s);
     }
 }
 
 TEST(Presets, SaveWritesPrettyJsonWithNameFirst) {
     const std::string path = (testDir() / "saved.json").string();
-    app::savePreset(path, ShadowSettings{}, "mine", "what it is");
+    geometry::savePreset(path, ShadowSettings{}, "mine", "what it is");
     std::ifstream in(path, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_EQ(text.rfind("{\n  \"name\": \"mine\",\n  \"description\": \"what it is\",\n  \"shadow_map\"", 0), 0u) << text;
     EXPECT_EQ(text.back(), '\n');
     EXPECT_EQ(json::parse(text).at("name"), "mine");
-    EXPECT_NE(errorOf([] { app::savePreset("/nonexistent-dir/x.json", ShadowSettings{}); }).find("cannot write"),
+    EXPECT_NE(errorOf([] { geometry::savePreset("/nonexistent-dir/x.json", ShadowSettings{}); }).find("cannot write"),
               std::string::npos);
 }
 
@@ -146,29 +146,29 @@ TEST(Presets, MissingKeysKeepTheBase) {
     ShadowSettings base;
     base.splits.count = 5;
     base.bias.constant = 0.3f;
-    const ShadowSettings s = app::settingsFromJson(json::parse(R"({"warp": {"method": "psm"}})"), base);
+    const ShadowSettings s = geometry::settingsFromJson(json::parse(R"({"warp": {"method": "psm"}})"), base);
     EXPECT_EQ(s.warp.method, geometry::WarpMethod::Psm);
     EXPECT_EQ(s.splits.count, 5);
     EXPECT_EQ(s.bias.constant, 0.3f);
-    const ShadowSettings t = app::loadPreset(writeFile("partial.json", R"({"name": "x", "filter": {"eye_blur": {}}})"), base);
+    const ShadowSettings t = geometry::loadPreset(writeFile("partial.json", R"({"name": "x", "filter": {"eye_blur": {}}})"), base);
     expectSameSettings(t, base);
 }
 
 TEST(Presets, ShippedPresetsHoldTheirTechnique) {
     using namespace geometry;
-    const ShadowSettings ssm = app::loadPreset(presetPath("ssm.json"));
+    const ShadowSettings ssm = geometry::loadPreset(presetPath("ssm.json"));
     EXPECT_EQ(ssm.warp.method, WarpMethod::Uniform);
     EXPECT_EQ(ssm.splits.count, 1);
     EXPECT_EQ(ssm.bias.type, BiasType::Constant);
     EXPECT_EQ(ssm.filter.type, FilterType::Hw2x2);
 
-    const ShadowSettings lispsm = app::loadPreset(presetPath("lispsm.json"));
+    const ShadowSettings lispsm = geometry::loadPreset(presetPath("lispsm.json"));
     EXPECT_EQ(lispsm.warp.method, WarpMethod::Lispsm);
     EXPECT_EQ(lispsm.splits.count, 1);
     EXPECT_EQ(lispsm.bias.type, BiasType::Constant);
     EXPECT_EQ(lispsm.filter.type, FilterType::Hw2x2);
 
-    const ShadowSettings pssm = app::loadPreset(presetPath("pssm3.json"));
+    const ShadowSettings pssm = geometry::loadPreset(presetPath("pssm3.json"));
     EXPECT_EQ(pssm.splits.count, 3);
     EXPECT_EQ(pssm.splits.scheme, SplitScheme::Practical);
     EXPECT_EQ(pssm.splits.lambda, 0.5);
@@ -176,7 +176,7 @@ TEST(Presets, ShippedPresetsHoldTheirTechnique) {
     EXPECT_EQ(pssm.bias.type, BiasType::Constant);
     EXPECT_EQ(pssm.filter.type, FilterType::Hw2x2);
 
-    const ShadowSettings paper = app::loadPreset(presetPath("paper.json"));
+    const ShadowSettings paper = geometry::loadPreset(presetPath("paper.json"));
     EXPECT_EQ(paper.bias.type, BiasType::Constant);
     EXPECT_EQ(paper.warp.method, WarpMethod::Glispsm);
     EXPECT_EQ(paper.splits.count, 2);
@@ -194,7 +194,7 @@ TEST(Presets, ShippedPresetsAreWhatSavePresetWrites) {
         ASSERT_TRUE(j.at("name").is_string()) << name;
         ASSERT_TRUE(j.at("description").is_string()) << name;
         const std::string again = (testDir() / name).string();
-        app::savePreset(again, app::loadPreset(presetPath(name)), j.at("name").get<std::string>(),
+        geometry::savePreset(again, geometry::loadPreset(presetPath(name)), j.at("name").get<std::string>(),
                         j.at("description").get<std::string>());
         std::ifstream in2(again, std::ios::binary);
         const std::string text2((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());

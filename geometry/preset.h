@@ -3,7 +3,7 @@
 // splitting each key at '.': "filter.eye_blur.iterations" lives at {"filter": {"eye_blur":
 // {"iterations": N}}}. Values go through geometry::applySetting, so a preset is validated exactly
 // like `--set key=value`. Optional top-level "name" and "description" strings document the file.
-#include "geometry/settings.h"
+#include "settings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace app {
+namespace geometry {
 
 /// Files above this size are refused before parsing.
 inline constexpr std::size_t kMaxPresetBytes = 1u << 20;
@@ -20,22 +20,22 @@ inline constexpr int kMaxPresetDepth = 8;
 
 /// Every declared key as a nested object: ints as integers, floats as numbers, bools as
 /// booleans, choices as their names.
-[[nodiscard]] nlohmann::json settingsToJson(const geometry::ShadowSettings& settings);
+[[nodiscard]] nlohmann::json settingsToJson(const ShadowSettings& settings);
 
 /// `base` with every setting present in `j` applied; missing keys keep base's value. Throws
 /// std::invalid_argument starting with "preset: " and naming the key path for an unknown key, a
 /// value of the wrong JSON type (numbers given as strings included), an out-of-range value, or
 /// nesting deeper than kMaxPresetDepth.
-[[nodiscard]] geometry::ShadowSettings settingsFromJson(const nlohmann::json& j, geometry::ShadowSettings base = {});
+[[nodiscard]] ShadowSettings settingsFromJson(const nlohmann::json& j, ShadowSettings base = {});
 
 /// Reads a preset file over `base`. Throws std::runtime_error (file problems: missing,
 /// unreadable, empty, larger than kMaxPresetBytes, not JSON, not an object) or
 /// std::invalid_argument (bad settings), each with a one-line message starting "preset PATH: ".
-[[nodiscard]] geometry::ShadowSettings loadPreset(const std::string& path, geometry::ShadowSettings base = {});
+[[nodiscard]] ShadowSettings loadPreset(const std::string& path, ShadowSettings base = {});
 
 /// Writes every setting as pretty JSON (2-space indent, trailing newline), keys in declaration
 /// order after the optional name and description. Throws std::runtime_error when it cannot write.
-void savePreset(const std::string& path, const geometry::ShadowSettings& settings, std::string_view name = "",
+void savePreset(const std::string& path, const ShadowSettings& settings, std::string_view name = "",
                 std::string_view description = "");
 
-} // namespace app
+} // namespace geometry

@@ -10,12 +10,10 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace app {
+namespace geometry {
 
 namespace {
 
-using geometry::SettingInfo;
-using geometry::ShadowSettings;
 using Kind = SettingInfo::Kind;
 using json = nlohmann::json;
 
@@ -188,4 +186,4 @@ void savePreset(const std::string& path, const ShadowSettings& s, std::string_vi
     if (!out) throw fileError(path, "cannot write");
 }
 
-} // namespace app
+} // namespace geometry
