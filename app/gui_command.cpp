@@ -1,5 +1,6 @@
 #include "gui_command.h"
 
+#include "dashboard_setup.h"
 #include "render_command.h"
 #include "ui/viewer.h"
 
@@ -19,13 +20,18 @@ int runGuiOrHeadless(const RenderOptions& options) {
         std::cout << "no display: rendering " << options.scene << " headless into " << options.out << "/\n";
         RenderOptions headless = options;
         if (headless.backend == "glfw") headless.backend = "auto";
-        return runRender(headless);
+        ExportOptions exports;
+        exports.views = {"eye", "light"};
+        if (headless.size.width >= 200 && headless.size.height >= 150) exports.views.push_back("dashboard");
+        return runRender(headless, exports);
     }
-    geometry::Scene scene = loadScene(options);
     ui::ViewerOptions v;
-    v.settings = options.settings;
+    if (options.settingsGiven) v.settings = options.settings;
     v.screenshotDir = options.out;
-    return ui::runViewer(std::move(scene), v);
+    v.sceneChoices = sceneChoices();
+    v.presetChoices = presetChoices();
+    v.view = options.view;
+    return ui::runViewer(loadDashboardScene(options), v);
 }
 
 } // namespace app

@@ -1,8 +1,10 @@
 // shadowscope: inspect, tune and document real-time shadows on CAD models.
+#include "bench_command.h"
 #include "curves_command.h"
 #include "gui_command.h"
 #include "mesh_command.h"
 #include "render_command.h"
+#include "sweep_command.h"
 
 #include <CLI/CLI.hpp>
 
@@ -32,11 +34,21 @@ int main(int argc, char** argv) {
     app::MeshOptions meshOptions;
     CLI::App* mesh = app::addMeshCommand(cli, meshOptions);
 
+    app::BenchOptions benchOptions;
+    CLI::App* bench = cli.add_subcommand("bench", "Time configurations (presets x --sweep values) on canonical views: "
+                                                  "results.csv and the speed/accuracy chart with its Pareto front");
+    app::addBenchCommand(*bench, benchOptions);
+
+    app::SweepOptions sweepOptions;
+    CLI::App* sweep = app::addSweepCommand(cli, sweepOptions);
+
     try {
         cli.parse(argc, argv);
         if (mesh->parsed()) return app::runMesh(*mesh, meshOptions);
         if (render->parsed()) return app::runRender(renderOptions, exportOptions);
         if (curves->parsed()) return app::runCurves(curvesOptions);
+        if (sweep->parsed()) return app::runSweep(*sweep, sweepOptions);
+        if (bench->parsed()) return app::runBench(benchOptions);
         return app::runGuiOrHeadless(guiOptions);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);

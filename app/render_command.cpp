@@ -1,6 +1,8 @@
 #include "render_command.h"
 
+#include "dashboard_setup.h"
 #include "headless_frame.h"
+#include "ui/dashboard_headless.h"
 #include "renderer/inspection.h"
 #include "renderer/view_images.h"
 #include "geometry/ground_truth.h"
@@ -22,7 +24,7 @@
 namespace app {
 
 const std::vector<std::string>& viewNames() {
-    static const std::vector<std::string> names = {"eye", "light", "light_unwarped", "aliasing", "truth", "splits", "texels"};
+    static const std::vector<std::string> names = {"eye", "light", "light_unwarped", "aliasing", "truth", "splits", "texels", "dashboard"};
     return names;
 }
 
@@ -160,6 +162,13 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
         for (size_t i = 0; i < t.size(); ++i) t[i] = in.receiver[i] ? ((*in.occluded)[i] ? 0.f : 1.f) : NAN;
         w.pfm("truth.pfm", t, in.width, in.height);
         if (wants(e, "truth")) w.png("truth.png", truthView(in, eye, e.heatmapBlend));
+    }
+    if (wants(e, "dashboard")) {
+        // The GUI's dashboard at --size, drawn headless with the same settings (same layout and pixels).
+        ui::LoadedScene scene = loadDashboardScene(o);
+        ui::DashboardState state = initialDashboardState(scene, o);
+        ui::HeadlessDashboard dashboard(std::move(scene), state, dashboardOptions(o), o.size.width, o.size.height);
+        w.png("dashboard.png", dashboard.render());
     }
     nlohmann::json j = frameMetrics(f, o);
     addInspectionMetrics(j, in);

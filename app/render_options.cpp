@@ -46,6 +46,8 @@ std::vector<float> parseFloats(const std::string& text, size_t n, const char* wh
     return out;
 }
 
+} // namespace
+
 geometry::Viewport parseSize(const std::string& text) {
     const auto x = text.find_first_of("xX");
     try {
@@ -62,6 +64,8 @@ geometry::Viewport parseSize(const std::string& text) {
         throw std::invalid_argument("--size: expected WxH (e.g. 1280x720), got '" + text + "'");
     }
 }
+
+namespace {
 
 /// Declares --set once for both addRenderOptions and addSettingOption.
 CLI::Option* addSetOption(CLI::App& cmd, std::function<void(const std::vector<std::string>&)> apply) {
@@ -94,6 +98,7 @@ struct SettingSources {
             geometry::applySetting(s, "shadow_map.resolution", std::to_string(shadowRes->as<int>()));
         for (const auto& a : assignments->results()) geometry::applyAssignment(s, a);
         target->settings = s;
+        target->settingsGiven = true;
     }
 };
 
@@ -205,13 +210,13 @@ void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings) {
     });
 }
 
-geometry::Scene loadScene(const RenderOptions& o) {
+geometry::SceneFile loadSceneFile(const RenderOptions& o) {
     geometry::SceneFile file;
     {
         LoadProgress progress(std::filesystem::path(o.scene).filename().string());
         file = geometry::resolveScene(o.scene, std::ref(progress));
     }
-    geometry::Scene scene = std::move(file.scene);
+    geometry::Scene& scene = file.scene;
     if (!o.view.empty()) {
         const auto it = file.views.find(o.view);
         if (it == file.views.end()) throw std::invalid_argument(unknownView(o, file));
@@ -223,7 +228,9 @@ geometry::Scene loadScene(const RenderOptions& o) {
         scene.camera.target = o.camera->target;
     }
     if (o.light) scene.light.direction = *o.light;
-    return scene;
+    return file;
 }
+
+geometry::Scene loadScene(const RenderOptions& o) { return loadSceneFile(o).scene; }
 
 } // namespace app

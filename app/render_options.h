@@ -2,6 +2,7 @@
 // Options shared by every command that renders (render, and later bench, sweep, the GUI's
 // start-up): declared once here.
 #include "geometry/scene.h"
+#include "geometry/scene_file.h"
 #include "geometry/shadow_plan.h"
 
 #include <optional>
@@ -19,8 +20,12 @@ struct RenderOptions {
     std::string backend = "auto";
     std::optional<geometry::Camera> camera;         // eye + target overrides
     std::optional<glm::vec3> light;                 // l overrides
-    geometry::ShadowSettings settings;             // --preset FILE, --shadow-res, --set key=value
+    geometry::ShadowSettings settings;             // --preset FILE, --shadow-res, --set
+    bool settingsGiven = false;                     // any of those three was on the command line key=value
 };
+
+/// "WxH" with 1 ≤ W, H ≤ 16384; throws std::invalid_argument naming --size otherwise.
+[[nodiscard]] geometry::Viewport parseSize(const std::string& text);
 
 /// Adds --scene, --view, --size, --out, --backend, --camera, --light, --preset, --shadow-res, --set to `cmd`.
 /// After parsing, options.settings is: its value when this was called, then every --preset file
@@ -38,5 +43,7 @@ void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings);
 /// only). Throws std::invalid_argument (unknown view) or std::runtime_error (the scene does not
 /// load), each with a one-line reason.
 [[nodiscard]] geometry::Scene loadScene(const RenderOptions& options);
+/// loadScene() keeping the whole scene file (its canonical views and paths) around the scene.
+[[nodiscard]] geometry::SceneFile loadSceneFile(const RenderOptions& options);
 
 } // namespace app

@@ -6,8 +6,9 @@
 //
 // OpenMesh's readers trust their input (they reserve and loop by header counts and per-face
 // valences), so every file is validated here first, against its real size, before a reader sees
-// it. Every error is a std::runtime_error "PATH: problem" on one line.
+// it (OBJ in obj_validate.cpp). Every error is a std::runtime_error "PATH: problem" on one line.
 #include "model_loader.h"
+#include "obj_validate.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -554,7 +555,9 @@ Mesh readOpenMeshFile(const std::string& path, const std::string& ext) {
         validateOff(path, size);
     } else if (ext == "ply") {
         validatePly(path, size);
-    } else if (ext != "obj") {
+    } else if (ext == "obj") {
+        validateObjFile(path);
+    } else {
         fail(path, "unsupported mesh extension '" + ext + "'");
     }
     return readThroughOpenMesh(path, size);

@@ -3,6 +3,7 @@
 #include "geometry/culling.h"
 
 #include <algorithm>
+#include <limits>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -146,6 +147,7 @@ void Renderer::shadowPass(const geometry::ShadowPlan& plan) {
                  std::to_string(int(limits_.shadowMemoryBytes / (1 << 20))) + " MiB budget; resolution reduced to " +
                  std::to_string(resolution));
     stats_.shadowResolution = resolution;
+    stats_.shadowMemoryBytes = uint64_t(double(resolution) * resolution * layers * bytesPerTexel);
     firstDepth_.ensure(resolution, layers, 0, true);
 
     glEnable(GL_DEPTH_TEST);
@@ -441,6 +443,16 @@ std::vector<glm::vec4> Renderer::readFloat4(EyeBuffers::Attachment a) const {
     for (int y = 0; y < h; ++y)
         std::memcpy(&out[size_t(y) * w], &raw[size_t(h - 1 - y) * w], size_t(w) * sizeof(glm::vec4));
     return out;
+}
+
+float Renderer::readShadowDepth(int split, int x, int y) const {
+    const int res = stats_.shadowResolution;
+    if (sampledDepth_ == 0 || split < 0 || split >= firstDepth_.layers() || x < 0 || y < 0 || x >= res || y >= res)
+        return std::numeric_limits<float>::quiet_NaN();
+    float depth = std::numeric_limits<float>::quiet_NaN();
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureSubImage(sampledDepth_, 0, x, y, split, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, sizeof depth, &depth);
+    return depth;
 }
 
 std::vector<glm::vec4> Renderer::readAux() const { return readFloat4(EyeBuffers::Aux); }

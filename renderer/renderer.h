@@ -22,6 +22,7 @@ struct FrameStats {
     uint64_t eyeTriangles = 0;
     std::vector<uint64_t> splitTriangles;     // per split
     int shadowResolution = 0;                 // of the array actually allocated
+    uint64_t shadowMemoryBytes = 0;           // every shadow texture (depth layers, peeling, moments)
     int eyeWidth = 0, eyeHeight = 0;
     PassTimes gpu;                            // from an earlier frame (see GpuTimers)
     std::vector<std::string> warnings;        // e.g. resolution clamped to the GL limit
@@ -74,6 +75,9 @@ public:
     [[nodiscard]] std::vector<float> readShadowMask() const;
     /// Per pixel (map texel u, v, split index, map depth); split −1 for sky.
     [[nodiscard]] std::vector<glm::vec4> readAux() const;
+    /// The depth the eye pass compares against in split `split`'s map at texel (x, y) (x right, y up
+    /// from the map's bottom row, as the texel coordinates in readAux()); NaN outside the map.
+    [[nodiscard]] float readShadowDepth(int split, int x, int y) const;
     [[nodiscard]] const FrameStats& stats() const noexcept { return stats_; }
     /// Blocks until the GPU times of every rendered frame are in; for one-shot exports.
     const PassTimes& waitForTimings() noexcept;

@@ -73,6 +73,22 @@ Image aliasingView(const Inspection& in, const Image& eye, float blend) {
     return img;
 }
 
+Image differenceView(const Inspection& a, const Inspection& b) {
+    if (a.width != b.width || a.height != b.height) throw std::invalid_argument("A and B frames differ in size");
+    const size_t n = size_t(a.width) * a.height;
+    std::vector<float> ratio(n, 0.f);
+    std::vector<uint8_t> both(n, 0);
+    for (size_t i = 0; i < n && i < a.m.size() && i < b.m.size(); ++i) {
+        both[i] = a.receiver[i] && b.receiver[i];
+        if (both[i]) ratio[i] = a.m[i] / b.m[i];
+    }
+    Image img = aliasingHeatmap(ratio, both, a.width, a.height);
+    Legend legend = aliasingLegend();
+    legend.title = "m_A / m_B (red: A coarser)";
+    drawLegend(img, legend);
+    return img;
+}
+
 Image truthView(const Inspection& in, const Image& eye, float blend) {
     if (!in.occluded) throw std::invalid_argument("the truth view needs --truth");
     Image img =

@@ -17,6 +17,11 @@ namespace renderer {
 /// False shadow red, false lit blue, over the grey scene; needs in.occluded.
 [[nodiscard]] Image truthView(const Inspection& in, const Image& eye, float blend = 0.f);
 
+/// A/B comparison (Barroso Fig 8): log2(m_A / m_B) on the diverging scale where both frames see a
+/// receiver (red: A undersamples more than B; blue: A is finer), grey elsewhere, with a legend.
+/// Throws std::invalid_argument when the two inspections differ in size.
+[[nodiscard]] Image differenceView(const Inspection& a, const Inspection& b);
+
 /// Tints, in a light-view image of split `split` (resolution `res` texels), every texel that some
 /// visible receiver pixel samples (DESIGN §4 texel utilization, shown).
 void tintSampledTexels(Image& light, const Inspection& in, int split, int res);

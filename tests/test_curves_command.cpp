@@ -268,7 +268,7 @@ TEST(ChartAxes, RangesAndRuns) {
 
     ui::Chart c;
     c.y.log = true;
-    c.series.push_back({"s", ui::paletteColour(0), {{0, 1}, {1, 2}, {2, INFINITY}, {3, 4}, {4, 80}, {5, -1}, {6, 3}}});
+    c.series.push_back({"s", ui::paletteColour(0), {{0, 1}, {1, 2}, {2, INFINITY}, {3, 4}, {4, 80}, {5, -1}, {6, 3}}, ui::SeriesStyle::Lines, 3.f, {}});
     const auto runs = ui::plottableRuns(c.series[0], false, true);
     ASSERT_EQ(runs.size(), 3u) << "∞ and non-positive (on a log axis) break the line";
     EXPECT_EQ(runs[0].size(), 2u);

@@ -154,7 +154,7 @@ protected:
             message = e.what();
         }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        EXPECT_LT(seconds, 1.0) << message;
+        EXPECT_LT(seconds, 10.0) << "a hang guard, not a speed goal: " << message;
         EXPECT_NE(message.find(fs::path(path).filename().string()), std::string::npos) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         return message;

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <unistd.h>
 
@@ -429,4 +430,155 @@ TEST_F(MeshLoading, HeaderWithoutTrailingNewline) {
                                     "property float y\nproperty float z\nend_header"),
                    "cannot fit");
     expectRejected(write("end.off", "OFF\n0 0 0"), "no triangles");
+}
+
+// ---- OBJ pre-validation: OpenMesh's OBJ reader trusts its input ----------------------------------
+
+namespace {
+
+const std::string kObjTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+std::string readSourceFile(const std::string& relative) {
+    std::ifstream in(std::string(SHADOWSCOPE_SOURCE_DIR) + "/" + relative, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+} // namespace
+
+TEST_F(MeshLoading, ObjFuzzAssertInputsAreRejected) {
+    // libFuzzer found these (OpenMesh asserts on a face corner without a vertex index, "/130").
+    // Corpus files start with the fuzz target's format byte: 0 selects .obj.
+    const std::pair<const char*, const char*> cases[] = {
+        {"regression_obj_fuzz_assert.obj", "line 1: control character 0x16"},
+        {"regression_obj_corner_without_vertex.obj", "line 4: bad face vertex '/1'"}};
+    for (const auto& [name, problem] : cases) {
+        SCOPED_TRACE(name);
+        const std::string bytes = readSourceFile(std::string("tests/fuzz/corpus/mesh/") + name);
+        ASSERT_FALSE(bytes.empty());
+        ASSERT_EQ(bytes[0] % 4, 0);
+        expectRejected(write(name, bytes.substr(1)), problem);
+    }
+}
+
+TEST_F(MeshLoading, EveryFuzzRegressionInputIsRejected) {
+    static const char* const kExtensions[] = {".obj", ".stl", ".off", ".ply"}; // as fuzz_mesh.cpp
+    int checked = 0;
+    for (const fs::directory_entry& entry :
+         fs::directory_iterator(fs::path(SHADOWSCOPE_SOURCE_DIR) / "tests/fuzz/corpus/mesh")) {
+        const std::string name = entry.path().filename().string();
+        if (!name.starts_with("regression_")) continue;
+        SCOPED_TRACE(name);
+        const std::string bytes = readSourceFile("tests/fuzz/corpus/mesh/" + name);
+        ASSERT_FALSE(bytes.empty());
+        expectRejected(write(entry.path().stem().string() + kExtensions[static_cast<unsigned char>(bytes[0]) % 4],
+                             bytes.substr(1)));
+        ++checked;
+    }
+    EXPECT_GE(checked, 4);
+}
+
+TEST_F(MeshLoading, ObjMalformedLinesNameTheLineAndProblem) {
+    const std::string& tri = kObjTriangle;
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {tri + "f /1 2 3\n", "line 4: bad face vertex '/1' (expected v, v/vt, v//vn or v/vt/vn)"},
+        {tri + "f 1/ 2 3\n", "bad face vertex '1/'"},
+        {tri + "f 1/1/1/1 2 3\n", "bad face vertex '1/1/1/1'"},
+        {tri + "f 1 2 x\n", "bad face vertex index 'x' (not an integer)"},
+        {tri + "f 1 2 +3\n", "bad face vertex index '+3' (not an integer)"},
+        {tri + "f 1 2 --3\n", "bad face vertex index '--3'"},
+        {tri + "f 1 2 3.0\n", "bad face vertex index '3.0'"},
+        {tri + "f 1 2 3 # comment\n", "bad face vertex index '#'"},
+        {tri + "f 1 2\n", "line 4: face has 2 vertices, needs at least 3"},
+        {tri + "f\n", "face has 0 vertices"},
+        {tri + "f 1 2 0\n", "face vertex index 0 (OBJ indices start at 1)"},
+        {tri + "f 1 2 4\n", "line 4: face vertex index 4 out of range (3 vertices)"},
+        {tri + "f 1 2 3\nf 1 2 7\nf 3 2 1\n", "line 5: face vertex index 7 out of range (3 vertices)"},
+        {tri + "f 1 2 -4\n", "face vertex index -4 out of range (3 vertices before this line)"},
+        {"f -1 -2 -3\n" + tri, "line 1: face vertex index -1 out of range (0 vertices before this line)"},
+        {tri + "f 1 2 99999999999999999999999\n", "face vertex index 99999999999999999999... out of range"},
+        {tri + "f 1/1 2/1 3/1\n", "face texture index 1 out of range (0 texture coordinates)"},
+        {tri + "vn 0 0 1\nf 1//2 2//2 3//2\n", "face normal index 2 out of range (1 normal)"},
+        {tri + "f 1 2 \\\n3\n", "line continuation"},
+        {"v 0 0\n", "line 1: vertex has 2 numbers, needs 3"},
+        {"v 0 0 zero\n", "vertex coordinate 'zero' is not a number"},
+        {"v 0 0 1,5\n", "vertex coordinate '1,5' is not a number"},
+        {"v 0 0 0x1p3\n", "is not a number"},
+        {"v 0 0 +-1\n", "vertex coordinate '+-1' is not a number"},
+        {"v 0 0 1e\n", "vertex coordinate '1e' is not a number"},
+        {"v 0 0 infinity\n", "is not finite"},
+        {"v 0 0 nan\n", "vertex coordinate 'nan' is not finite"},
+        {"v 0 -Inf 0\n", "is not finite"},
+        {"v 1e39 0 0\n", "vertex coordinate '1e39' is out of float range"},
+        {"vt 0.5\n", "texture coordinate has 1 number, needs 2"},
+        {tri + std::string("f 1 2 3\0\n", 9), "line 4: NUL byte"},
+        {"# comment \x01\nv 0 0 0\n", "line 1: control character 0x01"},
+        {"v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r", "carriage return inside a line"},
+        {"\xEF\xBB\xBFv 0 0 0\n", "byte order mark"},
+        {tri + "mtllib\n", "mtllib without a file name"},
+        {tri + "mtllib .\n", "material library '.' is not a regular file"},
+        {tri + "mtllib ../../../../../../../../../../dev/zero\n", "is not a regular file"},
+    };
+    for (size_t i = 0; i < cases.size(); ++i) {
+        SCOPED_TRACE(cases[i].second);
+        expectRejected(write("bad" + std::to_string(i) + ".obj", cases[i].first), cases[i].second);
+    }
+}
+
+TEST_F(MeshLoading, ObjEmptyMaterialLibraryIsRejected) {
+    // procfs files report size 0 whatever they hold, so an empty one is refused too.
+    write("empty.mtl", "");
+    expectRejected(write("part.obj", "mtllib empty.mtl\n" + kObjTriangle + "f 1 2 3\n"),
+                   "line 1: material library 'empty.mtl' is empty");
+}
+
+TEST_F(MeshLoading, ObjAbsurdSizesFailFast) {
+    const auto start = std::chrono::steady_clock::now();
+    expectRejected(write("longline.obj", kObjTriangle + "# " + std::string(3 << 20, 'x') + "\nf 1 2 3\n"),
+                   "line 4: line longer than 1048576 bytes");
+    std::string bigFace = kObjTriangle + "f";
+    for (int i = 0; i < 40000; ++i) bigFace += " 1";
+    expectRejected(write("bigface.obj", bigFace + "\n"), "line 4: face has more than 32768 vertices");
+    // OpenMesh removes repeated polygon corners in quadratic time: large polygons are capped in total.
+    std::string polygon = "f";
+    for (int i = 0; i < 30000; ++i) polygon += " " + std::to_string(i % 3 + 1);
+    expectRejected(write("polygons.obj", kObjTriangle + polygon + "\n" + polygon + "\n" + polygon + "\n"),
+                   "line 6: too many large polygons");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+}
+
+TEST_F(MeshLoading, ObjTypicalCadExportLoads) {
+    // CRLF, tabs, comments, objects/groups/smoothing/materials, v/vt/vn corners, negative indices,
+    // vertex colours, a forward reference and an underflowing coordinate (reads as 0).
+    write("part.mtl", "newmtl steel\r\nKd 0.5 0.5 0.5\r\n");
+    const std::string obj = "# exported by a CAD tool\r\n"
+                            "mtllib part.mtl\r\n"
+                            "mtllib missing.mtl\r\n"
+                            "o part\r\n"
+                            "v 0 0 0\r\nv 1 0 0 0.5 0.5 0.5\r\nv\t1\t1\t0\r\nv 0 1 1e-50\r\n"
+                            "v 0 0 1\r\nv 1 0 1\r\nv 1 1 1\r\nv 0 1 1\r\n"
+                            "\r\n"
+                            "vt 0 0\r\nvt 1 0\r\nvt 1 1 0\r\nvt 0 1\r\n"
+                            "vn 0 0 -1\r\nvn 0 0 1\r\nvn 0 -1 0\r\n"
+                            "g bottom top\r\nusemtl steel\r\ns 1\r\n"
+                            "f 1/1/1 4/4/1 3/3/1 2/2/1\r\n"
+                            "f 5//2 6//2 7//2 8//2   \r\n"
+                            "g sides\r\ns off\r\n"
+                            "f -8/-4/-1 -7/-3/-1 -3/-2/-1 -4/-1/-1\r\n"
+                            "f -5/1 -1/2 -2/3 -6/4\r\n"
+                            "f 1 5 8 4\r\n"
+                            "f 2 3 7 6\r\n"
+                            "# end\r\n";
+    const LoadedModel m = loadModel(write("part.obj", obj));
+    ASSERT_EQ(m.meshes.size(), 1u);
+    EXPECT_EQ(m.meshes[0].triangleCount(), 12u);
+    EXPECT_EQ(m.report.inputVertices, 8u);
+    Aabb box;
+    for (const glm::vec3& p : m.meshes[0].positions) box.add(p);
+    EXPECT_EQ(box.lo, glm::vec3(0.f));
+    EXPECT_EQ(box.hi, glm::vec3(1.f));
+
+    // Faces may come before the vertices they use (OpenMesh reads every vertex first).
+    EXPECT_EQ(loadModel(write("forward.obj", "f 1 2 3\n" + kObjTriangle)).meshes[0].triangleCount(), 1u);
+    // LF without a final newline.
+    EXPECT_EQ(loadModel(write("last.obj", kObjTriangle + "f 1 2 3")).meshes[0].triangleCount(), 1u);
 }

@@ -7,6 +7,8 @@
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -24,7 +26,8 @@ namespace {
 
 fs::path testDir() {
     static const fs::path dir = [] {
-        const fs::path d = fs::temp_directory_path() / "shadowscope_test_presets";
+        // One folder per process: ctest runs each test in its own process, in parallel.
+        const fs::path d = fs::temp_directory_path() / ("shadowscope_test_presets_" + std::to_string(::getpid()));
         fs::remove_all(d);
         fs::create_directories(d);
         return d;

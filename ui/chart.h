@@ -25,10 +25,15 @@ struct ChartPoint {
     double x = 0, y = 0;
 };
 
+enum class SeriesStyle { Lines, Markers };
+
 struct ChartSeries {
     std::string name;
     Rgb colour;
-    std::vector<ChartPoint> points; // in x order; non-plottable points break the line
+    std::vector<ChartPoint> points; // Lines: in x order; non-plottable points break the line
+    SeriesStyle style = SeriesStyle::Lines;
+    float markerRadius = 3.f;       // Markers: dot radius in pixels
+    std::vector<std::string> labels; // Markers: optional text beside each point (empty: none)
 };
 
 struct Chart {
@@ -71,6 +76,30 @@ struct AxisRange {
 
 /// The series' points split into runs of consecutive plottable points (each run is one line).
 [[nodiscard]] std::vector<std::vector<ChartPoint>> plottableRuns(const ChartSeries& series, bool xLog, bool yLog);
+
+/// Where a chart's parts go inside a panel, in pixels: shared by the SVG writer and the ImGui
+/// renderer so both draw the same picture.
+struct ChartTick {
+    double value = 0, pixel = 0;
+    std::string label;
+};
+struct ChartFrame {
+    double left = 0, top = 0, right = 0, bottom = 0; // the plot area
+    AxisRange x, y;
+    std::vector<ChartTick> xTicks, yTicks;
+    double legendLeft = 0, legendTop = 0;            // first legend entry
+    double titleX = 0, titleY = 0, xLabelY = 0, yLabelX = 0;
+    [[nodiscard]] double px(double v, bool log) const noexcept { return left + axisFraction(v, x, log) * (right - left); }
+    [[nodiscard]] double py(double v, bool log) const noexcept { return bottom - axisFraction(v, y, log) * (bottom - top); }
+};
+inline constexpr double kLegendRowHeight = 18;
+/// The frame of `chart` drawn in the panel [left, right] × [top, bottom]. Compact frames (small
+/// panels in the GUI) leave the title out and keep the margins tight.
+[[nodiscard]] ChartFrame chartFrame(const Chart& chart, double left, double top, double right, double bottom,
+                                    bool compact = false);
+
+/// Pareto-optimal points for minimising both x and y (non-dominated, plottable), sorted by x.
+[[nodiscard]] std::vector<size_t> paretoFront(const std::vector<ChartPoint>& points);
 
 /// SVG text of the chart, width × height pixels (chart_svg.cpp).
 [[nodiscard]] std::string chartToSvg(const Chart& chart, int width, int height);

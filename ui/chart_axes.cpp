@@ -197,4 +197,54 @@ std::vector<std::vector<ChartPoint>> plottableRuns(const ChartSeries& series, bo
     return runs;
 }
 
+namespace {
+constexpr int kPixelsPerXTick = 45, kPixelsPerYTick = 40;
+double glyphWidth(const std::string& text, double fontSize) {
+    size_t glyphs = 0;
+    for (const unsigned char c : text) glyphs += (c & 0xC0) != 0x80; // UTF-8 lead bytes only
+    return 0.6 * fontSize * static_cast<double>(glyphs);
+}
+} // namespace
+
+ChartFrame chartFrame(const Chart& c, double left, double top, double right, double bottom, bool compact) {
+    double widest = 0;
+    for (const ChartSeries& s : c.series) widest = std::max(widest, glyphWidth(s.name, 12));
+    const double legend = c.series.empty() ? 0 : std::clamp(widest + 40, 70.0, (right - left) / 3);
+    ChartFrame f;
+    f.left = left + 68;
+    f.top = top + (compact ? 22 : 52); // the title and, in ImGui (no rotated text), the y label above the plot
+    f.right = std::max(f.left + 1, right - legend - 18);
+    f.bottom = std::max(f.top + 1, bottom - (compact ? 40 : 50));
+    const int xTicks = std::max(2, static_cast<int>(f.right - f.left) / kPixelsPerXTick);
+    const int yTicks = std::max(2, static_cast<int>(f.bottom - f.top) / kPixelsPerYTick);
+    f.x = axisRange(c, true, xTicks);
+    f.y = axisRange(c, false, yTicks);
+    for (const double t : niceTicks(f.x.lo, f.x.hi, c.x.log, xTicks)) f.xTicks.push_back({t, f.px(t, c.x.log), formatTick(t)});
+    for (const double t : niceTicks(f.y.lo, f.y.hi, c.y.log, yTicks)) f.yTicks.push_back({t, f.py(t, c.y.log), formatTick(t)});
+    f.legendLeft = f.right + 14;
+    f.legendTop = f.top + 8;
+    f.titleX = (left + right) / 2;
+    f.titleY = top + 22;
+    f.xLabelY = f.bottom + (compact ? 32 : 38);
+    f.yLabelX = left + 16;
+    return f;
+}
+
+std::vector<size_t> paretoFront(const std::vector<ChartPoint>& points) {
+    std::vector<size_t> order;
+    for (size_t i = 0; i < points.size(); ++i)
+        if (std::isfinite(points[i].x) && std::isfinite(points[i].y)) order.push_back(i);
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return points[a].x != points[b].x ? points[a].x < points[b].x : points[a].y < points[b].y;
+    });
+    std::vector<size_t> front;
+    double bestY = std::numeric_limits<double>::infinity();
+    for (size_t i : order)
+        if (points[i].y < bestY) { // strictly better error than every faster point
+            front.push_back(i);
+            bestY = points[i].y;
+        }
+    return front;
+}
+
 } // namespace ui

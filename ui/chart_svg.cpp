@@ -12,8 +12,6 @@ namespace ui {
 namespace {
 
 constexpr const char* kFont = "font-family=\"sans-serif\"";
-// Pixel budget per tick label, so narrow panels get fewer ticks instead of overlapping labels.
-constexpr int kPixelsPerXTick = 45, kPixelsPerYTick = 40;
 
 std::string escapeXml(const std::string& text) {
     std::string out;
@@ -43,12 +41,6 @@ std::string colour(const Rgb& c) {
     return buf;
 }
 
-/// A rough text width for layout (SVG has no text metrics without a renderer): ~0.6 em per glyph.
-double textWidth(const std::string& text, double fontSize) {
-    size_t glyphs = 0;
-    for (const unsigned char c : text) glyphs += (c & 0xC0) != 0x80; // count UTF-8 lead bytes only
-    return 0.6 * fontSize * static_cast<double>(glyphs);
-}
 
 struct Box {
     double left, top, right, bottom;
@@ -67,33 +59,44 @@ std::string line(double x1, double y1, double x2, double y2, const char* stroke,
 }
 
 /// Grid lines, tick marks and tick labels of both axes.
-std::string axesSvg(const Chart& c, const Box& plot, const AxisRange& xr, const AxisRange& yr, int xTicks, int yTicks) {
+std::string axesSvg(const ChartFrame& f) {
     std::string out;
-    for (const double t : niceTicks(xr.lo, xr.hi, c.x.log, xTicks)) {
-        const double x = plot.left + axisFraction(t, xr, c.x.log) * plot.width();
-        out += line(x, plot.top, x, plot.bottom, "#e4e4e4", 1);
-        out += line(x, plot.bottom, x, plot.bottom + 5, "#333333", 1);
-        out += text(x, plot.bottom + 18, formatTick(t), 11, "middle");
+    for (const ChartTick& t : f.xTicks) {
+        out += line(t.pixel, f.top, t.pixel, f.bottom, "#e4e4e4", 1);
+        out += line(t.pixel, f.bottom, t.pixel, f.bottom + 5, "#333333", 1);
+        out += text(t.pixel, f.bottom + 18, t.label, 11, "middle");
     }
-    for (const double t : niceTicks(yr.lo, yr.hi, c.y.log, yTicks)) {
-        const double y = plot.bottom - axisFraction(t, yr, c.y.log) * plot.height();
-        out += line(plot.left, y, plot.right, y, "#e4e4e4", 1);
-        out += line(plot.left - 5, y, plot.left, y, "#333333", 1);
-        out += text(plot.left - 8, y + 4, formatTick(t), 11, "end");
+    for (const ChartTick& t : f.yTicks) {
+        out += line(f.left, t.pixel, f.right, t.pixel, "#e4e4e4", 1);
+        out += line(f.left - 5, t.pixel, f.left, t.pixel, "#333333", 1);
+        out += text(f.left - 8, t.pixel + 4, t.label, 11, "end");
     }
-    out += "<rect x=\"" + num(plot.left) + "\" y=\"" + num(plot.top) + "\" width=\"" + num(plot.width()) +
-           "\" height=\"" + num(plot.height()) + "\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\"/>\n";
+    out += "<rect x=\"" + num(f.left) + "\" y=\"" + num(f.top) + "\" width=\"" + num(f.right - f.left) +
+           "\" height=\"" + num(f.bottom - f.top) + "\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\"/>\n";
     return out;
 }
 
-/// One <polyline> per run of plottable points (a single point becomes a dot), clipped to the plot.
-std::string seriesSvg(const Chart& c, const Box& plot, const AxisRange& xr, const AxisRange& yr, const std::string& clipId) {
+/// One <polyline> per run of plottable points (a single point becomes a dot), or one dot per point
+/// for marker series (with their labels), clipped to the plot.
+std::string seriesSvg(const Chart& c, const ChartFrame& f, const std::string& clipId) {
     std::string out = "<g clip-path=\"url(#" + clipId + ")\" fill=\"none\" stroke-width=\"2\" stroke-linejoin=\"round\">\n";
+    std::string labels;
     for (const ChartSeries& s : c.series) {
         const std::string stroke = colour(s.colour);
+        const auto px = [&](const ChartPoint& p) { return f.px(p.x, c.x.log); };
+        const auto py = [&](const ChartPoint& p) { return f.py(p.y, c.y.log); };
+        if (s.style == SeriesStyle::Markers) {
+            for (size_t i = 0; i < s.points.size(); ++i) {
+                const ChartPoint& p = s.points[i];
+                if (!plottable(p.x, c.x.log) || !plottable(p.y, c.y.log)) continue;
+                out += "<circle cx=\"" + num(px(p)) + "\" cy=\"" + num(py(p)) + "\" r=\"" + num(s.markerRadius) +
+                       "\" fill=\"" + stroke + "\" stroke=\"none\"><title>" + escapeXml(s.name) + "</title></circle>\n";
+                if (i < s.labels.size() && !s.labels[i].empty())
+                    labels += text(px(p) + s.markerRadius + 3, py(p) - s.markerRadius - 2, s.labels[i], 11, "start");
+            }
+            continue;
+        }
         for (const auto& run : plottableRuns(s, c.x.log, c.y.log)) {
-            const auto px = [&](const ChartPoint& p) { return plot.left + axisFraction(p.x, xr, c.x.log) * plot.width(); };
-            const auto py = [&](const ChartPoint& p) { return plot.bottom - axisFraction(p.y, yr, c.y.log) * plot.height(); };
             if (run.size() == 1) {
                 out += "<circle cx=\"" + num(px(run[0])) + "\" cy=\"" + num(py(run[0])) + "\" r=\"2.5\" fill=\"" +
                        stroke + "\" stroke=\"none\"/>\n";
@@ -105,45 +108,38 @@ std::string seriesSvg(const Chart& c, const Box& plot, const AxisRange& xr, cons
             out += "><title>" + escapeXml(s.name) + "</title></polyline>\n";
         }
     }
-    return out + "</g>\n";
+    return out + "</g>\n" + labels;
 }
 
-std::string legendSvg(const Chart& c, double left, double top) {
+std::string legendSvg(const Chart& c, const ChartFrame& f) {
     std::string out;
-    double y = top;
+    double y = f.legendTop;
     for (const ChartSeries& s : c.series) {
-        out += line(left, y, left + 22, y, colour(s.colour).c_str(), 3);
-        out += text(left + 28, y + 4, s.name, 12, "start");
-        y += 18;
+        if (s.style == SeriesStyle::Markers)
+            out += "<circle cx=\"" + num(f.legendLeft + 11) + "\" cy=\"" + num(y) + "\" r=\"" + num(s.markerRadius) +
+                   "\" fill=\"" + colour(s.colour) + "\"/>\n";
+        else
+            out += line(f.legendLeft, y, f.legendLeft + 22, y, colour(s.colour).c_str(), 3);
+        out += text(f.legendLeft + 28, y + 4, s.name, 12, "start");
+        y += kLegendRowHeight;
     }
     return out;
 }
 
-double legendWidth(const Chart& c, double panelWidth) {
-    double widest = 0;
-    for (const ChartSeries& s : c.series) widest = std::max(widest, textWidth(s.name, 12));
-    return c.series.empty() ? 0 : std::clamp(widest + 40, 70.0, panelWidth / 3);
-}
-
 /// The whole chart inside `panel` (pixels of the enclosing SVG); `id` keeps clip ids unique.
 std::string panelSvg(const Chart& c, const Box& panel, const std::string& id) {
-    const double legend = legendWidth(c, panel.width());
-    const Box plot{panel.left + 68, panel.top + 40, panel.right - legend - 18, panel.bottom - 50};
-    const int xTicks = std::max(2, static_cast<int>(plot.width()) / kPixelsPerXTick);
-    const int yTicks = std::max(2, static_cast<int>(plot.height()) / kPixelsPerYTick);
-    const AxisRange xr = axisRange(c, true, xTicks), yr = axisRange(c, false, yTicks);
+    const ChartFrame f = chartFrame(c, panel.left, panel.top, panel.right, panel.bottom);
     const std::string clipId = "plot-" + id;
-
-    std::string out = "<g>\n<clipPath id=\"" + clipId + "\"><rect x=\"" + num(plot.left) + "\" y=\"" + num(plot.top) +
-                      "\" width=\"" + num(plot.width()) + "\" height=\"" + num(plot.height()) + "\"/></clipPath>\n";
-    out += text((panel.left + panel.right) / 2, panel.top + 24, c.title, 14, "middle", " font-weight=\"bold\"");
-    out += axesSvg(c, plot, xr, yr, xTicks, yTicks);
-    out += seriesSvg(c, plot, xr, yr, clipId);
-    out += text((plot.left + plot.right) / 2, plot.bottom + 38, c.x.label + (c.x.log ? " (log)" : ""), 12, "middle");
-    const double yx = panel.left + 16, yy = (plot.top + plot.bottom) / 2;
-    out += text(yx, yy, c.y.label + (c.y.log ? " (log)" : ""), 12, "middle",
-                (" transform=\"rotate(-90 " + num(yx) + " " + num(yy) + ")\"").c_str());
-    out += legendSvg(c, plot.right + 14, plot.top + 8);
+    std::string out = "<g>\n<clipPath id=\"" + clipId + "\"><rect x=\"" + num(f.left) + "\" y=\"" + num(f.top) +
+                      "\" width=\"" + num(f.right - f.left) + "\" height=\"" + num(f.bottom - f.top) + "\"/></clipPath>\n";
+    out += text(f.titleX, f.titleY, c.title, 14, "middle", " font-weight=\"bold\"");
+    out += axesSvg(f);
+    out += seriesSvg(c, f, clipId);
+    out += text((f.left + f.right) / 2, f.xLabelY, c.x.label + (c.x.log ? " (log)" : ""), 12, "middle");
+    const double yy = (f.top + f.bottom) / 2;
+    out += text(f.yLabelX, yy, c.y.label + (c.y.log ? " (log)" : ""), 12, "middle",
+                (" transform=\"rotate(-90 " + num(f.yLabelX) + " " + num(yy) + ")\"").c_str());
+    out += legendSvg(c, f);
     return out + "</g>\n";
 }
 

@@ -5,6 +5,15 @@
 
 namespace ui {
 
+namespace {
+constexpr float kDegreesPerPixel = 0.3f;
+float finiteOr(float v, float fallback) noexcept { return std::isfinite(v) ? v : fallback; }
+glm::vec3 offsetDirection(float yawDeg, float pitchDeg) noexcept { // from target to eye
+    const float yaw = glm::radians(yawDeg), pitch = glm::radians(pitchDeg);
+    return {std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};
+}
+} // namespace
+
 OrbitCamera OrbitCamera::from(const geometry::Camera& c) noexcept {
     OrbitCamera o;
     o.target = c.target;
@@ -12,27 +21,54 @@ OrbitCamera OrbitCamera::from(const geometry::Camera& c) noexcept {
     o.distance = std::max(glm::length(d), 1e-3f);
     o.pitchDeg = glm::degrees(std::asin(std::clamp(d.y / o.distance, -1.f, 1.f)));
     o.yawDeg = glm::degrees(std::atan2(d.x, d.z));
+    if (!std::isfinite(o.distance) || !std::isfinite(o.pitchDeg) || !std::isfinite(o.yawDeg)) o = OrbitCamera{};
     return o;
 }
 
 void OrbitCamera::rotate(float dx, float dy) noexcept {
-    yawDeg -= 0.3f * dx;
-    pitchDeg = std::clamp(pitchDeg + 0.3f * dy, -89.f, 89.f);
+    yawDeg -= kDegreesPerPixel * finiteOr(dx, 0.f);
+    pitchDeg = std::clamp(pitchDeg + kDegreesPerPixel * finiteOr(dy, 0.f), -89.f, 89.f);
 }
 
-void OrbitCamera::zoom(float steps) noexcept { distance = std::clamp(distance * std::pow(0.9f, steps), 0.05f, 1e5f); }
+void OrbitCamera::zoom(float steps) noexcept {
+    distance = std::clamp(distance * std::pow(0.9f, finiteOr(steps, 0.f)), 1e-3f, 1e6f);
+}
+
+void OrbitCamera::pan(float dx, float dy, float viewHeightPixels, float fovYDeg) noexcept {
+    if (!(viewHeightPixels > 0.f) || !(fovYDeg > 0.f)) return;
+    const glm::vec3 back = offsetDirection(yawDeg, pitchDeg);
+    const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 1, 0), back));
+    const glm::vec3 up = glm::cross(back, right);
+    // Scene units per pixel at the target's distance.
+    const float unitsPerPixel = 2.f * distance * std::tan(glm::radians(fovYDeg) * 0.5f) / viewHeightPixels;
+    target += unitsPerPixel * (-finiteOr(dx, 0.f) * right + finiteOr(dy, 0.f) * up);
+}
+
+void OrbitCamera::look(float dx, float dy) noexcept {
+    const glm::vec3 e = eye();
+    yawDeg -= kDegreesPerPixel * finiteOr(dx, 0.f);
+    pitchDeg = std::clamp(pitchDeg - kDegreesPerPixel * finiteOr(dy, 0.f), -89.f, 89.f);
+    target = e - distance * offsetDirection(yawDeg, pitchDeg);
+}
+
+void OrbitCamera::fly(float forward, float right, float up) noexcept {
+    const glm::vec3 back = offsetDirection(yawDeg, pitchDeg);
+    const glm::vec3 r = glm::normalize(glm::cross(glm::vec3(0, 1, 0), back));
+    target += -finiteOr(forward, 0.f) * back + finiteOr(right, 0.f) * r + finiteOr(up, 0.f) * glm::vec3(0, 1, 0);
+}
+
+glm::vec3 OrbitCamera::eye() const noexcept { return target + distance * offsetDirection(yawDeg, pitchDeg); }
 
 void OrbitCamera::applyTo(geometry::Camera& c) const noexcept {
-    const float yaw = glm::radians(yawDeg), pitch = glm::radians(pitchDeg);
-    const glm::vec3 d(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
     c.target = target;
-    c.eye = target + distance * d;
+    c.eye = eye();
 }
 
 SunAngles SunAngles::from(const glm::vec3& l) noexcept {
-    const glm::vec3 toSun = -glm::normalize(l);
-    return {glm::degrees(std::atan2(toSun.x, toSun.z)),
-            glm::degrees(std::asin(std::clamp(toSun.y, -1.f, 1.f)))};
+    const float len = glm::length(l);
+    if (!(len > 0.f) || !std::isfinite(len)) return {};
+    const glm::vec3 toSun = -l / len;
+    return {glm::degrees(std::atan2(toSun.x, toSun.z)), glm::degrees(std::asin(std::clamp(toSun.y, -1.f, 1.f)))};
 }
 
 glm::vec3 SunAngles::direction() const noexcept {

@@ -1,5 +1,6 @@
 #pragma once
-// Orbit camera (drag to turn, scroll to zoom) and azimuth/elevation light control.
+// Camera rig for the eye view: orbit (drag), pan, dolly (scroll), and fly (look around the eye,
+// move with WASD/QE); azimuth/elevation light control. Pure math on plain values.
 #include "geometry/scene.h"
 
 namespace ui {
@@ -9,8 +10,18 @@ struct OrbitCamera {
     float yawDeg = 0.f, pitchDeg = 20.f, distance = 10.f;
 
     static OrbitCamera from(const geometry::Camera& c) noexcept;
+    /// Turns about the target.
     void rotate(float dxPixels, float dyPixels) noexcept;
     void zoom(float wheelSteps) noexcept;
+    /// Moves eye and target across the view, in pixels of a view `viewHeightPixels` tall with
+    /// vertical field of view `fovYDeg`, so the point under the cursor follows it at the target.
+    void pan(float dxPixels, float dyPixels, float viewHeightPixels, float fovYDeg) noexcept;
+    /// Turns about the eye (fly mode's mouse look): the eye stays, the target moves.
+    void look(float dxPixels, float dyPixels) noexcept;
+    /// Moves eye and target along the view (forward), across it (right) and world up, in scene
+    /// units.
+    void fly(float forward, float right, float up) noexcept;
+    [[nodiscard]] glm::vec3 eye() const noexcept;
     /// Writes eye and target into `c`, keeping its lens settings.
     void applyTo(geometry::Camera& c) const noexcept;
 };

@@ -1,16 +1,23 @@
 #include "settings_panel.h"
 
+#include "widget_map.h"
+
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <map>
+#include <cmath>
 #include <string>
 
 namespace ui {
 
-bool drawSettingsWidgets(geometry::ShadowSettings& settings) {
+bool drawSettingsWidgets(geometry::ShadowSettings& settings, bool (*inGroup)(std::string_view, const void*),
+                         const void* ctx, std::string* error) {
     using Kind = geometry::SettingInfo::Kind;
     bool changed = false;
     for (const auto& info : geometry::settingsDeclaration()) {
+        if (inGroup && !inGroup(info.key, ctx)) continue;
         const std::string label(info.key);
         double value = info.get(settings);
         bool edited = false;
@@ -23,9 +30,12 @@ bool drawSettingsWidgets(geometry::ShadowSettings& settings) {
         }
         case Kind::Choice: {
             int index = static_cast<int>(value);
-            if (ImGui::BeginCombo(label.c_str(), std::string(info.choices[std::clamp(index, 0, int(info.choices.size()) - 1)]).c_str())) {
-                for (int i = 0; i < int(info.choices.size()); ++i)
+            const int shown = std::clamp(index, 0, int(info.choices.size()) - 1);
+            if (ImGui::BeginCombo(label.c_str(), std::string(info.choices[shown]).c_str())) {
+                for (int i = 0; i < int(info.choices.size()); ++i) {
                     if (ImGui::Selectable(std::string(info.choices[i]).c_str(), i == index)) index = i, edited = true;
+                    widgetMapRecord(label + "=" + std::string(info.choices[i]));
+                }
                 ImGui::EndCombo();
             }
             value = index;
@@ -33,27 +43,55 @@ bool drawSettingsWidgets(geometry::ShadowSettings& settings) {
         }
         case Kind::Int: {
             int v = static_cast<int>(value);
-            const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (info.logScale ? ImGuiSliderFlags_Logarithmic : 0);
+            // No AlwaysClamp: a typed out-of-range value must be refused with a message, not
+            // silently turned into something else.
+            const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
             edited = ImGui::SliderInt(label.c_str(), &v, int(info.min), int(info.max), "%d", flags);
-            if (info.odd && v % 2 == 0) v = v + 1 <= int(info.max) ? v + 1 : v - 1; // odd-only keys snap
+            if (edited && info.odd && v % 2 == 0 && v >= info.min && v <= info.max)
+                v = v + 1 <= int(info.max) ? v + 1 : v - 1; // odd-only keys snap
             value = v;
             break;
         }
         case Kind::Float: {
             float v = static_cast<float>(value);
-            const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (info.logScale ? ImGuiSliderFlags_Logarithmic : 0);
+            const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
             edited = ImGui::SliderFloat(label.c_str(), &v, float(info.min), float(info.max), "%.4g", flags);
             value = v;
             break;
         }
         }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n(%s)", std::string(info.help).c_str(), info.rangeText().c_str());
-        if (edited && value >= info.min && value <= info.max) {
+        widgetMapRecord(label);
+        // A value typed into a slider's text field (ctrl+click) counts once, when the field closes
+        // with an edit: ImGui reports every keystroke, and "9" on the way to "999" must not apply.
+        static std::map<std::string, double> typed;
+        if (ImGui::IsItemActive() && ImGui::GetIO().WantTextInput && (info.kind == Kind::Int || info.kind == Kind::Float)) {
+            if (edited) typed[label] = value;
+            edited = false;
+        } else if (const auto it = typed.find(label); it != typed.end()) {
+            // The field closed (Return, or a click elsewhere) since the last keystroke; Escape cancels.
+            if (!ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) &&
+                !ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+                value = it->second;
+                edited = true;
+            }
+            typed.erase(it);
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s\n%s (ctrl+click to type a value)", std::string(info.help).c_str(), info.rangeText().c_str());
+        if (!edited) continue;
+        if (std::isfinite(value) && value >= info.min && value <= info.max) {
             info.set(settings, value);
             changed = true;
+        } else if (error) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.10g", value);
+            *error = label + ": " + (std::isfinite(value) ? std::string(text) : std::string("not a number")) +
+                     " refused (" + info.rangeText() + "); kept " + info.format(settings);
         }
     }
     return changed;
 }
+
+bool drawSettingsWidgets(geometry::ShadowSettings& settings) { return drawSettingsWidgets(settings, nullptr, nullptr, nullptr); }
 
 } // namespace ui

@@ -1,173 +1,157 @@
 #include "viewer.h"
 
-#include "orbit_camera.h"
-#include "settings_panel.h"
+#include "dashboard_config.h"
+#include "imgui_setup.h"
 #include "renderer/context.h"
-#include "renderer/renderer.h"
+#include "renderer/texture.h"
 
 #include <GLFW/glfw3.h>
+#include <nlohmann/json.hpp>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
-#include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
-#include <string>
+#include <iostream>
 
 namespace ui {
 
 namespace {
 
-struct ImGuiSession {
-    explicit ImGuiSession(GLFWwindow* window) {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr;
-        float sx = 1.f, sy = 1.f;
-        glfwGetWindowContentScale(window, &sx, &sy);
-        const float scale = std::clamp(std::max(sx, sy), 1.f, 4.f);
-        ImFontConfig font;
-        font.SizePixels = 13.f * scale;
-        ImGui::GetIO().Fonts->AddFontDefault(&font);
-        ImGui::StyleColorsDark();
-        ImGui::GetStyle().ScaleAllSizes(scale);
-        ImGui_ImplGlfw_InitForOpenGL(window, true);
-        ImGui_ImplOpenGL3_Init("#version 430 core");
-    }
-    ~ImGuiSession() {
-        ImGui_ImplOpenGL3_Shutdown();
-        ImGui_ImplGlfw_Shutdown();
-        ImGui::DestroyContext();
-    }
-};
+/// SIGINT/SIGTERM ask the window to close, so the config is saved as on a normal close.
+volatile std::sig_atomic_t quitRequested = 0;
+extern "C" void onQuitSignal(int) { quitRequested = 1; }
 
-ImTextureID textureId(GLuint t) { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t)); }
+float contentScale(GLFWwindow* window) {
+    float sx = 1.f, sy = 1.f;
+    glfwGetWindowContentScale(window, &sx, &sy);
+    return clampUiScale(std::max(sx, sy));
+}
 
-/// Shows a GL texture filling the available region; returns its size in pixels.
-ImVec2 showTexture(GLuint texture, float aspect) {
-    ImVec2 avail = ImGui::GetContentRegionAvail();
-    avail.x = std::max(avail.x, 1.f);
-    avail.y = std::max(avail.y, 1.f);
-    ImVec2 size = avail;
-    if (aspect > 0.f) size = avail.x / avail.y > aspect ? ImVec2(avail.y * aspect, avail.y) : ImVec2(avail.x, avail.x / aspect);
-    ImGui::Image(textureId(texture), size, ImVec2(0, 1), ImVec2(1, 0)); // GL textures are bottom-up
-    return size;
+/// WASD/QE as (right, up, forward).
+glm::vec3 flyKeys(GLFWwindow* w) {
+    const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.f : 0.f; };
+    return {down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q), down(GLFW_KEY_W) - down(GLFW_KEY_S)};
 }
 
 } // namespace
 
-int runViewer(geometry::Scene scene, const ViewerOptions& options) {
-    renderer::GlfwWindowContext window(1600, 900, "shadowscope — " + scene.name);
-    ImGuiSession imgui(window.window());
-    // Sticky keys: a press and release within one frame still reads as pressed once.
-    glfwSetInputMode(window.window(), GLFW_STICKY_KEYS, GLFW_TRUE);
-    renderer::Renderer renderer(scene);
+int runViewer(LoadedScene scene, const ViewerOptions& options) {
+    DashboardState state;
+    state.camera = OrbitCamera::from(scene.file.scene.camera);
+    state.sun = SunAngles::from(scene.file.scene.light.direction);
+    WindowGeometry geometry;
+    std::string startStatus;
+    const std::filesystem::path configPath =
+        !options.configPath.empty() ? options.configPath
+        : configDirectory().empty() ? std::filesystem::path() : configDirectory() / "dashboard.json";
+    if (options.persist && !configPath.empty()) {
+        if (auto error = loadDashboardConfig(configPath, state, geometry)) {
+            // Keep the user's broken file next to the fresh one rather than overwriting it.
+            std::error_code ec;
+            const std::filesystem::path bad = configPath.string() + ".bad";
+            std::filesystem::rename(configPath, bad, ec);
+            startStatus = "ignored the config file (kept as " + bad.filename().string() + "): " + *error;
+            std::cerr << "shadowscope: " << startStatus << '\n';
+        }
+    }
+    if (options.settings) state.settings[0] = state.settings[1] = *options.settings;
 
-    OrbitCamera orbit = OrbitCamera::from(scene.camera);
-    SunAngles sun = SunAngles::from(scene.light.direction);
-    geometry::ShadowSettings settings = options.settings;
-    geometry::Viewport eyeSize{960, 540};
-    std::string status;
-    double cpuFrameMs = 0;
+    renderer::GlfwWindowContext window(geometry.width, geometry.height, "shadowscope — " + scene.file.scene.name);
+    GLFWwindow* w = window.window();
+    glfwSetInputMode(w, GLFW_STICKY_KEYS, GLFW_TRUE); // a press and release within one frame still counts
+    ImGuiScope imgui(contentScale(w));
+    ImGui_ImplGlfw_InitForOpenGL(w, true);
+
+    DashboardOptions dashOptions;
+    dashOptions.screenshotDir = options.screenshotDir;
+    dashOptions.sceneChoices = options.sceneChoices;
+    dashOptions.presetChoices = options.presetChoices;
+    dashOptions.uiScale = imgui.scale();
+    dashOptions.view = options.view;
+    Dashboard dashboard(std::move(scene), state, dashOptions);
+    dashboard.setStatus(startStatus);
+
+    std::string savedConfig;
+    auto lastSave = std::chrono::steady_clock::now();
+    const auto saveConfig = [&](bool force) {
+        if (!options.persist || configPath.empty()) return;
+        int ww = 0, wh = 0;
+        glfwGetWindowSize(w, &ww, &wh);
+        if (ww >= 200 && wh >= 150) geometry = {ww, wh};
+        const std::string now = dashboardToJson(dashboard.state(), geometry).dump();
+        if (!force && now == savedConfig) return;
+        if (auto error = saveDashboardConfig(configPath, dashboard.state(), geometry)) dashboard.setStatus(*error);
+        savedConfig = now;
+    };
+
     bool f12WasDown = false;
-
-    while (!glfwWindowShouldClose(window.window())) {
-        glfwPollEvents();
+    auto last = std::chrono::steady_clock::now();
+    std::signal(SIGINT, onQuitSignal);
+    std::signal(SIGTERM, onQuitSignal);
+    std::string lastKey;
+    int quietFrames = 0;
+    while (!glfwWindowShouldClose(w) && !quitRequested) {
+        // Idle (nothing changed for a few frames, no background work): sleep until input arrives
+        // instead of re-rendering an unchanged frame at full speed.
+        if (quietFrames > 3 && !dashboard.loading() && !dashboard.tradeoffRunning()) glfwWaitEventsTimeout(0.5);
+        else glfwPollEvents();
         int fbW = 0, fbH = 0;
-        glfwGetFramebufferSize(window.window(), &fbW, &fbH);
-        if (fbW <= 0 || fbH <= 0) { // minimised: nothing to draw
+        glfwGetFramebufferSize(w, &fbW, &fbH);
+        if (fbW <= 0 || fbH <= 0 || glfwGetWindowAttrib(w, GLFW_ICONIFIED)) { // minimised or zero-sized
             glfwWaitEventsTimeout(0.1);
             continue;
         }
-        const auto t0 = std::chrono::steady_clock::now();
-        const bool f12Down = glfwGetKey(window.window(), GLFW_KEY_F12) == GLFW_PRESS;
-        const bool f12Pressed = f12Down && !f12WasDown;
+        const float scale = contentScale(w);
+        if (scale != imgui.scale()) {
+            imgui.rescale(scale);
+            dashboard.setUiScale(imgui.scale());
+        }
+        const auto now = std::chrono::steady_clock::now();
+        FrameInput input;
+        input.deltaSeconds = std::chrono::duration<float>(now - last).count();
+        last = now;
+        const bool ctrl = glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+        if (ctrl && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+        const bool f12Down = glfwGetKey(w, GLFW_KEY_F12) == GLFW_PRESS;
+        input.screenshot = f12Down && !f12WasDown;
         f12WasDown = f12Down;
-        orbit.applyTo(scene.camera);
-        scene.light.direction = sun.direction();
-        const geometry::ShadowPlan plan =
-            geometry::planShadows(settings, scene.bounds(), scene.camera, scene.light, eyeSize);
-        renderer::ViewOptions views;
-        views.lightViewSize = std::clamp(settings.resolution, 16, 1024);
-        views.unwarped = false; // not shown in this window
-        renderer.render(plan, eyeSize, views);
+        if (!ImGui::GetIO().WantTextInput) input.fly = flyKeys(w);
 
-        renderer::beginWindowFrame(fbW, fbH);
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        const ImGuiViewport* vp = ImGui::GetMainViewport();
-        const float panelW = std::min(340.f * ImGui::GetIO().FontGlobalScale * ImGui::GetFontSize() / 13.f, vp->WorkSize.x * 0.4f);
-        const float viewW = (vp->WorkSize.x - panelW) * 0.5f;
-
-        ImGui::SetNextWindowPos(vp->WorkPos, ImGuiCond_Always);
-        ImGui::SetNextWindowSize(ImVec2(viewW, vp->WorkSize.y), ImGuiCond_Always);
-        ImGui::Begin("Eye view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-        {
-            const ImVec2 avail = ImGui::GetContentRegionAvail();
-            eyeSize = {std::max(16, int(avail.x)), std::max(16, int(avail.y))};
-            showTexture(renderer.eyeTexture(), 0.f);
-            if (ImGui::IsItemHovered()) {
-                const ImGuiIO& io = ImGui::GetIO();
-                if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) orbit.rotate(io.MouseDelta.x, io.MouseDelta.y);
-                if (io.MouseWheel != 0.f) orbit.zoom(io.MouseWheel);
-            }
-        }
-        ImGui::End();
-
-        ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + viewW, vp->WorkPos.y), ImGuiCond_Always);
-        ImGui::SetNextWindowSize(ImVec2(viewW, vp->WorkSize.y), ImGuiCond_Always);
-        ImGui::Begin("Light view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-        showTexture(renderer.lightTexture(), 1.f);
-        ImGui::End();
-
-        ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + 2 * viewW, vp->WorkPos.y), ImGuiCond_Always);
-        ImGui::SetNextWindowSize(ImVec2(panelW, vp->WorkSize.y), ImGuiCond_Always);
-        ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-        ImGui::Text("Scene: %s (%zu triangles)", scene.name.c_str(), scene.triangleCount());
-        ImGui::Separator();
-        ImGui::TextDisabled("Light");
-        ImGui::SliderFloat("Azimuth", &sun.azimuthDeg, -180.f, 180.f, "%.1f deg");
-        ImGui::SliderFloat("Elevation", &sun.elevationDeg, 1.f, 90.f, "%.1f deg");
-        ImGui::Text("gamma (light vs view): %.1f deg", plan.gammaDeg);
-        ImGui::Separator();
-        ImGui::TextDisabled("Shadows");
-        drawSettingsWidgets(settings);
-        for (size_t i = 0; i < plan.splits.size(); ++i) {
-            const auto& sp = plan.splits[i];
-            ImGui::Text("split %zu: [%.2f, %.2f] n'=%s res %d", i, sp.near, sp.far,
-                        sp.warped() ? std::to_string(sp.nPrime).c_str() : "inf", sp.resolution);
-        }
-        ImGui::Separator();
-        ImGui::TextDisabled("Timing");
-        const auto& st = renderer.stats();
-        ImGui::Text("Frame (CPU): %.2f ms", cpuFrameMs);
-        ImGui::Text("GPU shadow %.2f ms, eye %.2f ms", st.gpu.of(renderer::Pass::Shadow), st.gpu.of(renderer::Pass::Eye));
-        ImGui::Text("Triangles: shadow %llu, eye %llu", static_cast<unsigned long long>(st.shadowTriangles),
-                    static_cast<unsigned long long>(st.eyeTriangles));
-        ImGui::Separator();
-        ImGui::TextDisabled("Camera");
-        ImGui::TextWrapped("Drag in the eye view to orbit, scroll to zoom.");
-        if (ImGui::Button("Screenshot (F12)") || f12Pressed) {
-            try {
-                std::filesystem::create_directories(options.screenshotDir);
-                const auto dir = std::filesystem::path(options.screenshotDir);
-                renderer::writePng((dir / "eye.png").string(), renderer.readEye());
-                renderer::writePng((dir / "light.png").string(), renderer.readLight());
-                status = "saved " + (dir / "eye.png").string() + ", " + (dir / "light.png").string();
-            } catch (const std::exception& e) {
-                status = std::string("screenshot failed: ") + e.what();
-            }
-        }
-        if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
-        ImGui::End();
-
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        dashboard.frame(display.x, display.y, input);
         ImGui::Render();
+        renderer::beginWindowFrame(fbW, fbH);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-        glfwSwapBuffers(window.window());
-        cpuFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (dashboard.screenshotRequested()) {
+            const auto paths = dashboard.saveScreenshots(renderer::readFramebuffer(0, fbW, fbH));
+            for (const auto& p : paths) std::cout << p << '\n';
+            std::cout.flush();
+        }
+        glfwSwapBuffers(w);
+        // What the next frame would show differently: the state, the camera and light, any input.
+        const ImGuiIO& io = ImGui::GetIO();
+        const DashboardState& st = dashboard.state();
+        std::string key = dashboardToJson(st, geometry).dump() + dashboard.status();
+        for (float v : {st.camera.target.x, st.camera.target.y, st.camera.target.z, st.camera.yawDeg, st.camera.pitchDeg,
+                        st.camera.distance, st.sun.azimuthDeg, st.sun.elevationDeg, io.MousePos.x, io.MousePos.y})
+            key += ',' + std::to_string(v);
+        const bool active = io.MouseWheel != 0.f || io.WantTextInput || ImGui::IsAnyItemActive() || io.MouseDown[0] ||
+                           io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
+        quietFrames = key == lastKey && !active ? quietFrames + 1 : 0;
+        lastKey = std::move(key);
+        if (now - lastSave > std::chrono::seconds(1)) {
+            saveConfig(false);
+            lastSave = now;
+        }
     }
+    saveConfig(true);
+    ImGui_ImplGlfw_Shutdown();
     return 0;
 }
 

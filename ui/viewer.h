@@ -1,19 +1,27 @@
 #pragma once
-// The interactive window: eye view and light view side by side, orbit camera, light control.
-#include "geometry/scene.h"
+// The interactive window: the dashboard in a GLFW window, with the config file (last settings
+// and layout) read at start and written when they change and at exit.
+#include "dashboard.h"
 #include "geometry/settings.h"
 
+#include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace ui {
 
 struct ViewerOptions {
-    geometry::ShadowSettings settings;
-    std::string screenshotDir = "out";
+    std::optional<geometry::ShadowSettings> settings; // from the command line; else the config's last settings
+    std::filesystem::path screenshotDir = "screenshots";
+    std::filesystem::path configPath;                 // empty: configDirectory()/dashboard.json
+    bool persist = true;                              // read and write the config file
+    std::vector<std::string> sceneChoices, presetChoices;
+    std::string view;                                 // the canonical view opened at
 };
 
 /// Runs until the window closes. Returns the process exit code; throws std::runtime_error when
 /// no window can be opened.
-int runViewer(geometry::Scene scene, const ViewerOptions& options);
+int runViewer(LoadedScene scene, const ViewerOptions& options);
 
 } // namespace ui

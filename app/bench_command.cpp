@@ -1,0 +1,243 @@
+#include "bench_command.h"
+
+#include "render_options.h"
+
+#include "geometry/ground_truth.h"
+#include "geometry/preset.h"
+#include "geometry/scene_file.h"
+#include "geometry/shadow_plan.h"
+#include "renderer/context.h"
+#include "renderer/inspection.h"
+#include "renderer/renderer.h"
+#include "ui/chart.h"
+#include "ui/chart_imgui.h"
+#include "ui/tradeoff_chart.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace app {
+
+namespace {
+
+std::vector<std::string> splitList(const std::string& s, char sep) {
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    for (std::string item; std::getline(in, item, sep);) out.push_back(item);
+    return out;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return std::nan("");
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Sweep {
+    std::string key;
+    std::vector<std::string> values;
+};
+
+std::vector<Sweep> parseSweeps(const std::vector<std::string>& sweeps) {
+    std::vector<Sweep> out;
+    for (const auto& s : sweeps) {
+        const auto eq = s.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
+            throw std::invalid_argument("--sweep " + s + ": expected key=v1,v2,...");
+        Sweep sw{s.substr(0, eq), splitList(s.substr(eq + 1), ',')};
+        if (!geometry::findSetting(sw.key)) throw std::invalid_argument("--sweep " + s + ": unknown setting '" + sw.key + "'");
+        for (const auto& v : sw.values) { // validate each value now, with the key's range in the message
+            geometry::ShadowSettings probe;
+            geometry::applySetting(probe, sw.key, v);
+        }
+        out.push_back(std::move(sw));
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<BenchConfiguration> benchConfigurations(const BenchOptions& o) {
+    const std::vector<Sweep> sweeps = parseSweeps(o.sweeps);
+    size_t combinations = 1;
+    for (const auto& s : sweeps) {
+        combinations *= std::max<size_t>(s.values.size(), 1);
+        if (combinations > 4096) throw std::invalid_argument("--sweep: more than 4096 configurations");
+    }
+    std::vector<std::pair<std::string, geometry::ShadowSettings>> bases;
+    if (o.presets.empty()) bases.emplace_back("", geometry::ShadowSettings{});
+    for (const auto& p : o.presets) bases.emplace_back(p, geometry::loadPreset(p));
+    if (bases.size() * combinations > 4096) throw std::invalid_argument("bench: more than 4096 configurations");
+    std::vector<BenchConfiguration> out;
+    for (const auto& [path, base] : bases) {
+        const std::string stem = path.empty() ? "" : std::filesystem::path(path).stem().string();
+        for (size_t c = 0; c < combinations; ++c) {
+            BenchConfiguration cfg;
+            cfg.preset = stem;
+            cfg.settings = base;
+            for (const auto& a : o.assignments) geometry::applyAssignment(cfg.settings, a);
+            std::string label = stem.empty() ? "defaults" : stem;
+            size_t rest = c;
+            std::vector<std::string> parts(sweeps.size());
+            for (size_t i = sweeps.size(); i-- > 0;) { // the last sweep varies fastest
+                const std::string& v = sweeps[i].values[rest % sweeps[i].values.size()];
+                rest /= sweeps[i].values.size();
+                geometry::applySetting(cfg.settings, sweeps[i].key, v);
+                parts[i] = sweeps[i].key + "=" + v;
+            }
+            for (const auto& p : parts) label += " " + p;
+            cfg.label = label;
+            out.push_back(std::move(cfg));
+        }
+    }
+    return out;
+}
+
+void addBenchCommand(CLI::App& cmd, BenchOptions& o) {
+    cmd.add_option("--scene", o.scene, "Scene file with canonical views (or a built-in name / mesh)")->capture_default_str();
+    cmd.add_option("--view", o.views, "Canonical view to measure (repeatable; default: every view of the scene)");
+    cmd.add_option("--sweep", o.sweeps, "key=v1,v2,...: one configuration per value (repeatable: all combinations)");
+    cmd.add_option("--preset", o.presets, "A configuration from a preset file (repeatable; default: the defaults)");
+    cmd.add_option("--set", o.assignments, "key=value applied to every configuration (repeatable)");
+    cmd.add_option("--frames", o.frames, "Timed frames per configuration and view")->check(CLI::Range(1, 10000))->capture_default_str();
+    // At least one: llvmpipe reports a bogus GL_TIME_ELAPSED (hours) for a new renderer's first frame.
+    cmd.add_option("--warmup", o.warmup, "Untimed frames first (at least 1)")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd.add_option_function<std::string>(
+        "--size", [&o](const std::string& s) { o.size = parseSize(s); }, "Eye view size WxH (default 1280x720)");
+    cmd.add_option("--out", o.out, "Output folder")->capture_default_str();
+    cmd.add_option("--backend", o.backend, "auto (EGL on a GPU, else OSMesa), egl, osmesa")
+        ->check(CLI::IsMember({"auto", "egl", "osmesa"}))
+        ->capture_default_str();
+    cmd.add_flag("--truth", o.truth, "Also measure misclassification against ray-traced truth (Embree)");
+}
+
+namespace {
+
+struct Row {
+    std::string config, preset, view;
+    double gamma = 0, gpuMs = 0, cpuMs = 0, p95 = 0, falseLit = 0, falseShadow = 0, memoryMiB = 0;
+    bool truth = false;
+};
+
+ui::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows, bool gpuTimes) {
+    // One point per configuration: mean frame time and geometric-mean p95 over the views.
+    std::vector<ui::TradeoffPoint> points;
+    for (const auto& cfg : configs) {
+        double t = 0, logE = 0;
+        int n = 0;
+        for (const Row& r : rows)
+            if (r.config == cfg.label && std::isfinite(r.p95) && r.p95 > 0) {
+                t += gpuTimes ? r.gpuMs : r.cpuMs;
+                logE += std::log(r.p95);
+                ++n;
+            }
+        points.push_back({cfg.label, cfg.preset, n ? t / n : NAN, n ? std::exp(logE / n) : NAN});
+    }
+    ui::Chart c = ui::tradeoffChart(points, gpuTimes ? "frame time, GPU median (ms)" : "frame time, CPU median (ms)");
+    if (rows.size() > configs.size()) c.title += ", mean over views";
+    return c;
+}
+
+} // namespace
+
+int runBench(const BenchOptions& o) {
+    const std::vector<BenchConfiguration> configs = benchConfigurations(o);
+    geometry::SceneFile file = geometry::resolveScene(o.scene);
+    std::vector<std::pair<std::string, geometry::CanonicalView>> views;
+    if (o.views.empty())
+        for (const auto& v : file.views) views.emplace_back(v);
+    for (const auto& name : o.views) {
+        const auto it = file.views.find(name);
+        if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
+        views.emplace_back(*it);
+    }
+    if (views.empty()) views.emplace_back("default", geometry::CanonicalView{file.scene.camera, file.scene.light});
+    std::filesystem::create_directories(o.out);
+
+    auto context = renderer::createHeadlessContext(renderer::parseBackend(o.backend));
+    geometry::Scene& scene = file.scene;
+    renderer::Renderer r(scene);
+    std::unique_ptr<geometry::GroundTruth> truth;
+    if (o.truth) truth = std::make_unique<geometry::GroundTruth>(scene);
+    std::cerr << "bench: " << configs.size() << " configuration(s) × " << views.size() << " view(s), " << o.frames
+              << " frames each on " << context->rendererString() << '\n';
+
+    std::vector<Row> rows;
+    bool gpuTimes = true;
+    const size_t total = configs.size() * views.size();
+    for (const auto& cfg : configs)
+        for (const auto& [viewName, view] : views) {
+            scene.camera = view.camera;
+            scene.light = view.light;
+            renderer::ViewOptions vo;
+            vo.lightViewSize = 16; // the light views are not what is measured
+            vo.overlays = false;
+            vo.unwarped = false;
+            std::vector<double> gpu, cpu;
+            geometry::ShadowPlan plan;
+            for (int i = 0; i < o.warmup + o.frames; ++i) {
+                const auto t0 = std::chrono::steady_clock::now();
+                plan = geometry::planShadows(cfg.settings, scene.bounds(), scene.camera, scene.light, o.size);
+                r.render(plan, o.size, vo);
+                glFinish();
+                const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                const renderer::PassTimes& t = r.waitForTimings();
+                if (i < o.warmup) continue;
+                cpu.push_back(cpuMs);
+                if (t.valid) gpu.push_back(t.frame());
+            }
+            if (gpu.empty()) gpuTimes = false;
+            const renderer::Inspection in = renderer::inspect(r, plan, truth.get());
+            Row row;
+            row.config = cfg.label;
+            row.preset = cfg.preset;
+            row.view = viewName;
+            row.gamma = plan.gammaDeg;
+            row.gpuMs = median(gpu);
+            row.cpuMs = median(cpu);
+            row.p95 = in.aliasing.p95;
+            row.memoryMiB = double(r.stats().shadowMemoryBytes) / (1024.0 * 1024.0);
+            if (in.truth) {
+                row.truth = true;
+                row.falseLit = in.truth->falseLit;
+                row.falseShadow = in.truth->falseShadow;
+            }
+            rows.push_back(row);
+            std::cerr << "[" << rows.size() << "/" << total << "] " << cfg.label << " @ " << viewName << ": GPU "
+                      << row.gpuMs << " ms, CPU " << row.cpuMs << " ms, p95 m " << row.p95 << '\n';
+        }
+    if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
+        throw std::runtime_error("GL error: " + errors);
+
+    const std::filesystem::path dir(o.out);
+    {
+        std::ofstream csv(dir / "results.csv");
+        csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
+               "shadow_memory_mib,frames,width,height,renderer\n";
+        for (const Row& w : rows) {
+            csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
+                << w.cpuMs << ',' << w.p95 << ',';
+            if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
+            else csv << ",,";
+            csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.size.width << ',' << o.size.height << ",\""
+                << context->rendererString() << "\"\n";
+        }
+        if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
+    }
+    const ui::Chart chart = benchChart(configs, rows, gpuTimes);
+    ui::writeSvg(dir / "tradeoff.svg", chart, 1000, 620);
+    renderer::writePng((dir / "tradeoff.png").string(), ui::renderChartImage(chart, 1000, 620));
+    for (const char* f : {"results.csv", "tradeoff.svg", "tradeoff.png"}) std::cout << (dir / f).string() << '\n';
+    return 0;
+}
+
+} // namespace app

@@ -1,0 +1,75 @@
+#include "dashboard_setup.h"
+
+#include "geometry/builtin_scenes.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <system_error>
+
+namespace app {
+
+namespace fs = std::filesystem;
+
+fs::path resourceDirectory() {
+    std::error_code ec;
+    const auto usable = [&](const fs::path& p) { return !p.empty() && fs::is_directory(p / "presets", ec); };
+    if (const char* env = std::getenv("SHADOWSCOPE_RESOURCES"); env && *env && usable(env)) return env;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec)
+        for (fs::path dir = exe.parent_path(); !dir.empty() && dir != dir.root_path(); dir = dir.parent_path())
+            if (usable(dir / "resources")) return dir / "resources";
+#ifdef SHADOWSCOPE_SOURCE_DIR
+    if (usable(fs::path(SHADOWSCOPE_SOURCE_DIR) / "resources")) return fs::path(SHADOWSCOPE_SOURCE_DIR) / "resources";
+#endif
+    return {};
+}
+
+namespace {
+std::vector<std::string> jsonFiles(const fs::path& dir) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+        if (entry.path().extension() == ".json") out.push_back(entry.path().string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+} // namespace
+
+std::vector<std::string> sceneChoices() {
+    std::vector<std::string> out = geometry::builtinSceneNames();
+    if (const fs::path r = resourceDirectory(); !r.empty())
+        for (auto& f : jsonFiles(r / "scenes")) out.push_back(std::move(f));
+    return out;
+}
+
+std::vector<std::string> presetChoices() {
+    const fs::path r = resourceDirectory();
+    return r.empty() ? std::vector<std::string>{} : jsonFiles(r / "presets");
+}
+
+ui::LoadedScene loadDashboardScene(const RenderOptions& options) {
+    ui::LoadedScene loaded;
+    loaded.source = options.scene;
+    loaded.file = loadSceneFile(options);
+    loaded.truth = std::make_unique<geometry::GroundTruth>(loaded.file.scene);
+    return loaded;
+}
+
+ui::DashboardState initialDashboardState(const ui::LoadedScene& scene, const RenderOptions& options) {
+    ui::DashboardState s;
+    s.settings[0] = s.settings[1] = options.settings;
+    s.camera = ui::OrbitCamera::from(scene.file.scene.camera);
+    s.sun = ui::SunAngles::from(scene.file.scene.light.direction);
+    return s;
+}
+
+ui::DashboardOptions dashboardOptions(const RenderOptions& options) {
+    ui::DashboardOptions d;
+    d.screenshotDir = options.out;
+    d.sceneChoices = sceneChoices();
+    d.presetChoices = presetChoices();
+    d.view = options.view;
+    return d;
+}
+
+} // namespace app

@@ -1,0 +1,82 @@
+#include "sweep_frame.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+namespace app {
+
+namespace {
+
+double now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string duration(double s) {
+    char buf[32];
+    if (s < 90) std::snprintf(buf, sizeof buf, "%.0f s", s);
+    else std::snprintf(buf, sizeof buf, "%.0f min", s / 60);
+    return buf;
+}
+
+} // namespace
+
+SweepRenderer::SweepRenderer(const geometry::Scene& scene, const std::string& backend)
+    : scene_(scene), context_(renderer::createHeadlessContext(renderer::parseBackend(backend))),
+      renderer_(std::make_unique<renderer::Renderer>(scene_)), truth_(scene_) {}
+
+SweepFrame SweepRenderer::render(const geometry::ShadowSettings& settings, const geometry::Camera& camera,
+                                 const geometry::DirectionalLight& light, const geometry::Viewport& viewport) {
+    context_->makeCurrent();
+    SweepFrame f;
+    f.plan = geometry::planShadows(settings, scene_.bounds(), camera, light, viewport);
+    renderer::ViewOptions views;
+    views.lightViewSize = 16; // the light views are not looked at: keep their cost negligible
+    views.overlays = false;
+    views.unwarped = false;
+    renderer_->render(f.plan, viewport, views);
+    f.in = renderer::inspect(*renderer_, f.plan, nullptr);
+    const bool same = f.plan.eyeView == truthView_ && f.plan.eyeProj == truthProj_ && f.plan.l == truthLight_ &&
+                      truthOccluded_.size() == f.in.positions.size();
+    if (!same) {
+        truthOccluded_ = truth_.occluded(f.in.positions, f.in.normals, f.plan.l);
+        for (size_t i = 0; i < truthOccluded_.size(); ++i)
+            if (!f.in.receiver[i]) truthOccluded_[i] = 0;
+        truthView_ = f.plan.eyeView;
+        truthProj_ = f.plan.eyeProj;
+        truthLight_ = f.plan.l;
+    }
+    f.in.occluded = truthOccluded_;
+    f.in.truth = geometry::truthStats(f.in.shadow, *f.in.occluded, f.in.receiver);
+    f.glErrors = renderer::takeGlErrors();
+    return f;
+}
+
+SweepProgress::SweepProgress(std::string label, int total)
+    : label_(std::move(label)), total_(total), terminal_(isatty(STDERR_FILENO) == 1), start_(now()) {}
+
+SweepProgress::~SweepProgress() {
+    if (!shown_) return;
+    if (std::uncaught_exceptions() > 0) std::cerr << "\r\033[K" << std::flush;
+    else std::cerr << "\r\033[K" << label_ << ": " << total_ << " frames in " << duration(now() - start_) << '\n' << std::flush;
+}
+
+void SweepProgress::step(int done, const std::string& detail) {
+    if (!terminal_) return;
+    const double t = now();
+    if (last_ >= 0 && t - last_ < 0.2 && done < total_) return;
+    last_ = t;
+    shown_ = true;
+    const double elapsed = t - start_;
+    std::string eta;
+    if (done > 0 && done < total_) eta = ", ~" + duration(elapsed / done * (total_ - done)) + " left";
+    const int percent = total_ > 0 ? int(std::lround(100.0 * done / total_)) : 100;
+    std::cerr << "\r\033[K" << label_ << ": " << done << '/' << total_ << " (" << percent << " %), " << detail << ", "
+              << duration(elapsed) << eta << std::flush;
+}
+
+} // namespace app

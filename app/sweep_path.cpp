@@ -1,0 +1,175 @@
+// `shadowscope sweep path`: a camera or light path of a scene file, frame by frame, with the
+// flicker and seam measures of geometry/stability_metrics.h.
+#include "sweep_command.h"
+#include "sweep_frame.h"
+
+#include "geometry/path_interpolation.h"
+#include "geometry/scene_file.h"
+#include "geometry/stability_metrics.h"
+#include "ui/chart.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+namespace app {
+
+namespace {
+
+struct PathRow {
+    int frame = 0;
+    double t = 0, gammaDeg = 0, angleDeg = 0;
+    geometry::FlickerStats flicker;
+    geometry::SeamStats seam;
+    double p95 = 0, falseLit = 0, falseShadow = 0, nPrime = 0;
+    bool glError = false;
+};
+
+std::string pathCsv(const std::vector<PathRow>& rows) {
+    std::string out = "frame,t,gamma_deg,angle_deg,flicker,flicker_pixels,seam_median,seam_p95,seam_pairs,"
+                      "seam_raw_median,seam_baseline,p95,false_lit,false_shadow,n_prime,gl_errors\n";
+    const auto num = formatCsvNumber;
+    for (const PathRow& r : rows)
+        out += std::to_string(r.frame) + "," + num(r.t) + "," + num(r.gammaDeg) + "," + num(r.angleDeg) + "," +
+               num(r.flicker.rate) + "," + std::to_string(r.flicker.stable) + "," + num(r.seam.median) + "," +
+               num(r.seam.p95) + "," + std::to_string(r.seam.pairs) + "," + num(r.seam.rawMedian) + "," +
+               num(r.seam.baselineMedian) + "," +
+               num(r.p95) + "," + num(r.falseLit) + "," + num(r.falseShadow) + "," + num(r.nPrime) + "," +
+               (r.glError ? "1" : "0") + "\n";
+    return out;
+}
+
+ui::ChartSeries series(const std::vector<PathRow>& rows, std::string name, int colour, double (*value)(const PathRow&),
+                       bool skipFirst = false) {
+    ui::ChartSeries s;
+    s.name = std::move(name);
+    s.colour = ui::paletteColour(colour);
+    for (const PathRow& r : rows)
+        if (!(skipFirst && r.frame == 0)) s.points.push_back({double(r.frame), value(r)});
+    return s;
+}
+
+std::string pathSvg(const std::vector<PathRow>& rows, const std::string& title) {
+    const ui::ChartAxis frames{"frame", false, std::nullopt, std::nullopt};
+    const auto chart = [&](std::string title, ui::ChartAxis y) {
+        ui::Chart c;
+        c.title = std::move(title);
+        c.x = frames;
+        c.y = std::move(y);
+        return c;
+    };
+    ui::Chart flicker = chart("Flicker: stable-truth pixels that flip", {"fraction", false, 0.0, std::nullopt});
+    flicker.series.push_back(series(rows, "flicker", 0, [](const PathRow& r) { return r.flicker.rate; }, true));
+    ui::Chart seam = chart("Seams: jump of m across split boundaries", {"median seam (1 = none)", false, 1.0, std::nullopt});
+    seam.series.push_back(series(rows, "across split boundaries", 1, [](const PathRow& r) {
+        return r.seam.pairs ? r.seam.median : NAN; // no boundary on screen: no point
+    }));
+    seam.series.push_back(series(rows, "inside one split (baseline)", 2, [](const PathRow& r) { return r.seam.baselineMedian; }));
+    ui::Chart p95 = chart("Aliasing error m, p95 over receivers", {"p95 m", true, std::nullopt, std::nullopt});
+    p95.series.push_back(series(rows, "p95 m", 3, [](const PathRow& r) { return r.p95; }));
+    return ui::chartsToSvg(title, {flicker, seam, p95}, 3, 420, 300);
+}
+
+double mean(const std::vector<PathRow>& rows, double (*value)(const PathRow&), bool (*use)(const PathRow&)) {
+    double sum = 0;
+    int n = 0;
+    for (const PathRow& r : rows)
+        if (use(r)) sum += value(r), ++n;
+    return n ? sum / n : 0.0;
+}
+
+} // namespace
+
+int runSweepPath(const SweepPathOptions& o) {
+    if (o.frames < 1 || o.frames > kMaxPathFrames)
+        throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " must be within 1.." + std::to_string(kMaxPathFrames));
+    geometry::validateOrThrow(o.render.settings);
+    geometry::SceneFile file = geometry::resolveScene(o.render.scene);
+    const auto it = file.paths.find(o.path);
+    if (it == file.paths.end()) {
+        std::string names;
+        for (const auto& [name, p] : file.paths) names += (names.empty() ? "" : ", ") + name;
+        throw std::invalid_argument("--path " + o.path + ": scene '" + o.render.scene + "' has no such path (" +
+                                    (names.empty() ? std::string("it has none") : "available: " + names) + ")");
+    }
+    const geometry::ScenePath path = it->second;
+    geometry::Scene scene = std::move(file.scene);
+    if (!o.render.view.empty()) {
+        const auto view = file.views.find(o.render.view);
+        if (view == file.views.end())
+            throw std::invalid_argument("--view " + o.render.view + ": scene '" + o.render.scene + "' has no such view");
+        scene.camera = view->second.camera;
+        scene.light = view->second.light;
+    }
+    if (o.render.camera) scene.camera.eye = o.render.camera->eye, scene.camera.target = o.render.camera->target;
+    if (o.render.light) scene.light.direction = *o.render.light;
+    std::error_code ec;
+    std::filesystem::create_directories(o.render.out, ec);
+    if (ec) throw std::runtime_error("cannot create output folder " + o.render.out + ": " + ec.message());
+    const std::filesystem::path dir(o.render.out);
+
+    SweepRenderer sweeper(scene, o.render.backend);
+    const int w = o.render.size.width, h = o.render.size.height;
+    std::vector<PathRow> rows;
+    std::vector<std::string> glErrors;
+    SweepFrame previous;
+    {
+        SweepProgress progress("sweep path " + o.path, o.frames);
+        for (int i = 0; i < o.frames; ++i) {
+            const double t = geometry::pathParameter(i, o.frames);
+            const geometry::Camera camera = path.cameras.empty() ? scene.camera : geometry::cameraAlongPath(path.cameras, t);
+            const geometry::DirectionalLight light{path.lights.empty() ? scene.light.direction
+                                                                       : geometry::lightAlongPath(path.lights, t)};
+            geometry::validateFrustum(camera.near, camera.far, camera.fovYDeg);
+            SweepFrame f = sweeper.render(o.render.settings, camera, light, o.render.size);
+            PathRow r;
+            r.frame = i;
+            r.t = t;
+            r.gammaDeg = f.plan.gammaDeg;
+            r.angleDeg = f.plan.lightViewAngleDeg;
+            r.seam = geometry::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals, camera.eye, w, h);
+            if (i > 0)
+                r.flicker = geometry::flickerStats(previous.in.shadow, *previous.in.occluded, previous.in.receiver,
+                                                   f.in.shadow, *f.in.occluded, f.in.receiver);
+            r.p95 = f.in.aliasing.p95;
+            r.falseLit = f.in.truth->falseLit;
+            r.falseShadow = f.in.truth->falseShadow;
+            r.nPrime = f.plan.splits.front().nPrime;
+            r.glError = !f.glErrors.empty();
+            if (r.glError) glErrors.push_back("frame " + std::to_string(i) + ": " + f.glErrors);
+            rows.push_back(r);
+            previous = std::move(f);
+            progress.step(i + 1, "frame " + std::to_string(i));
+        }
+    }
+    const std::filesystem::path csv = dir / "path.csv", svg = dir / "path.svg";
+    {
+        std::ofstream out(csv, std::ios::binary);
+        out << pathCsv(rows);
+        out.close();
+        if (!out) throw std::runtime_error("cannot write " + csv.string());
+    }
+    const std::string title = "Path '" + o.path + "' of " + scene.name + ", " + std::to_string(o.frames) + " frames, " +
+                              std::to_string(w) + "x" + std::to_string(h) + ", " +
+                              std::to_string(o.render.settings.resolution) + "² maps, " +
+                              std::to_string(o.render.settings.splits.count) + " split(s) " +
+                              std::string(geometry::splitSchemeName(o.render.settings.splits.scheme));
+    ui::writeSvgText(svg, pathSvg(rows, title));
+    for (const auto& e : glErrors) std::cerr << "shadowscope: GL error: " << e << '\n';
+    std::cout << csv.string() << '\n' << svg.string() << '\n';
+    const auto all = [](const PathRow&) { return true; };
+    const auto afterFirst = [](const PathRow& r) { return r.frame > 0; };
+    const auto withSeams = [](const PathRow& r) { return r.seam.pairs > 0; };
+    std::cout << "summary: frames " << o.frames
+              << ", flicker mean " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.flicker.rate; }, afterFirst))
+              << ", seam median mean " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.seam.median; }, withSeams))
+              << " (raw " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.seam.rawMedian; }, withSeams))
+              << ", baseline " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.seam.baselineMedian; }, all))
+              << ", crossings per frame " << formatCsvNumber(mean(rows, [](const PathRow& r) { return double(r.seam.pairs); }, all))
+              << "), p95 mean " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.p95; }, all)) << '\n';
+    return glErrors.empty() ? 0 : 1;
+}
+
+} // namespace app

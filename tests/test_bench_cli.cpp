@@ -1,0 +1,100 @@
+// `shadowscope bench`: configurations × views, results.csv, the trade-off chart with its Pareto front.
+#include "cli_test_util.h"
+#include "renderer/image.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+using testutil::runShadowscope;
+
+namespace {
+
+std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& p) {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream in(p);
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> cells;
+        std::string cell;
+        bool quoted = false;
+        for (char c : line) {
+            if (c == '"') quoted = !quoted;
+            else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
+            else cell += c;
+        }
+        cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+} // namespace
+
+TEST(Bench, WritesOneRowPerConfigurationAndViewAndTheTradeoffChart) {
+    const auto dir = testutil::freshDir("bench");
+    const std::string presets = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/presets/";
+    const auto r = runShadowscope("bench --backend osmesa --scene " + std::string(SHADOWSCOPE_SOURCE_DIR) +
+                                  "/resources/scenes/plane.json --preset " + presets + "ssm.json --preset " + presets +
+                                  "paper.json --sweep filter.kernel=1,5 --set filter.type=pcf --frames 2 --warmup 1 "
+                                  "--size 160x120 --truth --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto rows = readCsv(dir / "results.csv");
+    ASSERT_FALSE(rows.empty());
+    const auto& header = rows[0];
+    const auto col = [&](const std::string& name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(it, header.end()) << name;
+        return size_t(it - header.begin());
+    };
+    // plane.json has 2 canonical views: 2 presets × 2 kernels × 2 views.
+    ASSERT_EQ(rows.size(), 1u + 2 * 2 * 2) << slurp(dir / "results.csv");
+    double ssmP95 = 0, paperP95 = 0;
+    for (size_t i = 1; i < rows.size(); ++i) {
+        const auto& row = rows[i];
+        ASSERT_EQ(row.size(), header.size());
+        EXPECT_GT(std::stod(row[col("gpu_ms_median")]), 0.0);
+        EXPECT_GT(std::stod(row[col("cpu_ms_median")]), 0.0);
+        EXPECT_GT(std::stod(row[col("shadow_memory_mib")]), 0.0);
+        const double mis = std::stod(row[col("misclassified")]);
+        EXPECT_GE(mis, 0.0);
+        EXPECT_LE(mis, 1.0);
+        if (row[col("preset")] == "ssm") ssmP95 += std::stod(row[col("p95")]);
+        if (row[col("preset")] == "paper") paperP95 += std::stod(row[col("p95")]);
+    }
+    EXPECT_GT(ssmP95, paperP95) << "the warped, split maps alias less than the uniform one";
+    const std::string svg = slurp(dir / "tradeoff.svg");
+    EXPECT_NE(svg.find("Pareto front"), std::string::npos);
+    EXPECT_NE(svg.find("ssm.json / paper.json"), std::string::npos);
+    EXPECT_NE(svg.find("paper filter.kernel=5"), std::string::npos);
+    const renderer::Image png = renderer::readImageFile((dir / "tradeoff.png").string());
+    EXPECT_EQ(png.width, 1000);
+    EXPECT_EQ(png.height, 620);
+    size_t red = 0; // the highlighted ssm/paper markers
+    for (int y = 0; y < png.height; ++y)
+        for (int x = 0; x < png.width; ++x) {
+            const uint8_t* p = png.at(x, y);
+            red += p[0] > 190 && p[1] < 80 && p[2] < 80;
+        }
+    EXPECT_GT(red, 100u);
+}
+
+TEST(Bench, BadSweepsAreOneLineErrors) {
+    for (const std::string& bad : {"--sweep filter.kernel", "--sweep nonsense=1,2", "--sweep filter.kernel=2",
+                                   "--sweep shadow_map.resolution=abc"}) {
+        const auto r = runShadowscope("bench --backend osmesa --scene plane --frames 1 --out /tmp/unused " + bad);
+        EXPECT_NE(r.exitCode, 0) << bad;
+        EXPECT_NE(r.output.find("error"), std::string::npos) << bad << ": " << r.output;
+        EXPECT_LE(std::count(r.output.begin(), r.output.end(), '\n'), 2) << r.output;
+    }
+    const auto unknownView = runShadowscope("bench --backend osmesa --scene plane --view nowhere --frames 1 --out /tmp/unused");
+    EXPECT_NE(unknownView.exitCode, 0);
+    EXPECT_NE(unknownView.output.find("nowhere"), std::string::npos);
+}

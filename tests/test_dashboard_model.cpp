@@ -1,0 +1,241 @@
+// The dashboard's pure parts: layout, image zoom/pan, camera rig, config file, control groups.
+#include "ui/dashboard.h"
+#include "ui/dashboard_config.h"
+#include "ui/dashboard_layout.h"
+#include "ui/image_view.h"
+#include "ui/orbit_camera.h"
+#include "geometry/settings.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+using namespace ui;
+
+namespace {
+
+bool inside(const Rect& inner, const Rect& outer) {
+    return inner.x >= outer.x && inner.y >= outer.y && inner.right() <= outer.right() + 1e-3f &&
+           inner.bottom() <= outer.bottom() + 1e-3f;
+}
+bool overlaps(const Rect& a, const Rect& b) {
+    return a.x < b.right() && b.x < a.right() && a.y < b.bottom() && b.y < a.bottom() && a.w > 0 && b.w > 0 &&
+           a.h > 0 && b.h > 0;
+}
+
+} // namespace
+
+TEST(DashboardLayout, PanelsTileTheWindowWithoutOverlap) {
+    for (const auto& [w, h, scale] : {std::tuple{1600.f, 900.f, 1.f}, {1280.f, 720.f, 1.f}, {3840.f, 2160.f, 2.f}, {640.f, 400.f, 1.f}}) {
+        const DashboardRects r = layoutDashboard(w, h, {}, scale);
+        const Rect window{0, 0, w, h};
+        const std::vector<Rect> panels = {r.controls, r.eye, r.light, r.heatmap, r.stats, r.status};
+        for (size_t i = 0; i < panels.size(); ++i) {
+            EXPECT_TRUE(inside(panels[i], window)) << i << " at " << w << "x" << h;
+            EXPECT_GT(panels[i].w, 0.f) << i;
+            EXPECT_GT(panels[i].h, 0.f) << i;
+            EXPECT_EQ(panels[i].x, std::floor(panels[i].x)) << "whole pixels";
+            for (size_t j = i + 1; j < panels.size(); ++j) EXPECT_FALSE(overlaps(panels[i], panels[j])) << i << " " << j;
+        }
+        EXPECT_FLOAT_EQ(r.status.bottom(), h);
+        EXPECT_LE(r.heatmap.right(), w);
+        EXPECT_GE(r.heatmap.right(), w - 1.f) << "the views use the full width";
+        EXPECT_FLOAT_EQ(r.eye.y, r.light.y);
+        EXPECT_FLOAT_EQ(r.eye.h, r.heatmap.h);
+    }
+}
+
+TEST(DashboardLayout, ScaleGrowsFixedSizes) {
+    const DashboardRects a = layoutDashboard(3000, 2000, {}, 1.f), b = layoutDashboard(3000, 2000, {}, 2.f);
+    EXPECT_FLOAT_EQ(b.controls.w, 2.f * a.controls.w);
+    EXPECT_FLOAT_EQ(b.status.h, 2.f * a.status.h);
+}
+
+TEST(DashboardLayout, DegenerateWindowsGiveEmptyRectsNotNaN) {
+    for (const auto& [w, h] : {std::pair{0.f, 0.f}, {-5.f, 10.f}, {std::numeric_limits<float>::quiet_NaN(), 100.f},
+                               {1.f, 1.f}, {std::numeric_limits<float>::infinity(), 5.f}}) {
+        const DashboardRects r = layoutDashboard(w, h, {}, 1.f);
+        for (const Rect& p : {r.controls, r.eye, r.light, r.heatmap, r.stats, r.status}) {
+            EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.w) && std::isfinite(p.h));
+            EXPECT_GE(p.w, 0.f);
+            EXPECT_GE(p.h, 0.f);
+        }
+    }
+}
+
+TEST(DashboardLayout, SplittersMoveTheirPanelsAndStayClamped) {
+    const LayoutFractions f;
+    const DashboardRects before = layoutDashboard(1600, 900, f, 1.f);
+    const LayoutFractions g = dragSplitter(f, Splitter::EyeLight, 100.f, 0.f, 1600, 900, 1.f);
+    const DashboardRects after = layoutDashboard(1600, 900, g, 1.f);
+    EXPECT_NEAR(after.eye.w - before.eye.w, 100.f, 1.5f);
+    EXPECT_NEAR(after.light.w - before.light.w, -100.f, 1.5f);
+    EXPECT_FLOAT_EQ(after.heatmap.w, before.heatmap.w);
+    const LayoutFractions up = dragSplitter(f, Splitter::Stats, 0.f, -50.f, 1600, 900, 1.f);
+    EXPECT_GT(layoutDashboard(1600, 900, up, 1.f).stats.h, before.stats.h);
+    // Dragging far past the limits keeps every panel usable.
+    LayoutFractions far = f;
+    for (int i = 0; i < 50; ++i) far = dragSplitter(far, Splitter::EyeLight, 1e4f, 0.f, 1600, 900, 1.f);
+    const DashboardRects r = layoutDashboard(1600, 900, far, 1.f);
+    EXPECT_GT(r.light.w, 50.f);
+    EXPECT_GT(r.heatmap.w, 50.f);
+    const LayoutFractions nan = clampFractions({std::nanf(""), std::nanf(""), std::nanf(""), std::nanf("")});
+    EXPECT_FLOAT_EQ(nan.eyeEnd, LayoutFractions{}.eyeEnd);
+}
+
+TEST(ImageView, FitShowsTheWholeImageCentred) {
+    const Rect panel{10, 20, 400, 300};
+    const ImagePlacement p = placeImage({}, panel, 800, 400); // 2:1 into 4:3 → letterboxed
+    EXPECT_FLOAT_EQ(p.scale, 0.5f);
+    EXPECT_FLOAT_EQ(p.screen.w, 400.f);
+    EXPECT_FLOAT_EQ(p.screen.h, 200.f);
+    EXPECT_FLOAT_EQ(p.screen.y, 20.f + 50.f);
+    EXPECT_EQ(p.uvMin, glm::vec2(0.f));
+    EXPECT_EQ(p.uvMax, glm::vec2(1.f));
+}
+
+TEST(ImageView, PixelUnderTheCursorIsExact) {
+    const Rect panel{0, 0, 100, 100};
+    ImageView oneToOneView;
+    oneToOneView.zoom = 1.f;
+    // A 100×100 image at 1:1 fills the panel exactly: screen (x+0.5, y+0.5) is pixel (x, y).
+    for (int y : {0, 17, 99})
+        for (int x : {0, 42, 99}) {
+            const auto px = pixelAt(oneToOneView, panel, 100, 100, {x + 0.5f, y + 0.5f});
+            ASSERT_TRUE(px);
+            EXPECT_EQ(*px, glm::ivec2(x, y));
+        }
+    EXPECT_FALSE(pixelAt(oneToOneView, panel, 100, 100, {-1.f, 5.f}));
+    EXPECT_FALSE(pixelAt(oneToOneView, panel, 100, 100, {std::nanf(""), 5.f}));
+}
+
+TEST(ImageView, ZoomKeepsThePointUnderTheCursor) {
+    const Rect panel{50, 50, 320, 240};
+    ImageView v;
+    const glm::vec2 cursor(100.f, 120.f);
+    const auto before = pixelAt(v, panel, 640, 480, cursor);
+    ASSERT_TRUE(before);
+    for (int i = 0; i < 6; ++i) {
+        v = zoomAround(v, panel, 640, 480, cursor, 1.6f);
+        const auto after = pixelAt(v, panel, 640, 480, cursor);
+        ASSERT_TRUE(after);
+        EXPECT_LE(std::abs(after->x - before->x), 1) << "zoom step " << i;
+        EXPECT_LE(std::abs(after->y - before->y), 1) << "zoom step " << i;
+    }
+    EXPECT_GT(v.zoom, 5.f);
+    EXPECT_LE(placeImage(v, panel, 640, 480).screen.w, panel.w);
+    // Zoom is bounded.
+    for (int i = 0; i < 100; ++i) v = zoomAround(v, panel, 640, 480, cursor, 10.f);
+    EXPECT_FLOAT_EQ(v.zoom, kMaxZoom);
+}
+
+TEST(ImageView, PanMovesTheImageWithTheDrag) {
+    const Rect panel{0, 0, 200, 200};
+    ImageView v;
+    v.zoom = 4.f;
+    const auto before = pixelAt(v, panel, 200, 200, {100.f, 100.f});
+    v = panBy(v, panel, 200, 200, {40.f, 0.f}); // drag right: the image follows the mouse
+    const auto after = pixelAt(v, panel, 200, 200, {140.f, 100.f});
+    ASSERT_TRUE(before && after);
+    EXPECT_EQ(*before, *after);
+    EXPECT_FLOAT_EQ(oneToOne(v).zoom, 1.f);
+}
+
+TEST(OrbitCamera, PanFlyAndLookMoveAsNamed) {
+    geometry::Camera c;
+    c.eye = {0, 0, 10};
+    c.target = {0, 0, 0};
+    OrbitCamera o = OrbitCamera::from(c);
+    EXPECT_NEAR(glm::length(o.eye() - c.eye), 0.f, 1e-4f);
+    OrbitCamera panned = o;
+    panned.pan(-100.f, 0.f, 500.f, 60.f); // drag left: the scene moves left, the camera right
+    EXPECT_GT(panned.target.x, 0.f);
+    EXPECT_NEAR(glm::length(panned.eye() - panned.target), o.distance, 1e-4f);
+    OrbitCamera flown = o;
+    flown.fly(2.f, 0.f, 0.f);
+    EXPECT_NEAR(flown.eye().z, 8.f, 1e-4f) << "forward is towards the target";
+    OrbitCamera looked = o;
+    looked.look(50.f, 0.f);
+    EXPECT_NEAR(glm::length(looked.eye() - o.eye()), 0.f, 1e-3f) << "looking keeps the eye";
+    EXPECT_GT(glm::length(looked.target - o.target), 0.1f);
+    OrbitCamera nan = o;
+    nan.rotate(std::nanf(""), std::nanf(""));
+    nan.pan(std::nanf(""), 1.f, 0.f, 60.f);
+    EXPECT_TRUE(std::isfinite(nan.eye().x));
+}
+
+TEST(DashboardConfig, RoundTripsSettingsViewsAndLayout) {
+    DashboardState s;
+    geometry::applySetting(s.settings[0], "warp.method", "lispsm");
+    geometry::applySetting(s.settings[1], "filter.kernel", "7");
+    s.views.heatmap = HeatmapKind::Truth;
+    s.views.compare = CompareMode::Split;
+    s.views.splitPosition = 0.25f;
+    s.layout.eyeEnd = 0.5f;
+    s.flySpeed = 42.f;
+    const WindowGeometry win{1234, 777};
+    const nlohmann::json j = dashboardToJson(s, win);
+    DashboardState back;
+    WindowGeometry backWin;
+    dashboardFromJson(nlohmann::json::parse(j.dump()), back, backWin);
+    EXPECT_EQ(dashboardToJson(back, backWin), j);
+    EXPECT_EQ(backWin.width, 1234);
+    EXPECT_EQ(back.views.heatmap, HeatmapKind::Truth);
+    EXPECT_FLOAT_EQ(back.layout.eyeEnd, 0.5f);
+}
+
+TEST(DashboardConfig, CorruptFilesAreReportedAndChangeNothing) {
+    const auto dir = std::filesystem::temp_directory_path() / ("shadowscope_config_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const auto path = dir / "dashboard.json";
+    DashboardState s;
+    WindowGeometry w;
+    EXPECT_FALSE(loadDashboardConfig(dir / "missing.json", s, w)) << "no file is not an error";
+    const std::vector<std::string> bad = {
+        "{not json",
+        "[1, 2]",
+        R"({"settings": {"warp": {"method": "nonsense"}}})",
+        R"({"views": {"heatmap": "rainbow"}})",
+        R"({"layout": {"window": [10, 10]}})",
+        R"({"layout": {"eye_end": "wide"}})",
+        R"({"surprise": 1})",
+        std::string("\0\1\2", 3),
+    };
+    for (const std::string& text : bad) {
+        std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+        DashboardState state;
+        geometry::applySetting(state.settings[0], "splits.count", "3");
+        WindowGeometry win;
+        const auto error = loadDashboardConfig(path, state, win);
+        ASSERT_TRUE(error) << text;
+        EXPECT_EQ(error->find('\n'), std::string::npos) << "one line";
+        EXPECT_EQ(state.settings[0].splits.count, 3) << "nothing applied: " << text;
+        EXPECT_EQ(win.width, WindowGeometry{}.width);
+    }
+    // A good file saves and loads back.
+    DashboardState good;
+    geometry::applySetting(good.settings[0], "bias.type", "slope");
+    ASSERT_FALSE(saveDashboardConfig(path, good, {800, 600}));
+    DashboardState loaded;
+    WindowGeometry win;
+    ASSERT_FALSE(loadDashboardConfig(path, loaded, win));
+    EXPECT_EQ(loaded.settings[0].bias.type, geometry::BiasType::Slope);
+    EXPECT_EQ(win.height, 600);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(DashboardControls, EverySettingBelongsToAShownGroup) {
+    const auto& groups = controlGroups();
+    for (const auto& info : geometry::settingsDeclaration()) {
+        const std::string g = settingGroup(info.key);
+        EXPECT_NE(std::find(groups.begin(), groups.end(), g), groups.end()) << info.key;
+        EXPECT_NE(g, "Views") << info.key << " would be drawn nowhere";
+    }
+    EXPECT_EQ(settingGroup("filter.kernel"), "Filtering");
+    EXPECT_EQ(settingGroup("splits.alpha"), "Partitions");
+    EXPECT_EQ(settingGroup("warp.method"), "Warp");
+}

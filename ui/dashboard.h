@@ -1,0 +1,194 @@
+#pragma once
+// The dashboard: eye view, the light's warped view and a heatmap side by side, a controls panel
+// generated from the settings declaration, a stats panel and a status bar with the pixel under
+// the cursor; A/B comparison of two settings sets; pixel inspector with zoom and pan.
+//
+// It only builds ImGui windows and asks the renderer for frames, so the same code runs in the
+// GLFW window (viewer.cpp) and headless into an image (dashboard_headless.cpp): same layout and
+// same pixels for the same state and size.
+#include "dashboard_state.h"
+#include "scene_loader.h"
+#include "tradeoff_chart.h"
+#include "renderer/image.h"
+#include "renderer/inspection.h"
+#include "renderer/renderer.h"
+#include "renderer/texture.h"
+
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ui {
+
+struct DashboardOptions {
+    std::filesystem::path screenshotDir = "screenshots";
+    std::vector<std::string> sceneChoices;  // built-in names and scene files for the scene picker
+    std::vector<std::string> presetChoices; // preset files for the preset picker
+    float uiScale = 1.f;
+    std::string view;                       // the canonical view the scene was opened at, if any
+};
+
+/// What the window front end reads from its input system for a frame (the dashboard itself
+/// sees the mouse through ImGui).
+struct FrameInput {
+    bool screenshot = false;  // the screenshot key
+    glm::vec3 fly{0.f};       // WASD/QE while fly-looking: (right, up, forward), −1..1 each
+    float deltaSeconds = 1.f / 60.f;
+};
+
+/// One pixel's exact values (the pixel inspector).
+struct PixelProbe {
+    ViewPanel panel = ViewPanel::Eye;
+    int side = 0;            // A or B
+    glm::ivec2 pixel{0};     // image pixel, x right, y down
+    // Eye and heatmap panels:
+    bool receiver = false, sky = true;
+    float viewDepth = 0, shadow = 1, m = 0, mapDepth = 0;
+    int split = -1;
+    glm::vec2 texel{0.f};
+    std::optional<bool> truthShadowed;
+    glm::vec3 position{0.f};
+    // Light panel:
+    glm::ivec2 mapTexel{0};
+    float storedDepth = 0;
+};
+
+class Dashboard {
+public:
+    /// Needs the current GL context (and an ImGui context for frame()).
+    Dashboard(LoadedScene scene, DashboardState state, DashboardOptions options);
+    ~Dashboard();
+    Dashboard(const Dashboard&) = delete;
+    Dashboard& operator=(const Dashboard&) = delete;
+
+    /// Renders the views at this frame's panel sizes and builds the ImGui windows for a
+    /// width × height window. Call between ImGui::NewFrame() and ImGui::Render().
+    void frame(float width, float height, const FrameInput& input = {});
+
+    [[nodiscard]] DashboardState& state() noexcept { return state_; }
+    [[nodiscard]] const DashboardRects& rects() const noexcept { return rects_; }
+    [[nodiscard]] const std::string& status() const noexcept { return status_; }
+    void setStatus(std::string message) { status_ = std::move(message); }
+    /// The monitor's content scale changed (fixed sizes in the layout follow it).
+    void setUiScale(float scale) noexcept { options_.uiScale = scale; }
+
+    /// The user asked for a screenshot this frame (key or button): the front end calls
+    /// saveScreenshots() with the window image after ImGui::Render().
+    [[nodiscard]] bool screenshotRequested() const noexcept { return screenshotRequested_; }
+    /// Writes eye.png, light.png, heatmap.png (and eye_b.png when comparing) and dashboard.png
+    /// into the screenshot folder; returns the paths written and shows them in the status bar.
+    std::vector<std::string> saveScreenshots(const renderer::Image& dashboard);
+
+    /// The images the panels show this frame (for screenshots and tests).
+    [[nodiscard]] renderer::Image eyeImage(int side = 0) const;
+    [[nodiscard]] renderer::Image lightImage() const;
+    [[nodiscard]] renderer::Image heatmapImage() const;
+
+    /// The last statistics of side A or B (nullopt before the first inspection).
+    [[nodiscard]] const renderer::Inspection* inspection(int side) const noexcept;
+    [[nodiscard]] const geometry::ShadowPlan& plan(int side) const noexcept { return sides_[side].plan; }
+    [[nodiscard]] const LoadedScene& scene() const noexcept { return scene_; }
+    [[nodiscard]] bool loading() const noexcept { return loader_.busy(); }
+    /// Selects a tab of the stats panel: 0 Stats, 1 n'(γ), 2 λ(θ), 3 m_z(z), 4 Trade-off.
+    void showTab(int tab) noexcept { requestedTab_ = tab; }
+    /// The trade-off sweep's results so far (Charts panel).
+    [[nodiscard]] const std::vector<TradeoffPoint>& tradeoffResults() const noexcept { return sweep_.results; }
+    [[nodiscard]] bool tradeoffRunning() const noexcept { return sweep_.running; }
+    /// Starts the trade-off sweep (the "Run sweep" button).
+    void startTradeoffSweep();
+    /// Starts loading a scene in the background; the current one stays until it succeeds.
+    void loadScene(const std::string& nameOrPath);
+
+private:
+    struct Side {
+        std::unique_ptr<renderer::Renderer> renderer;
+        geometry::ShadowPlan plan;
+        double planMicroseconds = 0;
+        std::optional<renderer::Inspection> inspection;
+        renderer::Image eye;
+        std::string inspectedKey;
+        geometry::Viewport size{0, 0};
+    };
+
+    void pollSceneLoad();
+    void adoptScene(LoadedScene loaded);
+    void renderViews(const FrameInput& input);
+    void updateInspection();
+    void updateHeatmap();
+    [[nodiscard]] bool comparing() const noexcept { return state_.views.compare != CompareMode::Off; }
+    [[nodiscard]] int shownSide() const noexcept { return comparing() ? state_.editing : 0; }
+
+    // Panels (dashboard_panels.cpp, dashboard_controls.cpp, dashboard_stats.cpp).
+    void drawSplitters(float width, float height);
+    void drawEyePanel(const FrameInput& input);
+    void drawLightPanel();
+    void drawHeatmapPanel();
+    void drawStatsPanel();
+    void drawStatsTable();
+    void drawInspector();
+    void drawAnalyticChart(int which); // 0 n'(γ), 1 λ(θ), 2 m_z(z)
+    void drawTradeoffTab();
+    void stepTradeoffSweep();
+    void exportChart(const Chart& chart, const std::string& name);
+    void drawStatusBar();
+    void drawControlsPanel();
+    void drawSceneGroup();
+    void drawCameraLightGroup();
+    void drawSettingsGroups();
+    void drawViewsGroup();
+    void drawPresetsGroup();
+    /// An image filling `area` with zoom/pan/hover handling; returns the hovered image pixel.
+    std::optional<glm::ivec2> imageArea(ViewPanel panel, GLuint texture, int width, int height, const Rect& area,
+                                        bool cameraControls, const FrameInput& input, const char* id);
+    void probeEye(int side, glm::ivec2 pixel, ViewPanel panel);
+    void probeLight(glm::ivec2 pixel);
+
+    LoadedScene scene_;
+    DashboardState state_;
+    DashboardOptions options_;
+    SceneLoader loader_;
+    std::array<Side, 2> sides_;
+    renderer::Texture2D heatmap_;
+    renderer::Image heatmapImage_;
+    std::string heatmapKey_;
+    DashboardRects rects_;
+    Rect eyeArea_, lightArea_, heatmapArea_;
+    int lightViewSize_ = 256;
+    std::string status_;
+    std::optional<PixelProbe> hovered_, pinned_;
+    bool screenshotRequested_ = false;
+    double cpuFrameMs_ = 0;
+    int sceneGeneration_ = 0;
+    std::string scenePath_;       // the picker's text field
+    std::string presetPath_;      // the preset field
+    std::string viewChoice_;      // the canonical view last applied
+    float targetGammaDeg_ = 30.f; // the "set γ" control
+    int requestedTab_ = -1;
+    bool flyLooking_ = false;     // right mouse held on the eye view: WASD/QE fly
+
+    /// The Charts panel's trade-off sweep, one configuration per dashboard frame so the UI stays live.
+    struct TradeoffSweep {
+        struct Config {
+            std::string label, preset;
+            geometry::ShadowSettings settings;
+        };
+        std::vector<Config> configs;
+        size_t next = 0;
+        bool running = false;
+        std::vector<TradeoffPoint> results;
+        std::unique_ptr<renderer::Renderer> renderer;
+        int generation = -1; // scene generation the renderer holds
+    } sweep_;
+};
+
+/// One line with a probe's values (status bar, inspector).
+[[nodiscard]] std::string describeProbe(const PixelProbe& p);
+
+/// Groups of the controls panel, in order, and the group a settings key belongs to.
+[[nodiscard]] const std::vector<std::string>& controlGroups();
+[[nodiscard]] std::string settingGroup(std::string_view key);
+
+} // namespace ui

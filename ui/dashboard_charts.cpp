@@ -1,0 +1,171 @@
+// The Charts tabs: the analytic curves at the current frustum and γ (n'(γ), λ(θ), m_z(z)), and the
+// speed/accuracy trade-off of the presets and the current settings, swept over frames in the
+// background of the live dashboard. The same chart descriptions as `curves` and `bench`.
+#include "dashboard.h"
+
+#include "analytic_charts.h"
+#include "chart_imgui.h"
+#include "widget_map.h"
+#include "geometry/preset.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+namespace ui {
+
+namespace {
+
+CurveParams curveParams(const geometry::Camera& cam, const geometry::ShadowPlan& plan, const geometry::ShadowSettings& s,
+                        int screenHeight) {
+    CurveParams p;
+    p.near = cam.near;
+    p.far = cam.far;
+    p.fovYDeg = cam.fovYDeg;
+    p.gammaStepDeg = 1.0;
+    p.gammaDeg = std::clamp(double(plan.gammaDeg), 0.0, 90.0);
+    p.screenRes = std::max(screenHeight, 1);
+    p.mapRes = plan.splits.empty() ? s.resolution : plan.splits[0].resolution;
+    p.settings = s;
+    return p;
+}
+
+/// The chart area below a row of export buttons; returns the mouse position when hovered.
+Rect chartArea(const char* id, const float** mouse, float* mouseStorage) {
+    const ImVec2 pos = ImGui::GetCursorScreenPos(), avail = ImGui::GetContentRegionAvail();
+    const Rect area{pos.x, pos.y, std::max(avail.x, 1.f), std::max(avail.y, 1.f)};
+    ImGui::InvisibleButton(id, ImVec2(area.w, area.h));
+    widgetMapRecord(id);
+    *mouse = nullptr;
+    if (ImGui::IsItemHovered()) {
+        mouseStorage[0] = ImGui::GetIO().MousePos.x;
+        mouseStorage[1] = ImGui::GetIO().MousePos.y;
+        *mouse = mouseStorage;
+    }
+    return area;
+}
+
+} // namespace
+
+void Dashboard::exportChart(const Chart& chart, const std::string& name) {
+    try {
+        const std::filesystem::path dir = options_.screenshotDir;
+        std::filesystem::create_directories(dir);
+        writeSvg(dir / (name + ".svg"), chart, 1000, 620);
+        renderer::writePng((dir / (name + ".png")).string(), renderChartImage(chart, 1000, 620));
+        status_ = "saved " + (dir / (name + ".svg")).string() + ", " + (dir / (name + ".png")).string();
+    } catch (const std::exception& e) {
+        status_ = std::string("chart export failed: ") + e.what();
+    }
+}
+
+void Dashboard::drawAnalyticChart(int which) {
+    const int side = shownSide();
+    const CurveParams p =
+        curveParams(scene_.file.scene.camera, sides_[side].plan, state_.settings[side], std::max(1, sides_[side].size.height));
+    Chart chart;
+    const char* name = "chart";
+    if (which == 2) {
+        chart = errorChart(errorRows(p), p);
+        name = "error_curve";
+    } else {
+        const auto rows = warpRows(p);
+        chart = which == 0 ? warpChart(rows, p, p.gammaDeg) : lambdaChart(rows, p, p.gammaDeg);
+        name = which == 0 ? "warp_curve" : "lambda_curve";
+    }
+    bool save = ImGui::SmallButton("Export SVG + PNG");
+    widgetMapRecord(std::string("export.") + name);
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s — n %.3g, f %.4g, fov %.0f°, γ %.1f°, %d px / %d texels; hover for values; drag the bar "
+                        "above to enlarge",
+                        which == 0 ? "n'(γ) per warp" : which == 1 ? "λ(θ) per warp" : "m_z(z) per warp", p.near, p.far,
+                        p.fovYDeg, p.gammaDeg, p.screenRes, p.mapRes);
+    float storage[2];
+    const float* mouse = nullptr;
+    const Rect area = chartArea("chart_area", &mouse, storage);
+    drawChart(ImGui::GetWindowDrawList(), chart, area, mouse);
+    if (save) exportChart(chart, name);
+}
+
+void Dashboard::drawTradeoffTab() {
+    TradeoffSweep& s = sweep_;
+    if (!s.running) {
+        if (ImGui::SmallButton("Run sweep")) startTradeoffSweep();
+        widgetMapRecord("tradeoff.run");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Times every preset in resources/presets and the current settings on this view (3 frames "
+                              "each, GPU median) and measures aliasing p95; runs between dashboard frames");
+    } else {
+        ImGui::ProgressBar(float(s.next) / float(std::max<size_t>(s.configs.size(), 1)), ImVec2(ImGui::GetFontSize() * 12, 0));
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Cancel")) s.running = false;
+        widgetMapRecord("tradeoff.cancel");
+    }
+    ImGui::SameLine();
+    const Chart chart = tradeoffChart(s.results, "frame time, GPU median (ms)");
+    if (ImGui::SmallButton("Export SVG + PNG")) exportChart(chart, "tradeoff");
+    widgetMapRecord("export.tradeoff");
+    float storage[2];
+    const float* mouse = nullptr;
+    const Rect area = chartArea("tradeoff_area", &mouse, storage);
+    drawChart(ImGui::GetWindowDrawList(), chart, area, mouse);
+}
+
+void Dashboard::startTradeoffSweep() {
+    TradeoffSweep& s = sweep_;
+    s.configs.clear();
+    s.results.clear();
+    for (const auto& path : options_.presetChoices) {
+        try {
+            const std::string stem = std::filesystem::path(path).stem().string();
+            s.configs.push_back({stem, stem, geometry::loadPreset(path)});
+        } catch (const std::exception& e) {
+            status_ = e.what();
+        }
+    }
+    s.configs.push_back({"current A", "", state_.settings[0]});
+    if (comparing()) s.configs.push_back({"current B", "", state_.settings[1]});
+    s.next = 0;
+    s.running = true;
+}
+
+void Dashboard::stepTradeoffSweep() {
+    TradeoffSweep& s = sweep_;
+    if (!s.running) return;
+    if (s.next >= s.configs.size()) {
+        s.running = false;
+        status_ = "trade-off sweep done: " + std::to_string(s.results.size()) + " configurations";
+        return;
+    }
+    geometry::Scene& scene = scene_.file.scene;
+    if (!s.renderer || s.generation != sceneGeneration_) {
+        s.renderer = std::make_unique<renderer::Renderer>(scene);
+        s.generation = sceneGeneration_;
+    }
+    const auto& cfg = s.configs[s.next++];
+    const geometry::Viewport size = sides_[0].size.width > 0 ? sides_[0].size : geometry::Viewport{640, 360};
+    renderer::ViewOptions vo;
+    vo.lightViewSize = 16;
+    vo.overlays = false;
+    vo.unwarped = false;
+    try {
+        std::vector<double> gpu;
+        geometry::ShadowPlan plan;
+        for (int i = 0; i < 4; ++i) { // one warm-up frame, three timed
+            plan = geometry::planShadows(cfg.settings, scene.bounds(), scene.camera, scene.light, size);
+            s.renderer->render(plan, size, vo);
+            const renderer::PassTimes& t = s.renderer->waitForTimings();
+            if (i > 0 && t.valid) gpu.push_back(t.frame());
+        }
+        std::sort(gpu.begin(), gpu.end());
+        const renderer::Inspection in = renderer::inspect(*s.renderer, plan, nullptr);
+        s.results.push_back({cfg.label, cfg.preset, gpu.empty() ? NAN : gpu[gpu.size() / 2], in.aliasing.p95});
+    } catch (const std::exception& e) {
+        status_ = "trade-off sweep: " + cfg.label + ": " + e.what();
+    }
+}
+
+} // namespace ui

@@ -1,0 +1,48 @@
+#include "dashboard_headless.h"
+
+#include "renderer/context.h"
+#include "renderer/texture.h"
+
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <stdexcept>
+
+namespace ui {
+
+HeadlessDashboard::HeadlessDashboard(LoadedScene scene, DashboardState state, DashboardOptions options, int width,
+                                     int height)
+    : imgui_(options.uiScale), width_(width), height_(height) {
+    if (width < 200 || height < 150 || width > 8192 || height > 8192)
+        throw std::invalid_argument("dashboard size " + std::to_string(width) + "x" + std::to_string(height) +
+                                    " outside 200x150 … 8192x8192");
+    dashboard_ = std::make_unique<Dashboard>(std::move(scene), std::move(state), std::move(options));
+    target_.ensure(width, height);
+}
+
+renderer::Image HeadlessDashboard::render(int frames) {
+    imgui_.makeCurrent();
+    ImGuiIO& io = ImGui::GetIO();
+    for (int i = 0; i < std::max(frames, 1); ++i) {
+        io.DisplaySize = ImVec2(float(width_), float(height_));
+        io.DisplayFramebufferScale = ImVec2(1.f, 1.f);
+        io.DeltaTime = 1.f / 60.f;
+        io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // no cursor: nothing hovered
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui::NewFrame();
+        dashboard_->frame(float(width_), float(height_));
+        ImGui::Render();
+        target_.bind();
+        glClearColor(0.f, 0.f, 0.f, 1.f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    }
+    renderer::Image img = renderer::readTexture(target_.texture(), width_, height_);
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return img;
+}
+
+} // namespace ui

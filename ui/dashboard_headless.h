@@ -1,0 +1,27 @@
+#pragma once
+// The dashboard rendered into an image without a window (`render --views dashboard`, tests):
+// the same ImGui frames and the same layout as the GUI at the same size, drawn into an
+// off-screen target on the current (OSMesa or EGL) context.
+#include "dashboard.h"
+#include "imgui_setup.h"
+#include "renderer/render_targets.h"
+
+namespace ui {
+
+class HeadlessDashboard {
+public:
+    /// Needs a current GL context. uiScale 1 matches a window on a normal-DPI monitor.
+    HeadlessDashboard(LoadedScene scene, DashboardState state, DashboardOptions options, int width, int height);
+    /// Runs `frames` frames (the first lays out and renders the views; later ones settle timings)
+    /// and returns the last one's pixels.
+    [[nodiscard]] renderer::Image render(int frames = 3);
+    [[nodiscard]] Dashboard& dashboard() noexcept { return *dashboard_; }
+
+private:
+    ImGuiScope imgui_;
+    std::unique_ptr<Dashboard> dashboard_;
+    renderer::ColorTarget target_;
+    int width_, height_;
+};
+
+} // namespace ui

@@ -1,0 +1,324 @@
+// The dashboard's view panels (eye, light, heatmap) with zoom, pan and the pixel inspector; the
+// splitters between panels; the status bar.
+#include "dashboard.h"
+
+#include "widget_map.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ui {
+
+namespace {
+
+ImTextureID textureId(GLuint t) { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t)); }
+ImVec2 iv(glm::vec2 v) { return {v.x, v.y}; }
+
+/// Draws the part of a placed image between image fractions u0 and u1 (for split-screen compare).
+void drawImage(ImDrawList* dl, GLuint texture, const ImagePlacement& p, float u0 = 0.f, float u1 = 1.f) {
+    if (p.screen.w <= 0.f || p.screen.h <= 0.f) return;
+    const float a = std::max(p.uvMin.x, u0), b = std::min(p.uvMax.x, u1);
+    if (b <= a) return;
+    const float span = p.uvMax.x - p.uvMin.x;
+    const float x0 = p.screen.x + (a - p.uvMin.x) / span * p.screen.w;
+    const float x1 = p.screen.x + (b - p.uvMin.x) / span * p.screen.w;
+    // GL textures are bottom row first: flip v.
+    dl->AddImage(textureId(texture), ImVec2(x0, p.screen.y), ImVec2(x1, p.screen.bottom()), ImVec2(a, 1.f - p.uvMin.y),
+                 ImVec2(b, 1.f - p.uvMax.y));
+}
+
+/// Outline of image pixel `px` on screen (the pinned pixel's marker).
+void markPixel(ImDrawList* dl, const ImageView& view, const Rect& area, int w, int h, glm::ivec2 px) {
+    const ImagePlacement p = placeImage(view, area, w, h);
+    if (p.screen.w <= 0.f) return;
+    const glm::vec2 origin = glm::vec2(p.screen.x, p.screen.y) - p.uvMin * glm::vec2(w, h) * p.scale;
+    const glm::vec2 a = origin + glm::vec2(px) * p.scale, b = a + glm::vec2(std::max(p.scale, 3.f));
+    dl->AddRect(iv(a - 2.f), iv(b + 2.f), IM_COL32(255, 255, 0, 255), 0.f, 0, 1.5f);
+}
+
+bool panelBegin(const char* id, const Rect& r) {
+    ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
+    return ImGui::BeginChild(id, ImVec2(std::max(r.w, 1.f), std::max(r.h, 1.f)), true,
+                             ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+}
+
+void zoomButtons(ImageView& view, const char* id) {
+    ImGui::PushID(id);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Fit")) view = ImageView{};
+    widgetMapRecord(std::string(id) + ".fit");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("1:1")) view = oneToOne(view);
+    widgetMapRecord(std::string(id) + ".one_to_one");
+    ImGui::SameLine();
+    if (view.zoom > 0.f) ImGui::TextDisabled("%.0f%%", view.zoom * 100.f);
+    else ImGui::TextDisabled("fit");
+    ImGui::PopID();
+}
+
+} // namespace
+
+std::optional<glm::ivec2> Dashboard::imageArea(ViewPanel panel, GLuint texture, int w, int h, const Rect& area,
+                                               bool cameraControls, const FrameInput& input, const char* id) {
+    (void)input;
+    if (area.w < 1.f || area.h < 1.f || w <= 0 || h <= 0) return std::nullopt;
+    ImageView& view = state_.imageViews[int(panel)];
+    ImGui::SetCursorScreenPos(ImVec2(area.x, area.y));
+    ImGui::InvisibleButton(id, ImVec2(area.w, area.h),
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    widgetMapRecord(id);
+    const bool hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
+    const ImGuiIO& io = ImGui::GetIO();
+    const glm::vec2 mouse(io.MousePos.x, io.MousePos.y), delta(io.MouseDelta.x, io.MouseDelta.y);
+    if (hovered && io.MouseWheel != 0.f) {
+        if (cameraControls && !io.KeyCtrl) state_.camera.zoom(io.MouseWheel);
+        else view = zoomAround(view, area, w, h, mouse, std::pow(1.25f, io.MouseWheel));
+    }
+    if (cameraControls) flyLooking_ = active && ImGui::IsMouseDown(ImGuiMouseButton_Right);
+    if (active && (delta.x != 0.f || delta.y != 0.f)) {
+        const bool left = ImGui::IsMouseDown(ImGuiMouseButton_Left), middle = ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+        if (cameraControls) {
+            if (left && !io.KeyShift && !io.KeyCtrl) state_.camera.rotate(delta.x, delta.y);
+            else if (middle || (left && io.KeyShift))
+                state_.camera.pan(delta.x, delta.y, area.h, scene_.file.scene.camera.fovYDeg);
+            else if (left && io.KeyCtrl) view = panBy(view, area, w, h, delta);
+            else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) state_.camera.look(delta.x, delta.y);
+        } else if (left || middle) {
+            view = panBy(view, area, w, h, delta);
+        }
+    }
+    if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) view = ImageView{};
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(ImVec2(area.x, area.y), ImVec2(area.right(), area.bottom()), IM_COL32(20, 20, 22, 255));
+    drawImage(dl, texture, placeImage(view, area, w, h));
+    return hovered ? pixelAt(view, area, w, h, mouse) : std::nullopt;
+}
+
+void Dashboard::probeEye(int side, glm::ivec2 px, ViewPanel panel) {
+    const Side& s = sides_[side];
+    PixelProbe p;
+    p.panel = panel;
+    p.side = side;
+    p.pixel = px;
+    if (s.inspection && px.x < s.inspection->width && px.y < s.inspection->height) {
+        const renderer::Inspection& in = *s.inspection;
+        const size_t i = size_t(px.y) * in.width + px.x;
+        p.sky = in.aux[i].z < 0.f;
+        p.receiver = in.receiver[i] != 0;
+        p.shadow = in.shadow[i];
+        p.m = in.m[i];
+        p.texel = {in.aux[i].x, in.aux[i].y};
+        p.split = int(in.aux[i].z);
+        p.mapDepth = in.aux[i].w;
+        p.position = in.positions[i];
+        const geometry::Camera& cam = scene_.file.scene.camera;
+        p.viewDepth = glm::dot(p.position - cam.eye, glm::normalize(cam.target - cam.eye));
+        if (in.occluded) p.truthShadowed = (*in.occluded)[i] != 0;
+    }
+    hovered_ = p;
+}
+
+void Dashboard::probeLight(glm::ivec2 px) {
+    PixelProbe p;
+    p.panel = ViewPanel::Light;
+    p.side = shownSide();
+    p.pixel = px;
+    const Side& s = sides_[p.side];
+    const int split = std::clamp(state_.views.lightSplit, 0, std::max(0, int(s.plan.splits.size()) - 1));
+    p.split = split;
+    if (!state_.views.unwarped && split < int(s.plan.splits.size()) && s.renderer) {
+        const int res = std::min(s.plan.splits[split].resolution, s.renderer->stats().shadowResolution);
+        // The light view shows the split's map, its bottom row at the image's bottom.
+        p.mapTexel = {px.x * res / lightViewSize_, (lightViewSize_ - 1 - px.y) * res / lightViewSize_};
+        p.storedDepth = s.renderer->readShadowDepth(split, p.mapTexel.x, p.mapTexel.y);
+    }
+    hovered_ = p;
+}
+
+void Dashboard::drawEyePanel(const FrameInput& input) {
+    if (panelBegin("eye_panel", rects_.eye)) {
+        const CompareMode mode = state_.views.compare;
+        ImGui::TextUnformatted(mode == CompareMode::Off ? "Eye view" : mode == CompareMode::SideBySide ? "Eye view: A | B"
+                                                                                                       : "Eye view: A / B split");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Drag: orbit. Shift+drag or middle-drag: pan. Right-drag: look, with WASD/QE to fly.\n"
+                              "Wheel: dolly. Ctrl+wheel: zoom the image around the cursor, ctrl+drag: pan it.\n"
+                              "Click: pin the pixel in the inspector. Double-click: fit.");
+        zoomButtons(state_.imageViews[int(ViewPanel::Eye)], "eye");
+        const ImageView& view = state_.imageViews[int(ViewPanel::Eye)];
+        const geometry::Viewport size = sides_[0].size;
+        const bool clicked = ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f;
+        if (mode == CompareMode::SideBySide && sides_[1].renderer) {
+            const float half = std::floor((eyeArea_.w - 2.f) * 0.5f);
+            const Rect left{eyeArea_.x, eyeArea_.y, half, eyeArea_.h};
+            const Rect right{eyeArea_.x + half + 2.f, eyeArea_.y, half, eyeArea_.h};
+            for (int i = 0; i < 2; ++i) {
+                const Rect& r = i == 0 ? left : right;
+                const auto px = imageArea(ViewPanel::Eye, sides_[i].renderer->eyeTexture(), size.width, size.height, r, true,
+                                          input, i == 0 ? "eye_image" : "eye_image_b");
+                ImGui::GetWindowDrawList()->AddText(ImVec2(r.x + 6, r.y + 4), IM_COL32(255, 255, 255, 230), i == 0 ? "A" : "B");
+                if (px) {
+                    probeEye(i, *px, ViewPanel::Eye);
+                    if (clicked) pinned_ = hovered_;
+                }
+            }
+        } else {
+            const auto px = imageArea(ViewPanel::Eye, sides_[0].renderer->eyeTexture(), size.width, size.height, eyeArea_,
+                                      true, input, "eye_image");
+            if (mode == CompareMode::Split && sides_[1].renderer) {
+                // B over the right part, a draggable divider between them.
+                ImDrawList* dl = ImGui::GetWindowDrawList();
+                const ImagePlacement place = placeImage(view, eyeArea_, size.width, size.height);
+                float& s = state_.views.splitPosition;
+                drawImage(dl, sides_[1].renderer->eyeTexture(), place, s, 1.f);
+                const float span = std::max(place.uvMax.x - place.uvMin.x, 1e-6f);
+                const float x = place.screen.x + (std::clamp(s, place.uvMin.x, place.uvMax.x) - place.uvMin.x) / span * place.screen.w;
+                dl->AddLine(ImVec2(x, eyeArea_.y), ImVec2(x, eyeArea_.bottom()), IM_COL32(255, 255, 255, 220), 2.f);
+                dl->AddText(ImVec2(x - 18, eyeArea_.y + 4), IM_COL32(255, 255, 255, 230), "A");
+                dl->AddText(ImVec2(x + 8, eyeArea_.y + 4), IM_COL32(255, 255, 255, 230), "B");
+                ImGui::SetCursorScreenPos(ImVec2(x - 5, eyeArea_.y + eyeArea_.h * 0.4f));
+                ImGui::InvisibleButton("compare_divider", ImVec2(10, eyeArea_.h * 0.2f));
+                widgetMapRecord("compare_divider");
+                if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+                if (ImGui::IsItemActive() && place.screen.w > 0.f)
+                    s = std::clamp(s + ImGui::GetIO().MouseDelta.x / place.screen.w * span, 0.f, 1.f);
+                dl->AddRectFilled(ImVec2(x - 4, eyeArea_.y + eyeArea_.h * 0.45f), ImVec2(x + 4, eyeArea_.y + eyeArea_.h * 0.55f),
+                                  IM_COL32(255, 255, 255, 200), 2.f);
+            }
+            if (px) {
+                const bool onB = mode == CompareMode::Split && float(px->x) >= state_.views.splitPosition * float(size.width);
+                probeEye(onB ? 1 : 0, *px, ViewPanel::Eye);
+                if (clicked) pinned_ = hovered_;
+            }
+        }
+        if (pinned_ && pinned_->panel != ViewPanel::Light && mode != CompareMode::SideBySide)
+            markPixel(ImGui::GetWindowDrawList(), view, eyeArea_, size.width, size.height, pinned_->pixel);
+    }
+    ImGui::EndChild();
+}
+
+void Dashboard::drawLightPanel() {
+    if (panelBegin("light_panel", rects_.light)) {
+        const Side& side = sides_[shownSide()];
+        ImGui::TextUnformatted(state_.views.unwarped ? "Light view (unwarped)" : "Light view (warped)");
+        ImGui::SameLine();
+        const int splits = std::max(1, int(side.plan.splits.size()));
+        ImGui::SetNextItemWidth(std::max(60.f, ImGui::GetFontSize() * 6.f));
+        int split = std::clamp(state_.views.lightSplit, 0, splits - 1);
+        if (ImGui::SliderInt("##split", &split, 0, splits - 1, "split %d")) state_.views.lightSplit = split;
+        widgetMapRecord("views.light_split");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Which split's shadow map the light view shows");
+        zoomButtons(state_.imageViews[int(ViewPanel::Light)], "light");
+        if (side.renderer) {
+            const GLuint tex = state_.views.unwarped ? side.renderer->unwarpedLightTexture() : side.renderer->lightTexture();
+            const FrameInput none;
+            const auto px = imageArea(ViewPanel::Light, tex, lightViewSize_, lightViewSize_, lightArea_, false, none, "light_image");
+            if (px) {
+                probeLight(*px);
+                if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f)
+                    pinned_ = hovered_;
+            }
+        }
+    }
+    ImGui::EndChild();
+}
+
+void Dashboard::drawHeatmapPanel() {
+    if (panelBegin("heatmap_panel", rects_.heatmap)) {
+        ImGui::TextUnformatted("Heatmap");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(std::max(80.f, ImGui::GetFontSize() * 8.f));
+        if (ImGui::BeginCombo("##heatmap", std::string(heatmapName(state_.views.heatmap)).c_str())) {
+            for (int i = 0; i < int(HeatmapKind::Count); ++i) {
+                const std::string name(heatmapName(HeatmapKind(i)));
+                if (ImGui::Selectable(name.c_str(), int(state_.views.heatmap) == i)) state_.views.heatmap = HeatmapKind(i);
+                widgetMapRecord("views.heatmap=" + name);
+            }
+            ImGui::EndCombo();
+        }
+        widgetMapRecord("views.heatmap");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("aliasing: log2 m; truth: false shadow red, false lit blue; splits; texels: the map's "
+                              "texel grid; difference: m_A / m_B (A/B compare)");
+        zoomButtons(state_.imageViews[int(ViewPanel::Heatmap)], "heatmap");
+        const int side = shownSide();
+        const FrameInput none;
+        const auto px = imageArea(ViewPanel::Heatmap, heatmap_.id(), heatmap_.width(), heatmap_.height(), heatmapArea_,
+                                  false, none, "heatmap_image");
+        const bool needsTruth = state_.views.heatmap == HeatmapKind::Truth && !state_.views.truth;
+        const bool needsCompare = state_.views.heatmap == HeatmapKind::Difference && !comparing();
+        if (needsTruth || needsCompare)
+            ImGui::GetWindowDrawList()->AddText(ImVec2(heatmapArea_.x + 8, heatmapArea_.y + 8), IM_COL32(255, 255, 255, 255),
+                                                needsTruth ? "turn on ground truth (Views)" : "turn on A/B compare (Views)");
+        if (px) {
+            probeEye(side, *px, ViewPanel::Heatmap);
+            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f)
+                pinned_ = hovered_;
+        }
+        if (pinned_ && pinned_->panel != ViewPanel::Light)
+            markPixel(ImGui::GetWindowDrawList(), state_.imageViews[int(ViewPanel::Heatmap)], heatmapArea_, heatmap_.width(),
+                      heatmap_.height(), pinned_->pixel);
+    }
+    ImGui::EndChild();
+}
+
+void Dashboard::drawSplitters(float width, float height) {
+    for (int i = 0; i < int(Splitter::Count); ++i) {
+        const Rect& r = rects_.splitters[i];
+        if (r.w < 1.f || r.h < 1.f) continue;
+        ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
+        ImGui::PushID(i);
+        ImGui::InvisibleButton("splitter", ImVec2(r.w, r.h));
+        ImGui::PopID();
+        const bool vertical = Splitter(i) != Splitter::Stats;
+        if (ImGui::IsItemHovered() || ImGui::IsItemActive())
+            ImGui::SetMouseCursor(vertical ? ImGuiMouseCursor_ResizeEW : ImGuiMouseCursor_ResizeNS);
+        if (ImGui::IsItemActive()) {
+            const ImVec2 d = ImGui::GetIO().MouseDelta;
+            state_.layout = dragSplitter(state_.layout, Splitter(i), d.x, d.y, width, height, options_.uiScale);
+        }
+        const ImU32 colour = ImGui::IsItemActive() ? IM_COL32(120, 150, 220, 255) : IM_COL32(60, 60, 66, 255);
+        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.right(), r.bottom()), colour);
+    }
+}
+
+std::string describeProbe(const PixelProbe& p) {
+    char buf[512];
+    if (p.panel == ViewPanel::Light) {
+        std::snprintf(buf, sizeof buf, "light (%d, %d)  split %d  map texel (%d, %d)  stored depth %.6f", p.pixel.x,
+                      p.pixel.y, p.split, p.mapTexel.x, p.mapTexel.y, p.storedDepth);
+        return buf;
+    }
+    if (p.sky) {
+        std::snprintf(buf, sizeof buf, "%s %s(%d, %d)  sky", p.panel == ViewPanel::Eye ? "eye" : "heatmap",
+                      p.side ? "B " : "", p.pixel.x, p.pixel.y);
+        return buf;
+    }
+    std::snprintf(buf, sizeof buf,
+                  "%s %s(%d, %d)  depth %.4g  split %d  m %.4g  s %.3f  truth %s  texel (%.1f, %.1f)  map depth %.6f%s",
+                  p.panel == ViewPanel::Eye ? "eye" : "heatmap", p.side ? "B " : "", p.pixel.x, p.pixel.y, p.viewDepth,
+                  p.split, p.m, p.shadow, p.truthShadowed ? (*p.truthShadowed ? "shadow" : "lit") : "off", p.texel.x,
+                  p.texel.y, p.mapDepth, p.receiver ? "" : "  (not a receiver)");
+    return buf;
+}
+
+void Dashboard::drawStatusBar() {
+    const Rect& r = rects_.status;
+    if (r.h < 1.f) return;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.right(), r.bottom()), IM_COL32(32, 34, 40, 255));
+    ImGui::SetCursorScreenPos(ImVec2(r.x + 6.f, r.y + std::max(0.f, (r.h - ImGui::GetTextLineHeight()) * 0.5f)));
+    std::string text = hovered_ ? describeProbe(*hovered_) : std::string("hover a view for exact values, click to pin");
+    if (loader_.busy())
+        text = "loading " + loader_.source() + ": " + loader_.stage() + " " + std::to_string(int(loader_.progress() * 100.f)) + "%";
+    if (!status_.empty()) text += "   |   " + status_;
+    ImGui::TextUnformatted(text.c_str());
+    widgetMapStatus(status_);
+    hovered_.reset(); // set again next frame while the cursor stays on a view
+}
+
+} // namespace ui

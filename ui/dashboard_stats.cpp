@@ -1,0 +1,171 @@
+// The stats panel: timings, triangles, error statistics, γ, utilization per split, for A (and B
+// when comparing), and the pinned pixel's values.
+#include "dashboard.h"
+
+#include "widget_map.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <string>
+
+namespace ui {
+
+namespace {
+
+std::string fmt(const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+}
+
+} // namespace
+
+void Dashboard::drawStatsPanel() {
+    const Rect& r = rects_.stats;
+    ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
+    if (ImGui::BeginChild("stats", ImVec2(std::max(r.w, 1.f), std::max(r.h, 1.f)), true) &&
+        ImGui::BeginTabBar("stats_tabs")) {
+        const auto flags = [&](int tab) { return requestedTab_ == tab ? ImGuiTabItemFlags_SetSelected : 0; };
+        if (ImGui::BeginTabItem("Stats", nullptr, flags(0))) {
+            drawStatsTable();
+            ImGui::SameLine();
+            drawInspector();
+            ImGui::EndTabItem();
+        }
+        widgetMapRecord("tab.stats");
+        const char* names[] = {"n'(γ)", "λ(θ)", "m_z(z)"};
+        for (int i = 0; i < 3; ++i) {
+            if (ImGui::BeginTabItem(names[i], nullptr, flags(1 + i))) {
+                drawAnalyticChart(i);
+                ImGui::EndTabItem();
+            }
+            widgetMapRecord(std::string("tab.chart") + std::to_string(i));
+        }
+        if (ImGui::BeginTabItem("Trade-off", nullptr, flags(4))) {
+            drawTradeoffTab();
+            ImGui::EndTabItem();
+        }
+        widgetMapRecord("tab.tradeoff");
+        requestedTab_ = -1;
+        ImGui::EndTabBar();
+    }
+    ImGui::EndChild();
+}
+
+void Dashboard::drawStatsTable() {
+    {
+        const int sides = comparing() ? 2 : 1;
+        const float inspectorW = std::min(ImGui::GetContentRegionAvail().x * 0.38f, 30.f * ImGui::GetFontSize());
+        ImGui::BeginChild("stats_table", ImVec2(ImGui::GetContentRegionAvail().x - inspectorW, 0), false);
+        const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+        if (ImGui::BeginTable("stats_table", 1 + sides, flags)) {
+            ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch, 1.4f);
+            ImGui::TableSetupColumn(sides == 2 ? "A" : "value", ImGuiTableColumnFlags_WidthStretch, 1.f);
+            if (sides == 2) ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_WidthStretch, 1.f);
+            ImGui::TableHeadersRow();
+            const auto row = [&](const char* name, const std::function<std::string(int)>& value, const char* tip = nullptr) {
+                ImGui::TableNextRow();
+                ImGui::TableSetColumnIndex(0);
+                ImGui::TextUnformatted(name);
+                if (tip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+                for (int i = 0; i < sides; ++i) {
+                    ImGui::TableSetColumnIndex(1 + i);
+                    ImGui::TextUnformatted(value(i).c_str());
+                }
+            };
+            const auto stat = [&](int i) -> const renderer::FrameStats* {
+                return sides_[i].renderer ? &sides_[i].renderer->stats() : nullptr;
+            };
+            const auto gpu = [&](renderer::Pass p) {
+                return [&, p](int i) {
+                    const auto* s = stat(i);
+                    return s && s->gpu.valid ? fmt("%.2f ms", s->gpu.of(p)) : std::string("–");
+                };
+            };
+            row("γ / light–view angle", [&](int i) {
+                return fmt("%.2f°", sides_[i].plan.gammaDeg) + " / " + fmt("%.1f°", sides_[i].plan.lightViewAngleDeg);
+            });
+            row("GPU shadow pass", gpu(renderer::Pass::Shadow), "GPU time of the shadow maps (all splits), from a few frames ago");
+            row("GPU eye pass", gpu(renderer::Pass::Eye), "GPU time of the eye view with filtering and blur");
+            row("GPU light views", gpu(renderer::Pass::LightView), "GPU time of the inspection views (not part of the shadowing)");
+            row("plan (CPU)", [&](int i) { return fmt("%.1f µs", sides_[i].planMicroseconds); }, "geometry::planShadows");
+            row("dashboard frame (CPU)", [&](int) { return fmt("%.1f ms", cpuFrameMs_); });
+            row("triangles shadow / eye", [&](int i) {
+                const auto* s = stat(i);
+                return s ? std::to_string(s->shadowTriangles) + " / " + std::to_string(s->eyeTriangles) : std::string("–");
+            }, "Triangles submitted per pass after culling (shadow: all splits)");
+            row("shadow map", [&](int i) {
+                const auto* s = stat(i);
+                return s ? std::to_string(s->shadowResolution) + "² × " + std::to_string(sides_[i].plan.splits.size())
+                         : std::string("–");
+            });
+            const auto insp = [&](int i) { return inspection(i); };
+            row("m mean / p50", [&](int i) {
+                const auto* in = insp(i);
+                return in ? fmt("%.3g", in->aliasing.mean) + " / " + fmt("%.3g", in->aliasing.p50) : std::string("–");
+            }, "Aliasing error m (screen pixels per shadow texel, DESIGN §4) over receiver pixels");
+            row("m p95 / max", [&](int i) {
+                const auto* in = insp(i);
+                return in ? fmt("%.3g", in->aliasing.p95) + " / " + fmt("%.3g", in->aliasing.max) : std::string("–");
+            });
+            row("undersampled (m > 1)", [&](int i) {
+                const auto* in = insp(i);
+                return in ? fmt("%.1f %%", 100.0 * in->aliasing.undersampled) : std::string("–");
+            });
+            row("false shadow / false lit", [&](int i) {
+                const auto* in = insp(i);
+                if (!in || !in->truth) return std::string(state_.views.truth ? "–" : "truth off");
+                return fmt("%.2f %%", 100.0 * in->truth->falseShadow) + " / " + fmt("%.2f %%", 100.0 * in->truth->falseLit);
+            }, "Against ray-traced ground truth: lit pixels shadowed (acne) / shadowed pixels lit (leaks)");
+            row("texel utilization", [&](int i) {
+                const auto* in = insp(i);
+                if (!in) return std::string("–");
+                std::string out;
+                for (double u : in->utilization) out += (out.empty() ? "" : " ") + fmt("%.1f%%", 100.0 * u);
+                return out;
+            }, "Per split: the share of the map's texels that some visible receiver samples");
+            row("splits [n, f] n'", [&](int i) {
+                std::string out;
+                for (const auto& sp : sides_[i].plan.splits)
+                    out += (out.empty() ? "" : "  ") + fmt("[%.3g", sp.near) + fmt(", %.3g]", sp.far) +
+                           (sp.warped() ? fmt(" %.3g", sp.nPrime) : std::string(" ∞"));
+                return out;
+            });
+            row("warnings", [&](int i) {
+                const auto* s = stat(i);
+                std::string out;
+                if (s)
+                    for (const auto& w : s->warnings) out += (out.empty() ? "" : "; ") + w;
+                return out.empty() ? std::string("none") : out;
+            });
+            ImGui::EndTable();
+        }
+        ImGui::EndChild();
+    }
+}
+
+void Dashboard::drawInspector() {
+    {
+        ImGui::BeginChild("inspector", ImVec2(0, 0), false);
+        ImGui::TextUnformatted("Pixel inspector");
+        widgetMapRecord("inspector");
+        const std::optional<PixelProbe>& p = pinned_ ? pinned_ : hovered_;
+        if (!p) {
+            ImGui::TextDisabled("hover a view; click to pin a pixel");
+        } else {
+            ImGui::TextDisabled(pinned_ ? "pinned" : "under the cursor");
+            ImGui::PushTextWrapPos(0.f);
+            ImGui::TextUnformatted(describeProbe(*p).c_str());
+            ImGui::PopTextWrapPos();
+            if (p->panel != ViewPanel::Light && !p->sky)
+                ImGui::Text("world (%.4g, %.4g, %.4g)", p->position.x, p->position.y, p->position.z);
+            if (pinned_ && ImGui::SmallButton("unpin")) pinned_.reset();
+        }
+        ImGui::EndChild();
+    }
+}
+
+} // namespace ui

@@ -1,0 +1,65 @@
+#include "widget_map.h"
+
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace ui {
+
+namespace {
+struct MapState {
+    const char* path = std::getenv("SHADOWSCOPE_WIDGET_MAP");
+    nlohmann::json current;
+    long frame = 0;
+};
+MapState& map() {
+    static MapState s;
+    return s;
+}
+bool enabled() { return map().path && *map().path; }
+} // namespace
+
+void widgetMapBeginFrame(float width, float height) {
+    if (!enabled()) return;
+    MapState& m = map();
+    m.current = {{"window", {width, height}}, {"widgets", nlohmann::json::object()}, {"status", ""}};
+}
+
+void widgetMapRecordRect(std::string_view id, const Rect& r) {
+    if (!enabled()) return;
+    map().current["widgets"][std::string(id)] = {r.x, r.y, r.w, r.h};
+}
+
+void widgetMapRecord(std::string_view id) {
+    if (!enabled()) return;
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    // Only items that are actually visible (not scrolled out of their window) can be clicked.
+    if (!ImGui::IsItemVisible()) return;
+    widgetMapRecordRect(id, {a.x, a.y, b.x - a.x, b.y - a.y});
+}
+
+void widgetMapStatus(std::string_view status) {
+    if (!enabled()) return;
+    map().current["status"] = std::string(status);
+}
+
+void widgetMapEndFrame() {
+    if (!enabled()) return;
+    MapState& m = map();
+    ++m.frame;
+    // Every frame (tests wait on the frame counter); the file is small and only written under the hook.
+    nlohmann::json out = m.current;
+    out["frame"] = m.frame;
+    const std::string tmp = std::string(m.path) + ".tmp";
+    {
+        std::ofstream f(tmp, std::ios::trunc);
+        f << out.dump(1) << '\n';
+    }
+    std::rename(tmp.c_str(), m.path);
+}
+
+} // namespace ui
