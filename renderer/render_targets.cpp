@@ -108,6 +108,14 @@ void ColorTarget::bind() const noexcept {
     glViewport(0, 0, width_, height_);
 }
 
+void ColorTarget::bindAndClear(float r, float g, float b) const noexcept {
+    bind();
+    glClearColor(r, g, b, 1.f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void ColorTarget::unbind() noexcept { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+
 EyeBuffers::~EyeBuffers() { release(); }
 
 void EyeBuffers::release() noexcept {

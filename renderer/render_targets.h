@@ -40,6 +40,10 @@ public:
     ColorTarget& operator=(const ColorTarget&) = delete;
     void ensure(int width, int height);
     void bind() const noexcept;
+    /// Binds and clears to an opaque colour (off-screen UI frames: the dashboard, chart PNGs).
+    void bindAndClear(float r, float g, float b) const noexcept;
+    /// Back to the default framebuffer.
+    static void unbind() noexcept;
     [[nodiscard]] GLuint texture() const noexcept { return color_; }
     [[nodiscard]] GLuint framebuffer() const noexcept { return fbo_; }
     [[nodiscard]] int width() const noexcept { return width_; }

@@ -119,12 +119,10 @@ renderer::Image renderChartImage(const Chart& chart, int width, int height) {
         ImGui::NewFrame();
         drawChart(ImGui::GetBackgroundDrawList(), chart, {0.f, 0.f, float(width), float(height)});
         ImGui::Render();
-        target.bind();
-        glClearColor(1.f, 1.f, 1.f, 1.f);
-        glClear(GL_COLOR_BUFFER_BIT);
+        target.bindAndClear(1.f, 1.f, 1.f);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         img = renderer::readTexture(target.texture(), width, height);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        renderer::ColorTarget::unbind();
     }
     ImGui::SetCurrentContext(previous);
     for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;

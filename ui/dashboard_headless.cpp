@@ -34,14 +34,12 @@ renderer::Image HeadlessDashboard::render(int frames) {
         ImGui::NewFrame();
         dashboard_->frame(float(width_), float(height_));
         ImGui::Render();
-        target_.bind();
-        glClearColor(0.f, 0.f, 0.f, 1.f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        target_.bindAndClear(0.f, 0.f, 0.f);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
     renderer::Image img = renderer::readTexture(target_.texture(), width_, height_);
     for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    renderer::ColorTarget::unbind();
     return img;
 }
 
