@@ -2,16 +2,16 @@
 
 #include "render_options.h"
 
-#include "geometry/ground_truth.h"
-#include "geometry/preset.h"
-#include "geometry/scene_file.h"
-#include "geometry/shadow_plan.h"
+#include "geometry/analysis/ground_truth.h"
+#include "geometry/io/preset.h"
+#include "geometry/io/scene_file.h"
+#include "geometry/shadow/shadow_plan.h"
 #include "renderer/context.h"
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
-#include "ui/chart.h"
-#include "ui/chart_imgui.h"
-#include "ui/tradeoff_chart.h"
+#include "ui/charts/chart.h"
+#include "ui/chart_image.h"
+#include "ui/charts/tradeoff_chart.h"
 
 #include <CLI/CLI.hpp>
 
@@ -54,10 +54,10 @@ std::vector<Sweep> parseSweeps(const std::vector<std::string>& sweeps) {
         if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
             throw std::invalid_argument("--sweep " + s + ": expected key=v1,v2,...");
         Sweep sw{s.substr(0, eq), splitList(s.substr(eq + 1), ',')};
-        if (!geometry::findSetting(sw.key)) throw std::invalid_argument("--sweep " + s + ": unknown setting '" + sw.key + "'");
+        if (!geometry::shadow::findSetting(sw.key)) throw std::invalid_argument("--sweep " + s + ": unknown setting '" + sw.key + "'");
         for (const auto& v : sw.values) { // validate each value now, with the key's range in the message
-            geometry::ShadowSettings probe;
-            geometry::applySetting(probe, sw.key, v);
+            geometry::shadow::ShadowSettings probe;
+            geometry::shadow::applySetting(probe, sw.key, v);
         }
         out.push_back(std::move(sw));
     }
@@ -73,9 +73,9 @@ std::vector<BenchConfiguration> benchConfigurations(const BenchOptions& o) {
         combinations *= std::max<size_t>(s.values.size(), 1);
         if (combinations > 4096) throw std::invalid_argument("--sweep: more than 4096 configurations");
     }
-    std::vector<std::pair<std::string, geometry::ShadowSettings>> bases;
-    if (o.presets.empty()) bases.emplace_back("", geometry::ShadowSettings{});
-    for (const auto& p : o.presets) bases.emplace_back(p, geometry::loadPreset(p));
+    std::vector<std::pair<std::string, geometry::shadow::ShadowSettings>> bases;
+    if (o.presets.empty()) bases.emplace_back("", geometry::shadow::ShadowSettings{});
+    for (const auto& p : o.presets) bases.emplace_back(p, geometry::io::loadPreset(p));
     if (bases.size() * combinations > 4096) throw std::invalid_argument("bench: more than 4096 configurations");
     std::vector<BenchConfiguration> out;
     for (const auto& [path, base] : bases) {
@@ -84,14 +84,14 @@ std::vector<BenchConfiguration> benchConfigurations(const BenchOptions& o) {
             BenchConfiguration cfg;
             cfg.preset = stem;
             cfg.settings = base;
-            for (const auto& a : o.assignments) geometry::applyAssignment(cfg.settings, a);
+            for (const auto& a : o.assignments) geometry::shadow::applyAssignment(cfg.settings, a);
             std::string label = stem.empty() ? "defaults" : stem;
             size_t rest = c;
             std::vector<std::string> parts(sweeps.size());
             for (size_t i = sweeps.size(); i-- > 0;) { // the last sweep varies fastest
                 const std::string& v = sweeps[i].values[rest % sweeps[i].values.size()];
                 rest /= sweeps[i].values.size();
-                geometry::applySetting(cfg.settings, sweeps[i].key, v);
+                geometry::shadow::applySetting(cfg.settings, sweeps[i].key, v);
                 parts[i] = sweeps[i].key + "=" + v;
             }
             for (const auto& p : parts) label += " " + p;
@@ -128,9 +128,9 @@ struct Row {
     bool truth = false;
 };
 
-ui::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows, bool gpuTimes) {
+ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows, bool gpuTimes) {
     // One point per configuration: mean frame time and geometric-mean p95 over the views.
-    std::vector<ui::TradeoffPoint> points;
+    std::vector<ui::charts::TradeoffPoint> points;
     for (const auto& cfg : configs) {
         double t = 0, logE = 0;
         int n = 0;
@@ -142,7 +142,7 @@ ui::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::
             }
         points.push_back({cfg.label, cfg.preset, n ? t / n : NAN, n ? std::exp(logE / n) : NAN});
     }
-    ui::Chart c = ui::tradeoffChart(points, gpuTimes ? "frame time, GPU median (ms)" : "frame time, CPU median (ms)");
+    ui::charts::Chart c = ui::charts::tradeoffChart(points, gpuTimes ? "frame time, GPU median (ms)" : "frame time, CPU median (ms)");
     if (rows.size() > configs.size()) c.title += ", mean over views";
     return c;
 }
@@ -151,8 +151,8 @@ ui::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::
 
 int runBench(const BenchOptions& o) {
     const std::vector<BenchConfiguration> configs = benchConfigurations(o);
-    geometry::SceneFile file = geometry::resolveScene(o.scene);
-    std::vector<std::pair<std::string, geometry::CanonicalView>> views;
+    geometry::io::SceneFile file = geometry::io::resolveScene(o.scene);
+    std::vector<std::pair<std::string, geometry::io::CanonicalView>> views;
     if (o.views.empty())
         for (const auto& v : file.views) views.emplace_back(v);
     for (const auto& name : o.views) {
@@ -160,14 +160,14 @@ int runBench(const BenchOptions& o) {
         if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
         views.emplace_back(*it);
     }
-    if (views.empty()) views.emplace_back("default", geometry::CanonicalView{file.scene.camera, file.scene.light});
+    if (views.empty()) views.emplace_back("default", geometry::io::CanonicalView{file.scene.camera, file.scene.light});
     std::filesystem::create_directories(o.out);
 
     auto context = renderer::createHeadlessContext(renderer::parseBackend(o.backend));
-    geometry::Scene& scene = file.scene;
+    geometry::scene::Scene& scene = file.scene;
     renderer::Renderer r(scene);
-    std::unique_ptr<geometry::GroundTruth> truth;
-    if (o.truth) truth = std::make_unique<geometry::GroundTruth>(scene);
+    std::unique_ptr<geometry::analysis::GroundTruth> truth;
+    if (o.truth) truth = std::make_unique<geometry::analysis::GroundTruth>(scene);
     std::cerr << "bench: " << configs.size() << " configuration(s) × " << views.size() << " view(s), " << o.frames
               << " frames each on " << context->rendererString() << '\n';
 
@@ -183,10 +183,10 @@ int runBench(const BenchOptions& o) {
             vo.overlays = false;
             vo.unwarped = false;
             std::vector<double> gpu, cpu;
-            geometry::ShadowPlan plan;
+            geometry::shadow::ShadowPlan plan;
             for (int i = 0; i < o.warmup + o.frames; ++i) {
                 const auto t0 = std::chrono::steady_clock::now();
-                plan = geometry::planShadows(cfg.settings, scene.bounds(), scene.camera, scene.light, o.size);
+                plan = geometry::shadow::planShadows(cfg.settings, scene.bounds(), scene.camera, scene.light, o.size);
                 r.render(plan, o.size, vo);
                 glFinish();
                 const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -196,7 +196,7 @@ int runBench(const BenchOptions& o) {
                 if (t.valid) gpu.push_back(t.frame());
             }
             if (gpu.empty()) gpuTimes = false;
-            const renderer::Inspection in = renderer::inspect(r, plan, truth.get());
+            const geometry::analysis::Inspection in = renderer::inspect(r, plan, truth.get());
             Row row;
             row.config = cfg.label;
             row.preset = cfg.preset;
@@ -233,9 +233,9 @@ int runBench(const BenchOptions& o) {
         }
         if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
     }
-    const ui::Chart chart = benchChart(configs, rows, gpuTimes);
-    ui::writeSvg(dir / "tradeoff.svg", chart, 1000, 620);
-    renderer::writePng((dir / "tradeoff.png").string(), ui::renderChartImage(chart, 1000, 620));
+    const ui::charts::Chart chart = benchChart(configs, rows, gpuTimes);
+    ui::charts::writeSvg(dir / "tradeoff.svg", chart, 1000, 620);
+    geometry::analysis::writePng((dir / "tradeoff.png").string(), ui::renderChartImage(chart, 1000, 620));
     for (const char* f : {"results.csv", "tradeoff.svg", "tradeoff.png"}) std::cout << (dir / f).string() << '\n';
     return 0;
 }

@@ -1,9 +1,9 @@
 #pragma once
 // `shadowscope bench`: configurations (presets × --sweep values) × canonical views, N timed frames
 // each after warm-up; results.csv, and the speed/accuracy trade-off chart with its Pareto front.
-#include "geometry/settings.h"
-#include "geometry/scene.h"
-#include "geometry/shadow_plan.h"
+#include "geometry/shadow/settings.h"
+#include "geometry/scene/scene.h"
+#include "geometry/shadow/shadow_plan.h"
 
 #include <string>
 #include <vector>
@@ -20,7 +20,7 @@ struct BenchOptions {
     std::vector<std::string> assignments;  // --set key=value on every configuration
     int frames = 10;
     int warmup = 2;
-    geometry::Viewport size{1280, 720};
+    geometry::shadow::Viewport size{1280, 720};
     std::string out = "out/bench";
     std::string backend = "auto";
     bool truth = false;
@@ -30,7 +30,7 @@ struct BenchOptions {
 struct BenchConfiguration {
     std::string label;
     std::string preset;                    // the preset's file stem ("" for the defaults)
-    geometry::ShadowSettings settings;
+    geometry::shadow::ShadowSettings settings;
 };
 
 /// Every preset × every combination of sweep values, in command-line order (the last sweep varies

@@ -2,10 +2,10 @@
 
 #include "render_options.h"
 
-#include "geometry/analytic_error.h"
-#include "geometry/splits.h"
-#include "geometry/warp.h"
-#include "ui/analytic_charts.h"
+#include "geometry/shadow/analytic_error.h"
+#include "geometry/shadow/splits.h"
+#include "geometry/shadow/warp.h"
+#include "ui/charts/analytic_charts.h"
 
 #include <CLI/CLI.hpp>
 
@@ -22,18 +22,18 @@ namespace app {
 
 namespace {
 
-using geometry::SplitScheme;
-using geometry::WarpMethod;
+using geometry::shadow::SplitScheme;
+using geometry::shadow::WarpMethod;
 
 constexpr double kMinGammaStepDeg = 0.01; // 9001 γ samples at most
-using ui::ErrorRow;
-using ui::formatNumber;
-using ui::SplitRow;
-using ui::WarpRow;
+using ui::charts::ErrorRow;
+using ui::charts::formatNumber;
+using ui::charts::SplitRow;
+using ui::charts::WarpRow;
 
 int mapResOf(const CurvesOptions& o) { return o.mapRes.value_or(o.settings.resolution); }
 
-ui::CurveParams paramsOf(const CurvesOptions& o) {
+ui::charts::CurveParams paramsOf(const CurvesOptions& o) {
     return {o.near, o.far, o.fovYDeg, o.gammaStepDeg, o.gammaDeg, o.screenRes, mapResOf(o), o.settings};
 }
 
@@ -42,7 +42,7 @@ ui::CurveParams paramsOf(const CurvesOptions& o) {
 std::string warpCsv(const std::vector<WarpRow>& rows) {
     std::string out = "gamma_deg,method,n_prime,lambda\n";
     for (const WarpRow& r : rows)
-        out += formatNumber(r.gammaDeg) + "," + std::string(geometry::warpMethodName(r.method)) + "," +
+        out += formatNumber(r.gammaDeg) + "," + std::string(geometry::shadow::warpMethodName(r.method)) + "," +
                formatNumber(r.nPrime) + "," + formatNumber(r.lambda) + "\n";
     return out;
 }
@@ -50,7 +50,7 @@ std::string warpCsv(const std::vector<WarpRow>& rows) {
 std::string errorCsv(const std::vector<ErrorRow>& rows) {
     std::string out = "z,method,m_z\n";
     for (const ErrorRow& r : rows)
-        out += formatNumber(r.z) + "," + std::string(geometry::warpMethodName(r.method)) + "," + formatNumber(r.mz) + "\n";
+        out += formatNumber(r.z) + "," + std::string(geometry::shadow::warpMethodName(r.method)) + "," + formatNumber(r.mz) + "\n";
     return out;
 }
 
@@ -58,7 +58,7 @@ std::string splitsCsv(const std::vector<SplitRow>& rows) {
     std::string out = "gamma_deg,scheme,i,near,far\n";
     for (const SplitRow& r : rows)
         for (size_t i = 0; i + 1 < r.boundaries.size(); ++i)
-            out += formatNumber(r.gammaDeg) + "," + std::string(geometry::splitSchemeName(r.scheme)) + "," +
+            out += formatNumber(r.gammaDeg) + "," + std::string(geometry::shadow::splitSchemeName(r.scheme)) + "," +
                    std::to_string(i) + "," + formatNumber(r.boundaries[i]) + "," + formatNumber(r.boundaries[i + 1]) + "\n";
     return out;
 }
@@ -89,7 +89,7 @@ void addCurvesCommand(CLI::App& cmd, CurvesOptions& o) {
 }
 
 void validateCurves(const CurvesOptions& o) {
-    geometry::validateFrustum(o.near, o.far, o.fovYDeg);
+    geometry::shadow::validateFrustum(o.near, o.far, o.fovYDeg);
     // A floor on the step keeps a typo like 1e-9 from asking for 10^11 rows (a hang, not an error).
     if (!(o.gammaStepDeg >= kMinGammaStepDeg && o.gammaStepDeg <= 90))
         throw std::invalid_argument("gamma-step: " + formatNumber(o.gammaStepDeg) + " must be within " +
@@ -98,10 +98,10 @@ void validateCurves(const CurvesOptions& o) {
         throw std::invalid_argument("gamma: " + formatNumber(o.gammaDeg) + " must be within [0, 90] degrees");
     if (o.screenRes < 1) throw std::invalid_argument("screen-res: " + std::to_string(o.screenRes) + " must be >= 1");
     if (mapResOf(o) < 1) throw std::invalid_argument("map-res: " + std::to_string(mapResOf(o)) + " must be >= 1");
-    geometry::validateOrThrow(o.settings);
+    geometry::shadow::validateOrThrow(o.settings);
 }
 
-std::vector<double> gammaSamplesDeg(double stepDeg) { return ui::gammaSamplesDeg(stepDeg); }
+std::vector<double> gammaSamplesDeg(double stepDeg) { return ui::charts::gammaSamplesDeg(stepDeg); }
 
 int runCurves(const CurvesOptions& o) {
     validateCurves(o);
@@ -110,18 +110,18 @@ int runCurves(const CurvesOptions& o) {
     if (ec) throw std::runtime_error("cannot create output folder " + o.out + ": " + ec.message());
     const std::filesystem::path dir(o.out);
 
-    const ui::CurveParams p = paramsOf(o);
-    const auto warp = ui::warpRows(p);
-    const auto error = ui::errorRows(p);
-    const auto splits = ui::splitRows(p);
+    const ui::charts::CurveParams p = paramsOf(o);
+    const auto warp = ui::charts::warpRows(p);
+    const auto error = ui::charts::errorRows(p);
+    const auto splits = ui::charts::splitRows(p);
     const std::vector<std::pair<std::filesystem::path, std::string>> files{
         {dir / "warp.csv", warpCsv(warp)},
         {dir / "error.csv", errorCsv(error)},
         {dir / "splits.csv", splitsCsv(splits)},
-        {dir / "warp.svg", ui::chartToSvg(ui::warpChart(warp, p), 860, 520)},
-        {dir / "lambda.svg", ui::chartToSvg(ui::lambdaChart(warp, p), 860, 520)},
-        {dir / "error.svg", ui::chartToSvg(ui::errorChart(error, p), 860, 520)},
-        {dir / "splits.svg", ui::chartsToSvg(ui::splitChartsTitle(p), ui::splitCharts(splits, p), 3, 440, 330)},
+        {dir / "warp.svg", ui::charts::chartToSvg(ui::charts::warpChart(warp, p), 860, 520)},
+        {dir / "lambda.svg", ui::charts::chartToSvg(ui::charts::lambdaChart(warp, p), 860, 520)},
+        {dir / "error.svg", ui::charts::chartToSvg(ui::charts::errorChart(error, p), 860, 520)},
+        {dir / "splits.svg", ui::charts::chartsToSvg(ui::charts::splitChartsTitle(p), ui::charts::splitCharts(splits, p), 3, 440, 330)},
     };
     for (const auto& [path, text] : files) writeText(path, text);
     for (const auto& [path, text] : files) std::cout << path.string() << '\n';

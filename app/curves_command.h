@@ -1,7 +1,7 @@
 #pragma once
 // `shadowscope curves`: the analytic curves of DESIGN §3 (warp parameter n'(γ), aliasing error
 // m_z(z), split boundaries against γ) as CSV tables and SVG charts, without rendering anything.
-#include "geometry/settings.h"
+#include "geometry/shadow/settings.h"
 
 #include <optional>
 #include <string>
@@ -18,7 +18,7 @@ struct CurvesOptions {
     int screenRes = 1080;                     // res_screen_y of the error model
     std::optional<int> mapRes;                // res_map; default: the settings' shadow_map.resolution
     std::string out = "out";
-    geometry::ShadowSettings settings;        // --set key=value (warp options, split count and scheme options)
+    geometry::shadow::ShadowSettings settings;        // --set key=value (warp options, split count and scheme options)
 };
 
 /// Adds the curves options (--near, --far, --fov-y, --gamma-step, --gamma, --screen-res, --map-res,

@@ -1,6 +1,6 @@
 #include "dashboard_setup.h"
 
-#include "geometry/builtin_scenes.h"
+#include "geometry/scene/builtin_scenes.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -36,7 +36,7 @@ std::vector<std::string> jsonFiles(const fs::path& dir) {
 } // namespace
 
 std::vector<std::string> sceneChoices() {
-    std::vector<std::string> out = geometry::builtinSceneNames();
+    std::vector<std::string> out = geometry::scene::builtinSceneNames();
     if (const fs::path r = resourceDirectory(); !r.empty())
         for (auto& f : jsonFiles(r / "scenes")) out.push_back(std::move(f));
     return out;
@@ -51,7 +51,7 @@ ui::LoadedScene loadDashboardScene(const RenderOptions& options) {
     ui::LoadedScene loaded;
     loaded.source = options.scene;
     loaded.file = loadSceneFile(options);
-    loaded.truth = std::make_unique<geometry::GroundTruth>(loaded.file.scene);
+    loaded.truth = std::make_unique<geometry::analysis::GroundTruth>(loaded.file.scene);
     return loaded;
 }
 

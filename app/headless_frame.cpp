@@ -11,9 +11,9 @@ HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames, ren
     HeadlessFrame f;
     f.scene = loadScene(options);
     f.context = renderer::createHeadlessContext(renderer::parseBackend(options.backend));
-    const geometry::ShadowSettings& settings = options.settings;
+    const geometry::shadow::ShadowSettings& settings = options.settings;
     const auto t0 = std::chrono::steady_clock::now();
-    f.plan = geometry::planShadows(settings, f.scene.bounds(), f.scene.camera, f.scene.light, options.size);
+    f.plan = geometry::shadow::planShadows(settings, f.scene.bounds(), f.scene.camera, f.scene.light, options.size);
     f.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     f.renderer = std::make_unique<renderer::Renderer>(f.scene);
     if (views.lightViewSize <= 0) views.lightViewSize = lightViewSize(settings.resolution);

@@ -10,8 +10,8 @@ namespace app {
 
 struct HeadlessFrame {
     std::unique_ptr<renderer::GlContext> context;
-    geometry::Scene scene;
-    geometry::ShadowPlan plan;
+    geometry::scene::Scene scene;
+    geometry::shadow::ShadowPlan plan;
     double planMicroseconds = 0;
     std::unique_ptr<renderer::Renderer> renderer;
 };

@@ -1,6 +1,6 @@
 #include "mesh_command.h"
 
-#include "geometry/model_loader.h"
+#include "geometry/io/model_loader.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -11,9 +11,9 @@ namespace app {
 
 namespace {
 
-nlohmann::json reportJson(const geometry::LoadedModel& m) {
+nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
     const auto& r = m.report;
-    geometry::Aabb bounds;
+    geometry::scene::Aabb bounds;
     size_t triangles = 0, vertices = 0;
     for (const auto& mesh : m.meshes) {
         bounds.add(mesh.worldBounds());
@@ -48,12 +48,12 @@ void printText(const nlohmann::json& j) {
     for (const auto& note : j["cleanup"]["notes"]) std::cout << "  note: " << note.get<std::string>() << "\n";
 }
 
-geometry::LoadedModel load(const MeshOptions& o) {
-    geometry::CleanupOptions c;
+geometry::io::LoadedModel load(const MeshOptions& o) {
+    geometry::io::CleanupOptions c;
     c.creaseAngleDeg = o.creaseAngleDeg;
     c.mergeTolerance = o.mergeTolerance;
     c.fixOrientation = o.fixOrientation;
-    return geometry::loadModel(o.input, c);
+    return geometry::io::loadModel(o.input, c);
 }
 
 void addCleanupOptions(CLI::App& cmd, MeshOptions& o) {
@@ -83,7 +83,7 @@ CLI::App* addMeshCommand(CLI::App& cli, MeshOptions& o) {
 }
 
 int runMesh(const CLI::App& mesh, const MeshOptions& o) {
-    const geometry::LoadedModel model = load(o);
+    const geometry::io::LoadedModel model = load(o);
     if (mesh.get_subcommand("info")->parsed()) {
         const nlohmann::json j = reportJson(model);
         if (o.json) std::cout << j.dump(2) << '\n';
@@ -91,7 +91,7 @@ int runMesh(const CLI::App& mesh, const MeshOptions& o) {
         return 0;
     }
     // One output mesh: the model's meshes merged with their transforms applied.
-    geometry::Mesh merged;
+    geometry::scene::Mesh merged;
     for (const auto& m : model.meshes) {
         const auto base = static_cast<uint32_t>(merged.positions.size());
         const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m.transform)));
@@ -101,7 +101,7 @@ int runMesh(const CLI::App& mesh, const MeshOptions& o) {
         }
         for (uint32_t idx : m.indices) merged.indices.push_back(base + idx);
     }
-    geometry::saveMesh(o.output, merged);
+    geometry::io::saveMesh(o.output, merged);
     std::cout << o.output << '\n';
     return 0;
 }

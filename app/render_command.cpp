@@ -4,9 +4,9 @@
 #include "headless_frame.h"
 #include "ui/dashboard_headless.h"
 #include "renderer/inspection.h"
-#include "renderer/view_images.h"
-#include "geometry/ground_truth.h"
-#include "renderer/heatmap.h"
+#include "geometry/analysis/view_images.h"
+#include "geometry/analysis/ground_truth.h"
+#include "geometry/analysis/heatmap.h"
 
 #include <CLI/CLI.hpp>
 
@@ -28,7 +28,7 @@ const std::vector<std::string>& viewNames() {
     return names;
 }
 
-using renderer::Inspection;
+using geometry::analysis::Inspection;
 using renderer::inspect;
 
 nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
@@ -42,7 +42,7 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     j["size"] = {o.size.width, o.size.height};
     j["shadow_res"] = o.settings.resolution;
     nlohmann::json settings;
-    for (const auto& info : geometry::settingsDeclaration()) settings[std::string(info.key)] = info.format(o.settings);
+    for (const auto& info : geometry::shadow::settingsDeclaration()) settings[std::string(info.key)] = info.format(o.settings);
     j["settings"] = settings;
     nlohmann::json splits = nlohmann::json::array();
     for (size_t i = 0; i < f.plan.splits.size(); ++i) {
@@ -104,14 +104,14 @@ namespace {
 struct Writer {
     std::filesystem::path dir;
     std::vector<std::string> written;
-    void png(const std::string& name, const renderer::Image& img) {
+    void png(const std::string& name, const geometry::analysis::Image& img) {
         const std::string path = (dir / name).string();
-        renderer::writePng(path, img);
+        geometry::analysis::writePng(path, img);
         written.push_back(path);
     }
     void pfm(const std::string& name, const std::vector<float>& values, int w, int h) {
         const std::string path = (dir / name).string();
-        renderer::writePfm(path, values, w, h);
+        geometry::analysis::writePfm(path, values, w, h);
         written.push_back(path);
     }
 };
@@ -138,13 +138,13 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     if (ec) throw std::runtime_error("cannot create output folder " + o.out + ": " + ec.message());
     Writer w{std::filesystem::path(o.out), {}};
 
-    std::unique_ptr<geometry::GroundTruth> truth;
-    if (e.truth) truth = std::make_unique<geometry::GroundTruth>(f.scene);
+    std::unique_ptr<geometry::analysis::GroundTruth> truth;
+    if (e.truth) truth = std::make_unique<geometry::analysis::GroundTruth>(f.scene);
     const Inspection in = inspect(*f.renderer, f.plan, truth.get());
-    const renderer::Image eye = f.renderer->readEye();
+    const geometry::analysis::Image eye = f.renderer->readEye();
     if (wants(e, "eye")) w.png("eye.png", eye);
     if (wants(e, "light")) {
-        renderer::Image light = f.renderer->readLight();
+        geometry::analysis::Image light = f.renderer->readLight();
         if (e.lightTexels) tintSampledTexels(light, in, e.lightSplit, std::min(f.plan.splits[e.lightSplit].resolution,
                                                                                  f.renderer->stats().shadowResolution));
         w.png("light.png", light);

@@ -1,8 +1,8 @@
 #include "render_options.h"
 
-#include "geometry/preset.h"
+#include "geometry/io/preset.h"
 
-#include "geometry/scene_file.h"
+#include "geometry/io/scene_file.h"
 
 #include <CLI/CLI.hpp>
 
@@ -48,7 +48,7 @@ std::vector<float> parseFloats(const std::string& text, size_t n, const char* wh
 
 } // namespace
 
-geometry::Viewport parseSize(const std::string& text) {
+geometry::shadow::Viewport parseSize(const std::string& text) {
     const auto x = text.find_first_of("xX");
     try {
         if (x == std::string::npos) throw std::invalid_argument(text);
@@ -70,7 +70,7 @@ namespace {
 /// Declares --set once for both addRenderOptions and addSettingOption.
 CLI::Option* addSetOption(CLI::App& cmd, std::function<void(const std::vector<std::string>&)> apply) {
     std::string keys;
-    for (const auto& info : geometry::settingsDeclaration())
+    for (const auto& info : geometry::shadow::settingsDeclaration())
         keys += "\n  " + std::string(info.key) + ": " + std::string(info.help) + " (" + info.rangeText() + ")";
     return cmd.add_option_function<std::vector<std::string>>("--set", std::move(apply),
                                                              "Shadow setting key=value (repeatable). Keys:" + keys)
@@ -86,17 +86,17 @@ CLI::Option* addSetOption(CLI::App& cmd, std::function<void(const std::vector<st
 /// so running it once per given option (a preset file is then read up to three times) is harmless.
 struct SettingSources {
     RenderOptions* target = nullptr;
-    geometry::ShadowSettings base;      // target->settings when the options were declared
+    geometry::shadow::ShadowSettings base;      // target->settings when the options were declared
     CLI::Option* presets = nullptr;     // --preset FILE, in command-line order
     CLI::Option* shadowRes = nullptr;   // --shadow-res N
     CLI::Option* assignments = nullptr; // --set key=value, in command-line order
 
     void rebuild() const {
-        geometry::ShadowSettings s = base;
-        for (const auto& path : presets->results()) s = geometry::loadPreset(path, s);
+        geometry::shadow::ShadowSettings s = base;
+        for (const auto& path : presets->results()) s = geometry::io::loadPreset(path, s);
         if (shadowRes->count() > 0)
-            geometry::applySetting(s, "shadow_map.resolution", std::to_string(shadowRes->as<int>()));
-        for (const auto& a : assignments->results()) geometry::applyAssignment(s, a);
+            geometry::shadow::applySetting(s, "shadow_map.resolution", std::to_string(shadowRes->as<int>()));
+        for (const auto& a : assignments->results()) geometry::shadow::applyAssignment(s, a);
         target->settings = s;
         target->settingsGiven = true;
     }
@@ -158,7 +158,7 @@ private:
     Clock::time_point last_{};
 };
 
-std::string unknownView(const RenderOptions& o, const geometry::SceneFile& file) {
+std::string unknownView(const RenderOptions& o, const geometry::io::SceneFile& file) {
     std::string names;
     for (const auto& [name, view] : file.views) names += (names.empty() ? "" : ", ") + name;
     return "--view " + o.view + ": scene '" + o.scene + "' has no such view (" +
@@ -184,7 +184,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
         "--camera",
         [&o](const std::string& s) {
             const auto v = parseFloats(s, 6, "--camera");
-            geometry::Camera c;
+            geometry::scene::Camera c;
             c.eye = {v[0], v[1], v[2]};
             c.target = {v[3], v[4], v[5]};
             if (glm::length(c.target - c.eye) <= 0.f)
@@ -204,19 +204,19 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
     addSettingSources(cmd, o);
 }
 
-void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings) {
+void addSettingOption(CLI::App& cmd, geometry::shadow::ShadowSettings& settings) {
     addSetOption(cmd, [&settings](const std::vector<std::string>& assignments) {
-        for (const auto& a : assignments) geometry::applyAssignment(settings, a);
+        for (const auto& a : assignments) geometry::shadow::applyAssignment(settings, a);
     });
 }
 
-geometry::SceneFile loadSceneFile(const RenderOptions& o) {
-    geometry::SceneFile file;
+geometry::io::SceneFile loadSceneFile(const RenderOptions& o) {
+    geometry::io::SceneFile file;
     {
         LoadProgress progress(std::filesystem::path(o.scene).filename().string());
-        file = geometry::resolveScene(o.scene, std::ref(progress));
+        file = geometry::io::resolveScene(o.scene, std::ref(progress));
     }
-    geometry::Scene& scene = file.scene;
+    geometry::scene::Scene& scene = file.scene;
     if (!o.view.empty()) {
         const auto it = file.views.find(o.view);
         if (it == file.views.end()) throw std::invalid_argument(unknownView(o, file));
@@ -231,6 +231,6 @@ geometry::SceneFile loadSceneFile(const RenderOptions& o) {
     return file;
 }
 
-geometry::Scene loadScene(const RenderOptions& o) { return loadSceneFile(o).scene; }
+geometry::scene::Scene loadScene(const RenderOptions& o) { return loadSceneFile(o).scene; }
 
 } // namespace app

@@ -1,9 +1,9 @@
 #pragma once
 // Options shared by every command that renders (render, and later bench, sweep, the GUI's
 // start-up): declared once here.
-#include "geometry/scene.h"
-#include "geometry/scene_file.h"
-#include "geometry/shadow_plan.h"
+#include "geometry/scene/scene.h"
+#include "geometry/io/scene_file.h"
+#include "geometry/shadow/shadow_plan.h"
 
 #include <optional>
 #include <string>
@@ -15,17 +15,17 @@ namespace app {
 struct RenderOptions {
     std::string scene = "platform";                 // built-in name, scene file (.json) or model file
     std::string view;                               // a canonical view of the scene; empty: the scene's camera
-    geometry::Viewport size{1280, 720};
+    geometry::shadow::Viewport size{1280, 720};
     std::string out = "out";
     std::string backend = "auto";
-    std::optional<geometry::Camera> camera;         // eye + target overrides
+    std::optional<geometry::scene::Camera> camera;         // eye + target overrides
     std::optional<glm::vec3> light;                 // l overrides
-    geometry::ShadowSettings settings;             // --preset FILE, --shadow-res, --set
+    geometry::shadow::ShadowSettings settings;             // --preset FILE, --shadow-res, --set
     bool settingsGiven = false;                     // any of those three was on the command line key=value
 };
 
 /// "WxH" with 1 ≤ W, H ≤ 16384; throws std::invalid_argument naming --size otherwise.
-[[nodiscard]] geometry::Viewport parseSize(const std::string& text);
+[[nodiscard]] geometry::shadow::Viewport parseSize(const std::string& text);
 
 /// Adds --scene, --view, --size, --out, --backend, --camera, --light, --preset, --shadow-res, --set to `cmd`.
 /// After parsing, options.settings is: its value when this was called, then every --preset file
@@ -35,15 +35,15 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& options);
 
 /// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()),
 /// applied directly to `settings`; for commands without --preset.
-void addSettingOption(CLI::App& cmd, geometry::ShadowSettings& settings);
+void addSettingOption(CLI::App& cmd, geometry::shadow::ShadowSettings& settings);
 
 /// The scene named by options.scene (geometry::resolveScene: a built-in name, a scene file or a
 /// model file), seen from options.view when given, with the camera and light overrides applied
 /// last. Loads that take longer than half a second show a progress line on stderr (a terminal
 /// only). Throws std::invalid_argument (unknown view) or std::runtime_error (the scene does not
 /// load), each with a one-line reason.
-[[nodiscard]] geometry::Scene loadScene(const RenderOptions& options);
+[[nodiscard]] geometry::scene::Scene loadScene(const RenderOptions& options);
 /// loadScene() keeping the whole scene file (its canonical views and paths) around the scene.
-[[nodiscard]] geometry::SceneFile loadSceneFile(const RenderOptions& options);
+[[nodiscard]] geometry::io::SceneFile loadSceneFile(const RenderOptions& options);
 
 } // namespace app

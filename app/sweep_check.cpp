@@ -1,8 +1,8 @@
 #include "sweep_check.h"
 
-#include "ui/analytic_charts.h"
+#include "ui/charts/analytic_charts.h"
 
-#include "geometry/stability_metrics.h"
+#include "geometry/analysis/stability_metrics.h"
 
 #include <algorithm>
 #include <charconv>
@@ -100,7 +100,7 @@ std::vector<std::string> checkSweep(const std::vector<SweepRecord>& rows, const 
             if (!(a.receivers >= t.minReceivers && b.receivers >= t.minReceivers)) continue;
             // A p95 at the shader's cap for singular J (receivers edge-on to the light, e.g. the sea
             // as the sun crosses the horizon) is no measurement of the warp: not judged.
-            const auto capped = [](const SweepRecord& r) { return r.p95 >= geometry::kSingularM || r.p95Uniform >= geometry::kSingularM; };
+            const auto capped = [](const SweepRecord& r) { return r.p95 >= geometry::analysis::kSingularM || r.p95Uniform >= geometry::analysis::kSingularM; };
             if (capped(a) || capped(b)) continue;
             const double ga = gain(a), gb = gain(b);
             if (!(ga > 0 && gb > 0 && std::isfinite(ga) && std::isfinite(gb))) continue;
@@ -163,6 +163,6 @@ std::vector<SweepRecord> parseSweepCsv(std::string_view text) {
     return rows;
 }
 
-std::string formatCsvNumber(double v) { return ui::formatNumber(v); }
+std::string formatCsvNumber(double v) { return ui::charts::formatNumber(v); }
 
 } // namespace app

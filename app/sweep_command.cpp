@@ -1,6 +1,6 @@
 #include "sweep_command.h"
 
-#include "geometry/warp.h"
+#include "geometry/shadow/warp.h"
 
 #include <CLI/CLI.hpp>
 
@@ -36,8 +36,8 @@ void addThresholdOptions(CLI::App& cmd, SweepThresholds& t) {
 
 std::string methodList() {
     std::string s;
-    for (int m = 0; m <= int(geometry::WarpMethod::Manual); ++m)
-        s += (s.empty() ? "" : ", ") + std::string(geometry::warpMethodName(geometry::WarpMethod(m)));
+    for (int m = 0; m <= int(geometry::shadow::WarpMethod::Manual); ++m)
+        s += (s.empty() ? "" : ", ") + std::string(geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)));
     return s;
 }
 

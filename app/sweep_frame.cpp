@@ -25,15 +25,15 @@ std::string duration(double s) {
 
 } // namespace
 
-SweepRenderer::SweepRenderer(const geometry::Scene& scene, const std::string& backend)
+SweepRenderer::SweepRenderer(const geometry::scene::Scene& scene, const std::string& backend)
     : scene_(scene), context_(renderer::createHeadlessContext(renderer::parseBackend(backend))),
       renderer_(std::make_unique<renderer::Renderer>(scene_)), truth_(scene_) {}
 
-SweepFrame SweepRenderer::render(const geometry::ShadowSettings& settings, const geometry::Camera& camera,
-                                 const geometry::DirectionalLight& light, const geometry::Viewport& viewport) {
+SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& settings, const geometry::scene::Camera& camera,
+                                 const geometry::scene::DirectionalLight& light, const geometry::shadow::Viewport& viewport) {
     context_->makeCurrent();
     SweepFrame f;
-    f.plan = geometry::planShadows(settings, scene_.bounds(), camera, light, viewport);
+    f.plan = geometry::shadow::planShadows(settings, scene_.bounds(), camera, light, viewport);
     renderer::ViewOptions views;
     views.lightViewSize = 16; // the light views are not looked at: keep their cost negligible
     views.overlays = false;
@@ -51,7 +51,7 @@ SweepFrame SweepRenderer::render(const geometry::ShadowSettings& settings, const
         truthLight_ = f.plan.l;
     }
     f.in.occluded = truthOccluded_;
-    f.in.truth = geometry::truthStats(f.in.shadow, *f.in.occluded, f.in.receiver);
+    f.in.truth = geometry::analysis::truthStats(f.in.shadow, *f.in.occluded, f.in.receiver);
     f.glErrors = renderer::takeGlErrors();
     return f;
 }

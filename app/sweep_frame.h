@@ -2,8 +2,8 @@
 // The frame loop shared by `sweep gamma` and `sweep path`: one GL context, one Renderer and one
 // ground-truth BVH for the whole run, re-planned and re-rendered per step (a sweep of hundreds of
 // frames must not pay for a context and a scene upload each time).
-#include "geometry/ground_truth.h"
-#include "geometry/shadow_plan.h"
+#include "geometry/analysis/ground_truth.h"
+#include "geometry/shadow/shadow_plan.h"
 #include "renderer/context.h"
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
@@ -14,29 +14,29 @@
 namespace app {
 
 struct SweepFrame {
-    geometry::ShadowPlan plan;
-    renderer::Inspection in; // with truth (in.occluded, in.truth)
+    geometry::shadow::ShadowPlan plan;
+    geometry::analysis::Inspection in; // with truth (in.occluded, in.truth)
     std::string glErrors;    // renderer::takeGlErrors() after this frame; empty when clean
 };
 
 class SweepRenderer {
 public:
     /// Creates the headless context (backend name as --backend), uploads `scene`, builds the BVH.
-    SweepRenderer(const geometry::Scene& scene, const std::string& backend);
+    SweepRenderer(const geometry::scene::Scene& scene, const std::string& backend);
 
     /// Plans, renders one frame and reads it back with ground truth. The truth rays of the
     /// previous frame are reused when camera, light and viewport are unchanged (the eye pass, and
     /// so every receiver position, does not depend on the shadow settings).
-    [[nodiscard]] SweepFrame render(const geometry::ShadowSettings& settings, const geometry::Camera& camera,
-                                    const geometry::DirectionalLight& light, const geometry::Viewport& viewport);
+    [[nodiscard]] SweepFrame render(const geometry::shadow::ShadowSettings& settings, const geometry::scene::Camera& camera,
+                                    const geometry::scene::DirectionalLight& light, const geometry::shadow::Viewport& viewport);
 
     [[nodiscard]] const renderer::GlContext& context() const noexcept { return *context_; }
 
 private:
-    geometry::Scene scene_;
+    geometry::scene::Scene scene_;
     std::unique_ptr<renderer::GlContext> context_;
     std::unique_ptr<renderer::Renderer> renderer_;
-    geometry::GroundTruth truth_;
+    geometry::analysis::GroundTruth truth_;
     // The last frame's truth and what it was computed for.
     glm::mat4 truthView_{0.f}, truthProj_{0.f};
     glm::vec3 truthLight_{0.f};

@@ -2,11 +2,11 @@
 #include "sweep_command.h"
 #include "sweep_frame.h"
 
-#include "geometry/caster_coverage.h"
-#include "geometry/light_angle.h"
-#include "geometry/stability_metrics.h"
-#include "geometry/warp.h"
-#include "ui/chart.h"
+#include "geometry/analysis/caster_coverage.h"
+#include "geometry/scene/light_angle.h"
+#include "geometry/analysis/stability_metrics.h"
+#include "geometry/shadow/warp.h"
+#include "ui/charts/chart.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,12 +21,12 @@ namespace app {
 
 namespace {
 
-geometry::WarpMethod parseMethod(const std::string& name) {
-    for (int m = 0; m <= int(geometry::WarpMethod::Manual); ++m)
-        if (geometry::warpMethodName(geometry::WarpMethod(m)) == name) return geometry::WarpMethod(m);
+geometry::shadow::WarpMethod parseMethod(const std::string& name) {
+    for (int m = 0; m <= int(geometry::shadow::WarpMethod::Manual); ++m)
+        if (geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)) == name) return geometry::shadow::WarpMethod(m);
     std::string list;
-    for (int m = 0; m <= int(geometry::WarpMethod::Manual); ++m)
-        list += (list.empty() ? "" : ", ") + std::string(geometry::warpMethodName(geometry::WarpMethod(m)));
+    for (int m = 0; m <= int(geometry::shadow::WarpMethod::Manual); ++m)
+        list += (list.empty() ? "" : ", ") + std::string(geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)));
     throw std::invalid_argument("--methods: unknown warp method '" + name + "' (expected " + list + ")");
 }
 
@@ -50,24 +50,24 @@ SweepRecord record(double angleDeg, const std::string& method, const SweepFrame&
     r.falseLit = f.in.truth->falseLit;
     r.falseShadow = f.in.truth->falseShadow;
     r.glErrors = f.glErrors.empty() ? 0 : 1;
-    const geometry::CasterCoverage c =
-        geometry::casterCoverage(f.plan, f.in.positions, f.in.aux, f.in.receiver, *f.in.occluded, f.in.shadow);
+    const geometry::analysis::CasterCoverage c =
+        geometry::analysis::casterCoverage(f.plan, f.in.positions, f.in.aux, f.in.receiver, *f.in.occluded, f.in.shadow);
     r.clippedCasters = c.clipped;
     r.falseLitClipped = c.falseLitClipped;
     return r;
 }
 
-ui::Chart methodChart(const std::vector<SweepRecord>& rows, const std::vector<std::string>& methods, std::string title,
-                      ui::ChartAxis y, const std::function<double(const SweepRecord&)>& value, bool skipUniform) {
-    ui::Chart c;
+ui::charts::Chart methodChart(const std::vector<SweepRecord>& rows, const std::vector<std::string>& methods, std::string title,
+                      ui::charts::ChartAxis y, const std::function<double(const SweepRecord&)>& value, bool skipUniform) {
+    ui::charts::Chart c;
     c.title = std::move(title);
     c.x = {"light-view angle acos(v·l), degrees (0: light behind the eye, 180: facing it)", false, 0.0, 180.0};
     c.y = std::move(y);
     for (size_t k = 0; k < methods.size(); ++k) {
         if (skipUniform && methods[k] == "uniform") continue;
-        ui::ChartSeries s;
+        ui::charts::ChartSeries s;
         s.name = methods[k];
-        s.colour = ui::paletteColour(int(k));
+        s.colour = ui::charts::paletteColour(int(k));
         for (const SweepRecord& r : rows)
             if (r.method == methods[k]) s.points.push_back({r.angleDeg, value(r)});
         c.series.push_back(std::move(s));
@@ -78,7 +78,7 @@ ui::Chart methodChart(const std::vector<SweepRecord>& rows, const std::vector<st
 } // namespace
 
 int runSweepGamma(const SweepGammaOptions& o) {
-    std::vector<geometry::WarpMethod> methods;
+    std::vector<geometry::shadow::WarpMethod> methods;
     std::vector<std::string> names;
     for (const auto& name : o.methods) {
         const auto m = parseMethod(name);
@@ -89,9 +89,9 @@ int runSweepGamma(const SweepGammaOptions& o) {
     }
     if (methods.empty()) throw std::invalid_argument("--methods: no method given");
     const std::vector<double> angles = sweepAngles(o.fromDeg, o.toDeg, o.stepDeg);
-    geometry::validateOrThrow(o.render.settings);
-    const geometry::Scene scene = loadScene(o.render);
-    geometry::validateFrustum(scene.camera.near, scene.camera.far, scene.camera.fovYDeg);
+    geometry::shadow::validateOrThrow(o.render.settings);
+    const geometry::scene::Scene scene = loadScene(o.render);
+    geometry::shadow::validateFrustum(scene.camera.near, scene.camera.far, scene.camera.fovYDeg);
     std::error_code ec;
     std::filesystem::create_directories(o.render.out, ec);
     if (ec) throw std::runtime_error("cannot create output folder " + o.render.out + ": " + ec.message());
@@ -105,18 +105,18 @@ int runSweepGamma(const SweepGammaOptions& o) {
     {
         SweepProgress progress("sweep gamma", int(angles.size() * methods.size()));
         for (const double angle : angles) {
-            const geometry::DirectionalLight light{geometry::lightAtViewAngle(v, reference, float(angle))};
+            const geometry::scene::DirectionalLight light{geometry::scene::lightAtViewAngle(v, reference, float(angle))};
             // Uniform at every angle, swept or not: the continuity rule compares each warp with it.
-            const auto renderMethod = [&](geometry::WarpMethod method, const std::string& name) {
-                geometry::ShadowSettings settings = o.render.settings;
+            const auto renderMethod = [&](geometry::shadow::WarpMethod method, const std::string& name) {
+                geometry::shadow::ShadowSettings settings = o.render.settings;
                 settings.warp.method = method;
                 const SweepFrame f = sweeper.render(settings, scene.camera, light, o.render.size);
                 if (!f.glErrors.empty()) glErrors.push_back(name + " at " + formatCsvNumber(angle) + " deg: " + f.glErrors);
                 return record(angle, name, f);
             };
-            const SweepRecord uniform = renderMethod(geometry::WarpMethod::Uniform, "uniform");
+            const SweepRecord uniform = renderMethod(geometry::shadow::WarpMethod::Uniform, "uniform");
             for (size_t k = 0; k < methods.size(); ++k) {
-                SweepRecord r = methods[k] == geometry::WarpMethod::Uniform ? uniform : renderMethod(methods[k], names[k]);
+                SweepRecord r = methods[k] == geometry::shadow::WarpMethod::Uniform ? uniform : renderMethod(methods[k], names[k]);
                 r.p95Uniform = uniform.p95;
                 rows.push_back(r);
                 progress.step(int(rows.size()), names[k] + " at " + formatCsvNumber(angle) + " deg");
@@ -138,8 +138,8 @@ int runSweepGamma(const SweepGammaOptions& o) {
                               std::to_string(o.render.settings.splits.count) + " split(s)";
     // m at the shader's cap for a singular J (receivers edge-on to the light) is not a measurement:
     // those points are left out of the m charts rather than squashing every curve.
-    const auto measured = [](double m) { return m < geometry::kSingularM ? m : NAN; };
-    const std::vector<std::pair<std::filesystem::path, ui::Chart>> charts{
+    const auto measured = [](double m) { return m < geometry::analysis::kSingularM ? m : NAN; };
+    const std::vector<std::pair<std::filesystem::path, ui::charts::Chart>> charts{
         {dir / "n_prime.svg",
          methodChart(rows, names, "n' of split 0 (uniform: ∞, not drawn) — " + where, {"n'", true, std::nullopt, std::nullopt},
                      [](const SweepRecord& r) { return r.nPrime; }, true)},
@@ -159,7 +159,7 @@ int runSweepGamma(const SweepGammaOptions& o) {
                      {"fraction of receiver pixels", false, 0.0, std::nullopt},
                      [](const SweepRecord& r) { return r.falseShadow; }, false)},
     };
-    for (const auto& [path, chart] : charts) ui::writeSvg(path, chart, 860, 480);
+    for (const auto& [path, chart] : charts) ui::charts::writeSvg(path, chart, 860, 480);
     for (const auto& e : glErrors) std::cerr << "shadowscope: GL error: " << e << '\n';
     std::cout << csv.string() << '\n';
     for (const auto& [path, chart] : charts) std::cout << path.string() << '\n';

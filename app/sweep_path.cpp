@@ -1,12 +1,12 @@
 // `shadowscope sweep path`: a camera or light path of a scene file, frame by frame, with the
-// flicker and seam measures of geometry/stability_metrics.h.
+// flicker and seam measures of geometry/analysis/stability_metrics.h.
 #include "sweep_command.h"
 #include "sweep_frame.h"
 
-#include "geometry/path_interpolation.h"
-#include "geometry/scene_file.h"
-#include "geometry/stability_metrics.h"
-#include "ui/chart.h"
+#include "geometry/scene/path_interpolation.h"
+#include "geometry/io/scene_file.h"
+#include "geometry/analysis/stability_metrics.h"
+#include "ui/charts/chart.h"
 
 #include <cmath>
 #include <filesystem>
@@ -21,8 +21,8 @@ namespace {
 struct PathRow {
     int frame = 0;
     double t = 0, gammaDeg = 0, angleDeg = 0;
-    geometry::FlickerStats flicker;
-    geometry::SeamStats seam;
+    geometry::analysis::FlickerStats flicker;
+    geometry::analysis::SeamStats seam;
     double p95 = 0, falseLit = 0, falseShadow = 0, nPrime = 0;
     bool glError = false;
 };
@@ -41,35 +41,35 @@ std::string pathCsv(const std::vector<PathRow>& rows) {
     return out;
 }
 
-ui::ChartSeries series(const std::vector<PathRow>& rows, std::string name, int colour, double (*value)(const PathRow&),
+ui::charts::ChartSeries series(const std::vector<PathRow>& rows, std::string name, int colour, double (*value)(const PathRow&),
                        bool skipFirst = false) {
-    ui::ChartSeries s;
+    ui::charts::ChartSeries s;
     s.name = std::move(name);
-    s.colour = ui::paletteColour(colour);
+    s.colour = ui::charts::paletteColour(colour);
     for (const PathRow& r : rows)
         if (!(skipFirst && r.frame == 0)) s.points.push_back({double(r.frame), value(r)});
     return s;
 }
 
 std::string pathSvg(const std::vector<PathRow>& rows, const std::string& title) {
-    const ui::ChartAxis frames{"frame", false, std::nullopt, std::nullopt};
-    const auto chart = [&](std::string title, ui::ChartAxis y) {
-        ui::Chart c;
+    const ui::charts::ChartAxis frames{"frame", false, std::nullopt, std::nullopt};
+    const auto chart = [&](std::string title, ui::charts::ChartAxis y) {
+        ui::charts::Chart c;
         c.title = std::move(title);
         c.x = frames;
         c.y = std::move(y);
         return c;
     };
-    ui::Chart flicker = chart("Flicker: stable-truth pixels that flip", {"fraction", false, 0.0, std::nullopt});
+    ui::charts::Chart flicker = chart("Flicker: stable-truth pixels that flip", {"fraction", false, 0.0, std::nullopt});
     flicker.series.push_back(series(rows, "flicker", 0, [](const PathRow& r) { return r.flicker.rate; }, true));
-    ui::Chart seam = chart("Seams: jump of m across split boundaries", {"median seam (1 = none)", false, 1.0, std::nullopt});
+    ui::charts::Chart seam = chart("Seams: jump of m across split boundaries", {"median seam (1 = none)", false, 1.0, std::nullopt});
     seam.series.push_back(series(rows, "across split boundaries", 1, [](const PathRow& r) {
         return r.seam.pairs ? r.seam.median : NAN; // no boundary on screen: no point
     }));
     seam.series.push_back(series(rows, "inside one split (baseline)", 2, [](const PathRow& r) { return r.seam.baselineMedian; }));
-    ui::Chart p95 = chart("Aliasing error m, p95 over receivers", {"p95 m", true, std::nullopt, std::nullopt});
+    ui::charts::Chart p95 = chart("Aliasing error m, p95 over receivers", {"p95 m", true, std::nullopt, std::nullopt});
     p95.series.push_back(series(rows, "p95 m", 3, [](const PathRow& r) { return r.p95; }));
-    return ui::chartsToSvg(title, {flicker, seam, p95}, 3, 420, 300);
+    return ui::charts::chartsToSvg(title, {flicker, seam, p95}, 3, 420, 300);
 }
 
 double mean(const std::vector<PathRow>& rows, double (*value)(const PathRow&), bool (*use)(const PathRow&)) {
@@ -85,8 +85,8 @@ double mean(const std::vector<PathRow>& rows, double (*value)(const PathRow&), b
 int runSweepPath(const SweepPathOptions& o) {
     if (o.frames < 1 || o.frames > kMaxPathFrames)
         throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " must be within 1.." + std::to_string(kMaxPathFrames));
-    geometry::validateOrThrow(o.render.settings);
-    geometry::SceneFile file = geometry::resolveScene(o.render.scene);
+    geometry::shadow::validateOrThrow(o.render.settings);
+    geometry::io::SceneFile file = geometry::io::resolveScene(o.render.scene);
     const auto it = file.paths.find(o.path);
     if (it == file.paths.end()) {
         std::string names;
@@ -94,8 +94,8 @@ int runSweepPath(const SweepPathOptions& o) {
         throw std::invalid_argument("--path " + o.path + ": scene '" + o.render.scene + "' has no such path (" +
                                     (names.empty() ? std::string("it has none") : "available: " + names) + ")");
     }
-    const geometry::ScenePath path = it->second;
-    geometry::Scene scene = std::move(file.scene);
+    const geometry::io::ScenePath path = it->second;
+    geometry::scene::Scene scene = std::move(file.scene);
     if (!o.render.view.empty()) {
         const auto view = file.views.find(o.render.view);
         if (view == file.views.end())
@@ -118,20 +118,20 @@ int runSweepPath(const SweepPathOptions& o) {
     {
         SweepProgress progress("sweep path " + o.path, o.frames);
         for (int i = 0; i < o.frames; ++i) {
-            const double t = geometry::pathParameter(i, o.frames);
-            const geometry::Camera camera = path.cameras.empty() ? scene.camera : geometry::cameraAlongPath(path.cameras, t);
-            const geometry::DirectionalLight light{path.lights.empty() ? scene.light.direction
-                                                                       : geometry::lightAlongPath(path.lights, t)};
-            geometry::validateFrustum(camera.near, camera.far, camera.fovYDeg);
+            const double t = geometry::scene::pathParameter(i, o.frames);
+            const geometry::scene::Camera camera = path.cameras.empty() ? scene.camera : geometry::scene::cameraAlongPath(path.cameras, t);
+            const geometry::scene::DirectionalLight light{path.lights.empty() ? scene.light.direction
+                                                                       : geometry::scene::lightAlongPath(path.lights, t)};
+            geometry::shadow::validateFrustum(camera.near, camera.far, camera.fovYDeg);
             SweepFrame f = sweeper.render(o.render.settings, camera, light, o.render.size);
             PathRow r;
             r.frame = i;
             r.t = t;
             r.gammaDeg = f.plan.gammaDeg;
             r.angleDeg = f.plan.lightViewAngleDeg;
-            r.seam = geometry::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals, camera.eye, w, h);
+            r.seam = geometry::analysis::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals, camera.eye, w, h);
             if (i > 0)
-                r.flicker = geometry::flickerStats(previous.in.shadow, *previous.in.occluded, previous.in.receiver,
+                r.flicker = geometry::analysis::flickerStats(previous.in.shadow, *previous.in.occluded, previous.in.receiver,
                                                    f.in.shadow, *f.in.occluded, f.in.receiver);
             r.p95 = f.in.aliasing.p95;
             r.falseLit = f.in.truth->falseLit;
@@ -155,8 +155,8 @@ int runSweepPath(const SweepPathOptions& o) {
                               std::to_string(w) + "x" + std::to_string(h) + ", " +
                               std::to_string(o.render.settings.resolution) + "² maps, " +
                               std::to_string(o.render.settings.splits.count) + " split(s) " +
-                              std::string(geometry::splitSchemeName(o.render.settings.splits.scheme));
-    ui::writeSvgText(svg, pathSvg(rows, title));
+                              std::string(geometry::shadow::splitSchemeName(o.render.settings.splits.scheme));
+    ui::charts::writeSvgText(svg, pathSvg(rows, title));
     for (const auto& e : glErrors) std::cerr << "shadowscope: GL error: " << e << '\n';
     std::cout << csv.string() << '\n' << svg.string() << '\n';
     const auto all = [](const PathRow&) { return true; };

@@ -2,7 +2,7 @@
 
 namespace renderer {
 
-GpuScene::GpuScene(const geometry::Scene& scene) {
+GpuScene::GpuScene(const geometry::scene::Scene& scene) {
     for (const auto& mesh : scene.meshes) {
         if (mesh.indices.empty()) continue;
         GpuMesh g;

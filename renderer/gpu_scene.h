@@ -1,7 +1,7 @@
 #pragma once
 // The scene's meshes in GL buffers, drawn chunk by chunk.
 #include "gl/gl_api.h"
-#include "geometry/scene.h"
+#include "geometry/scene/scene.h"
 
 #include <cstdint>
 #include <vector>
@@ -12,14 +12,14 @@ struct GpuMesh {
     GLuint vao = 0, vbo = 0, ebo = 0;
     glm::mat4 transform{1.f};
     glm::vec3 color{0.7f};
-    std::vector<geometry::Chunk> chunks;
+    std::vector<geometry::scene::Chunk> chunks;
     uint64_t triangles = 0;
     bool twoSided = true; // casts from both faces (open surfaces)
 };
 
 class GpuScene {
 public:
-    explicit GpuScene(const geometry::Scene& scene);
+    explicit GpuScene(const geometry::scene::Scene& scene);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;

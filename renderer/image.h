@@ -1,24 +1,11 @@
 #pragma once
-// CPU-side images: readback from GL and PNG files.
-#include "gl/gl_api.h"
-
-#include <cstdint>
-#include <string>
-#include <vector>
+// Read-back of colour textures into CPU images.
+#include "geometry/analysis/image.h"
+#include "renderer/gl/gl_api.h"
 
 namespace renderer {
 
-struct Image {
-    int width = 0, height = 0;
-    std::vector<uint8_t> rgba; // top row first
-    [[nodiscard]] const uint8_t* at(int x, int y) const noexcept { return &rgba[4 * (size_t(y) * width + x)]; }
-};
-
 /// Reads a colour texture's level 0 (RGBA8), flipped so the top row comes first.
-[[nodiscard]] Image readTexture(GLuint texture, int width, int height);
-/// Writes PNG; throws std::runtime_error naming the path on failure.
-void writePng(const std::string& path, const Image& image);
-/// Reads PNG/any stb-supported image as RGBA8; throws on failure.
-[[nodiscard]] Image readImageFile(const std::string& path);
+[[nodiscard]] geometry::analysis::Image readTexture(GLuint texture, int width, int height);
 
 } // namespace renderer

@@ -19,19 +19,19 @@ LineRenderer::~LineRenderer() {
     glDeleteVertexArrays(1, &vao_);
 }
 
-glm::vec4 LineRenderer::colour(geometry::OverlayKind kind) noexcept {
+glm::vec4 LineRenderer::colour(geometry::shadow::OverlayKind kind) noexcept {
     switch (kind) {
-    case geometry::OverlayKind::SceneBounds: return {0.65f, 0.65f, 0.65f, 1.f};
-    case geometry::OverlayKind::ViewFrustum: return {1.f, 0.85f, 0.1f, 1.f};
-    case geometry::OverlayKind::SplitFrustum: return {1.f, 0.45f, 0.1f, 1.f};
-    case geometry::OverlayKind::FocusBody: return {0.2f, 0.95f, 0.3f, 1.f};
-    case geometry::OverlayKind::WarpFrustum: return {0.2f, 0.8f, 1.f, 1.f};
-    case geometry::OverlayKind::Count: break;
+    case geometry::shadow::OverlayKind::SceneBounds: return {0.65f, 0.65f, 0.65f, 1.f};
+    case geometry::shadow::OverlayKind::ViewFrustum: return {1.f, 0.85f, 0.1f, 1.f};
+    case geometry::shadow::OverlayKind::SplitFrustum: return {1.f, 0.45f, 0.1f, 1.f};
+    case geometry::shadow::OverlayKind::FocusBody: return {0.2f, 0.95f, 0.3f, 1.f};
+    case geometry::shadow::OverlayKind::WarpFrustum: return {0.2f, 0.8f, 1.f, 1.f};
+    case geometry::shadow::OverlayKind::Count: break;
     }
     return {1.f, 0.f, 1.f, 1.f};
 }
 
-void LineRenderer::draw(const std::vector<geometry::OverlaySegment>& segments, const glm::mat4& worldToClip) {
+void LineRenderer::draw(const std::vector<geometry::shadow::OverlaySegment>& segments, const glm::mat4& worldToClip) {
     if (segments.empty()) return;
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_DEPTH_CLAMP);

@@ -1,7 +1,7 @@
 #pragma once
 // Draws overlay segments (geometry::OverlaySegment) into the bound framebuffer, a colour per kind.
 #include "program.h"
-#include "geometry/overlays.h"
+#include "geometry/shadow/overlays.h"
 
 #include <vector>
 
@@ -15,8 +15,8 @@ public:
     LineRenderer& operator=(const LineRenderer&) = delete;
 
     /// World segments go through `worldToClip`; map-NDC segments through the identity.
-    void draw(const std::vector<geometry::OverlaySegment>& segments, const glm::mat4& worldToClip);
-    [[nodiscard]] static glm::vec4 colour(geometry::OverlayKind kind) noexcept;
+    void draw(const std::vector<geometry::shadow::OverlaySegment>& segments, const glm::mat4& worldToClip);
+    [[nodiscard]] static glm::vec4 colour(geometry::shadow::OverlayKind kind) noexcept;
 
 private:
     Program program_{"lines.vert", "lines.frag"};

@@ -1,6 +1,6 @@
 #include "renderer.h"
 
-#include "geometry/culling.h"
+#include "geometry/shadow/culling.h"
 
 #include <algorithm>
 #include <limits>
@@ -10,8 +10,8 @@
 
 namespace renderer {
 
-using geometry::BiasType;
-using geometry::FilterType;
+using geometry::shadow::BiasType;
+using geometry::shadow::FilterType;
 
 namespace {
 const glm::vec3 kSky{0.62f, 0.72f, 0.85f};
@@ -34,12 +34,12 @@ void bindTexture(int unit, GLenum target, GLuint texture, GLuint sampler) {
     glBindSampler(unit, sampler);
 }
 
-bool needsPeeling(const geometry::ShadowPlan& plan) {
+bool needsPeeling(const geometry::shadow::ShadowPlan& plan) {
     return plan.bias.type == BiasType::Midpoint || plan.bias.type == BiasType::DualDepth;
 }
 } // namespace
 
-Renderer::Renderer(const geometry::Scene& scene, RendererLimits limits)
+Renderer::Renderer(const geometry::scene::Scene& scene, RendererLimits limits)
     : scene_(std::make_unique<GpuScene>(scene)), limits_(limits) {
     glGenVertexArrays(1, &emptyVao_);
     nearestSampler_ = makeSampler(GL_NEAREST, false);
@@ -54,7 +54,7 @@ Renderer::~Renderer() {
     glDeleteSamplers(3, samplers);
 }
 
-void Renderer::setScene(const geometry::Scene& scene) { scene_ = std::make_unique<GpuScene>(scene); }
+void Renderer::setScene(const geometry::scene::Scene& scene) { scene_ = std::make_unique<GpuScene>(scene); }
 
 void Renderer::warnOnce(const std::string& message) {
     if (std::find(stats_.warnings.begin(), stats_.warnings.end(), message) == stats_.warnings.end())
@@ -72,15 +72,15 @@ void Renderer::fullscreen() const noexcept {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-int Renderer::splitResolution(const geometry::SplitPlan& split) const noexcept {
+int Renderer::splitResolution(const geometry::shadow::SplitPlan& split) const noexcept {
     return std::min(split.resolution, firstDepth_.resolution());
 }
 
-float Renderer::mapScale(const geometry::SplitPlan& split) const noexcept {
+float Renderer::mapScale(const geometry::shadow::SplitPlan& split) const noexcept {
     return firstDepth_.resolution() > 0 ? float(splitResolution(split)) / float(firstDepth_.resolution()) : 1.f;
 }
 
-void Renderer::render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, const ViewOptions& options) {
+void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport, const ViewOptions& options) {
     ViewOptions views = options;
     if (views.lightViewSize <= 0) views.lightViewSize = 1024;
     if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
@@ -105,7 +105,7 @@ const PassTimes& Renderer::waitForTimings() noexcept {
     return stats_.gpu;
 }
 
-void Renderer::drawCasters(const geometry::SplitPlan& split, Program& program, int index, bool backFacesOnly) {
+void Renderer::drawCasters(const geometry::shadow::SplitPlan& split, Program& program, int index, bool backFacesOnly) {
     program.set("uLightViewProj", split.lightViewProj);
     for (const auto& m : scene_->meshes()) {
         // Faces are wound counter-clockwise as seen from the light (the plan's maps never mirror).
@@ -120,15 +120,15 @@ void Renderer::drawCasters(const geometry::SplitPlan& split, Program& program, i
             glDisable(GL_CULL_FACE);
         }
         program.set("uModel", m.transform);
-        const uint64_t n = scene_->draw(m, [&](const geometry::Aabb& b) {
-            return geometry::intersectsClipVolume(b, split.lightViewProj);
+        const uint64_t n = scene_->draw(m, [&](const geometry::scene::Aabb& b) {
+            return geometry::shadow::intersectsClipVolume(b, split.lightViewProj);
         });
         stats_.shadowTriangles += n;
         stats_.splitTriangles[index] += n;
     }
 }
 
-void Renderer::shadowPass(const geometry::ShadowPlan& plan) {
+void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
     const int layers = static_cast<int>(plan.splits.size());
     int resolution = 16;
     for (const auto& s : plan.splits) resolution = std::max(resolution, s.resolution);
@@ -180,7 +180,7 @@ void Renderer::shadowPass(const geometry::ShadowPlan& plan) {
     if (plan.filter.type == FilterType::Vsm) momentsPass(plan);
 }
 
-void Renderer::peelAndCombine(const geometry::ShadowPlan& plan) {
+void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
     const int layers = firstDepth_.layers(), res = firstDepth_.resolution();
     secondDepth_.ensure(res, layers, 0, true);
     combinedDepth_.ensure(res, layers, 0, true);
@@ -222,7 +222,7 @@ void Renderer::peelAndCombine(const geometry::ShadowPlan& plan) {
     sampledDepth_ = combinedDepth_.depthTexture();
 }
 
-void Renderer::momentsPass(const geometry::ShadowPlan& plan) {
+void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
     const int layers = firstDepth_.layers(), res = firstDepth_.resolution();
     moments_.ensure(res, layers, GL_RG32F, true);
     momentsTemp_.ensure(res, layers, GL_RG32F, false);
@@ -266,7 +266,7 @@ void Renderer::momentsPass(const geometry::ShadowPlan& plan) {
     sampledDepth_ = moments_.depthTexture();
 }
 
-void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport) {
+void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport) {
     // 58 bytes per pixel over eight targets; refuse before the driver fails (or swaps) on a huge size.
     const double bytes = 58.0 * viewport.width * viewport.height;
     if (viewport.width > maxTextureSize_ || viewport.height > maxTextureSize_ || bytes > limits_.viewMemoryBytes)
@@ -291,7 +291,7 @@ void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewpor
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
-    const auto inView = [&](const geometry::Aabb& box) { return geometry::intersectsClipVolume(box, viewProj); };
+    const auto inView = [&](const geometry::scene::Aabb& box) { return geometry::shadow::intersectsClipVolume(box, viewProj); };
     // Depth pre-pass: the heavy eye shader (filter taps, six targets) then runs once per pixel
     // instead of once per overlapping surface.
     Program& depthOnly = depthProgram("");
@@ -350,7 +350,7 @@ void Renderer::eyePass(const geometry::ShadowPlan& plan, const geometry::Viewpor
     glDepthFunc(GL_LESS);
 }
 
-void Renderer::eyeBlurAndCompose(const geometry::ShadowPlan& plan) {
+void Renderer::eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan) {
     glDisable(GL_DEPTH_TEST);
     GLuint mask = eyeBuffers_.texture(EyeBuffers::Mask);
     const int w = eyeBuffers_.width(), h = eyeBuffers_.height();
@@ -385,7 +385,7 @@ void Renderer::eyeBlurAndCompose(const geometry::ShadowPlan& plan) {
     glEnable(GL_DEPTH_TEST);
 }
 
-void Renderer::lightViewPass(const geometry::ShadowPlan& plan, const ViewOptions& views) {
+void Renderer::lightViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views) {
     const int split = std::clamp(views.lightSplit, 0, int(plan.splits.size()) - 1);
     light_.ensure(views.lightViewSize, views.lightViewSize);
     light_.bind();
@@ -401,11 +401,11 @@ void Renderer::lightViewPass(const geometry::ShadowPlan& plan, const ViewOptions
     if (range.x < 0.f) range = linear ? glm::vec2(0.f, 1.f) : s.bodyDepthRange;
     lightViewProgram_.set("uDepthRange", range);
     fullscreen();
-    if (views.overlays) lines_.draw(geometry::warpedViewOverlays(plan, split), s.lightViewProj);
+    if (views.overlays) lines_.draw(geometry::shadow::warpedViewOverlays(plan, split), s.lightViewProj);
     glEnable(GL_DEPTH_TEST);
 }
 
-void Renderer::unwarpedViewPass(const geometry::ShadowPlan& plan, const ViewOptions& views) {
+void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views) {
     lightUnwarped_.ensure(views.lightViewSize, views.lightViewSize);
     lightUnwarped_.bind();
     const float background[4] = {0.08f, 0.10f, 0.22f, 1.f};
@@ -419,9 +419,9 @@ void Renderer::unwarpedViewPass(const geometry::ShadowPlan& plan, const ViewOpti
     for (const auto& m : scene_->meshes()) {
         unlitProgram_.set("uModel", m.transform);
         unlitProgram_.set("uColor", m.color);
-        scene_->draw(m, [&](const geometry::Aabb& b) { return geometry::intersectsClipVolume(b, plan.unwarpedViewProj); });
+        scene_->draw(m, [&](const geometry::scene::Aabb& b) { return geometry::shadow::intersectsClipVolume(b, plan.unwarpedViewProj); });
     }
-    if (views.overlays) lines_.draw(geometry::unwarpedViewOverlays(plan), plan.unwarpedViewProj);
+    if (views.overlays) lines_.draw(geometry::shadow::unwarpedViewOverlays(plan), plan.unwarpedViewProj);
 }
 
 std::vector<float> Renderer::readShadowMask() const {

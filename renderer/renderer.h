@@ -8,7 +8,7 @@
 #include "line_renderer.h"
 #include "program.h"
 #include "render_targets.h"
-#include "geometry/shadow_plan.h"
+#include "geometry/shadow/shadow_plan.h"
 
 #include <map>
 #include <memory>
@@ -45,15 +45,15 @@ struct RendererLimits {
 class Renderer {
 public:
     /// Needs a current GL context; uploads the scene.
-    explicit Renderer(const geometry::Scene& scene, RendererLimits limits = {});
+    explicit Renderer(const geometry::scene::Scene& scene, RendererLimits limits = {});
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    void setScene(const geometry::Scene& scene);
+    void setScene(const geometry::scene::Scene& scene);
     /// Renders the eye view at `viewport` and the light views into textures.
-    void render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, const ViewOptions& views);
-    void render(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport, int lightViewSize) {
+    void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport, const ViewOptions& views);
+    void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport, int lightViewSize) {
         ViewOptions v;
         v.lightViewSize = lightViewSize;
         render(plan, viewport, v);
@@ -61,10 +61,10 @@ public:
 
     [[nodiscard]] GLuint eyeTexture() const noexcept { return eye_.texture(); }
     [[nodiscard]] GLuint lightTexture() const noexcept { return light_.texture(); }
-    [[nodiscard]] Image readEye() const { return readTexture(eye_.texture(), eye_.width(), eye_.height()); }
-    [[nodiscard]] Image readLight() const { return readTexture(light_.texture(), light_.width(), light_.height()); }
+    [[nodiscard]] geometry::analysis::Image readEye() const { return readTexture(eye_.texture(), eye_.width(), eye_.height()); }
+    [[nodiscard]] geometry::analysis::Image readLight() const { return readTexture(light_.texture(), light_.width(), light_.height()); }
     [[nodiscard]] GLuint unwarpedLightTexture() const noexcept { return lightUnwarped_.texture(); }
-    [[nodiscard]] Image readUnwarpedLight() const {
+    [[nodiscard]] geometry::analysis::Image readUnwarpedLight() const {
         return readTexture(lightUnwarped_.texture(), lightUnwarped_.width(), lightUnwarped_.height());
     }
     /// Per pixel (world position, aliasing error m); m is meaningful on receivers only.
@@ -83,18 +83,18 @@ public:
     const PassTimes& waitForTimings() noexcept;
 
 private:
-    void shadowPass(const geometry::ShadowPlan& plan);
-    void drawCasters(const geometry::SplitPlan& split, Program& program, int index, bool backFacesOnly);
-    void peelAndCombine(const geometry::ShadowPlan& plan);
-    void momentsPass(const geometry::ShadowPlan& plan);
-    void eyePass(const geometry::ShadowPlan& plan, const geometry::Viewport& viewport);
-    void eyeBlurAndCompose(const geometry::ShadowPlan& plan);
-    void lightViewPass(const geometry::ShadowPlan& plan, const ViewOptions& views);
-    void unwarpedViewPass(const geometry::ShadowPlan& plan, const ViewOptions& views);
+    void shadowPass(const geometry::shadow::ShadowPlan& plan);
+    void drawCasters(const geometry::shadow::SplitPlan& split, Program& program, int index, bool backFacesOnly);
+    void peelAndCombine(const geometry::shadow::ShadowPlan& plan);
+    void momentsPass(const geometry::shadow::ShadowPlan& plan);
+    void eyePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport);
+    void eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan);
+    void lightViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views);
+    void unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views);
     [[nodiscard]] std::vector<glm::vec4> readFloat4(EyeBuffers::Attachment a) const;
     void fullscreen() const noexcept;
-    [[nodiscard]] int splitResolution(const geometry::SplitPlan& split) const noexcept;
-    [[nodiscard]] float mapScale(const geometry::SplitPlan& split) const noexcept;
+    [[nodiscard]] int splitResolution(const geometry::shadow::SplitPlan& split) const noexcept;
+    [[nodiscard]] float mapScale(const geometry::shadow::SplitPlan& split) const noexcept;
     Program& depthProgram(const std::string& defines);
     void warnOnce(const std::string& message);
 

@@ -8,7 +8,7 @@ Texture2D::~Texture2D() {
     if (texture_) glDeleteTextures(1, &texture_);
 }
 
-void Texture2D::upload(const Image& image) {
+void Texture2D::upload(const geometry::analysis::Image& image) {
     if (image.width <= 0 || image.height <= 0) return;
     if (texture_ == 0 || width_ != image.width || height_ != image.height) {
         if (texture_) glDeleteTextures(1, &texture_);
@@ -33,8 +33,8 @@ void Texture2D::upload(const Image& image) {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
 }
 
-Image readFramebuffer(GLuint framebuffer, int width, int height) {
-    Image img;
+geometry::analysis::Image readFramebuffer(GLuint framebuffer, int width, int height) {
+    geometry::analysis::Image img;
     if (width <= 0 || height <= 0) return img;
     img.width = width;
     img.height = height;

@@ -13,7 +13,7 @@ public:
     Texture2D& operator=(const Texture2D&) = delete;
     /// Replaces the texture's content (reallocating when the size changes). Nearest filtering
     /// when magnified, so zoomed-in pixels stay pixels.
-    void upload(const Image& image);
+    void upload(const geometry::analysis::Image& image);
     [[nodiscard]] GLuint id() const noexcept { return texture_; }
     [[nodiscard]] int width() const noexcept { return width_; }
     [[nodiscard]] int height() const noexcept { return height_; }
@@ -25,6 +25,6 @@ private:
 
 /// The bound read framebuffer's colour (the window's back buffer when `framebuffer` is 0) as an
 /// image, top row first: the whole-dashboard screenshot.
-[[nodiscard]] Image readFramebuffer(GLuint framebuffer, int width, int height);
+[[nodiscard]] geometry::analysis::Image readFramebuffer(GLuint framebuffer, int width, int height);
 
 } // namespace renderer

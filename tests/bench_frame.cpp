@@ -2,8 +2,8 @@
 // each iteration, so drift of the machine cancels in the ratio). Headless: EGL on a GPU when there
 // is one, else OSMesa (llvmpipe). Scene `platform`, Barroso's setup: 800×600, 2048² maps.
 //   Goals (issue 4): paper/ssm ≤ 1.3 on llvmpipe, ≤ 1.15 on a GPU; 5×5 PCF eye pass ≤ 1.1× hard test.
-#include "geometry/preset.h"
-#include "geometry/builtin_scenes.h"
+#include "geometry/io/preset.h"
+#include "geometry/scene/builtin_scenes.h"
 #include "renderer/context.h"
 #include "renderer/renderer.h"
 
@@ -18,7 +18,10 @@
 
 namespace {
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
+using namespace geometry::io;
+using namespace geometry::analysis;
 
 struct Setup {
     std::unique_ptr<renderer::GlContext> context;
@@ -37,7 +40,7 @@ Setup& setup() {
 }
 
 ShadowSettings preset(const std::string& name) {
-    return geometry::loadPreset(std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/presets/" + name + ".json");
+    return geometry::io::loadPreset(std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/presets/" + name + ".json");
 }
 
 /// Renders one frame and waits for it; returns GPU times per pass.

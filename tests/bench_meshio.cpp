@@ -1,8 +1,8 @@
 // Mesh loading cost against OpenMesh's own read_mesh, on one ~1M-triangle binary STL written
 // once into a temporary folder (the platform scene, flattened into one mesh).
 // Goal (issue "CAD meshes in"): loadModel (read + cleanup + chunking) ≤ 2 × bare read_mesh.
-#include "geometry/builtin_scenes.h"
-#include "geometry/model_loader.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/io/model_loader.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -21,10 +21,10 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 /// The platform scene as one mesh, transforms applied (an STL has no hierarchy).
-geometry::Mesh flattenedPlatform() {
-    const geometry::Scene scene = geometry::makePlatformScene({1'000'000});
-    geometry::Mesh all;
-    for (const geometry::Mesh& m : scene.meshes) {
+geometry::scene::Mesh flattenedPlatform() {
+    const geometry::scene::Scene scene = geometry::scene::makePlatformScene({1'000'000});
+    geometry::scene::Mesh all;
+    for (const geometry::scene::Mesh& m : scene.meshes) {
         const uint32_t base = static_cast<uint32_t>(all.positions.size());
         for (const glm::vec3& p : m.positions) all.positions.emplace_back(m.transform * glm::vec4(p, 1.f));
         for (uint32_t i : m.indices) all.indices.push_back(base + i);
@@ -38,9 +38,9 @@ struct Fixture {
     size_t triangles = 0;
     Fixture() {
         fs::create_directories(dir);
-        const geometry::Mesh mesh = flattenedPlatform();
+        const geometry::scene::Mesh mesh = flattenedPlatform();
         triangles = mesh.triangleCount();
-        geometry::saveMesh(stl, mesh);
+        geometry::io::saveMesh(stl, mesh);
         std::printf("fixture: %s, %zu triangles, %.1f MB\n", stl.c_str(), triangles, fs::file_size(stl) / 1e6);
     }
     ~Fixture() {
@@ -87,18 +87,18 @@ void BM_OpenMeshReadMesh(benchmark::State& state) {
 void BM_LoadModel(benchmark::State& state) {
     const std::string& path = fixture().stl;
     timed(state, "loadModel", [&] {
-        const geometry::LoadedModel model = geometry::loadModel(path);
+        const geometry::io::LoadedModel model = geometry::io::loadModel(path);
         benchmark::DoNotOptimize(model.meshes.front().triangleCount());
     });
 }
 
 void BM_CleanMeshAlone(benchmark::State& state) {
-    const geometry::Mesh source = flattenedPlatform();
+    const geometry::scene::Mesh source = flattenedPlatform();
     for (auto _ : state) {
         state.PauseTiming();
-        geometry::Mesh m = source;
+        geometry::scene::Mesh m = source;
         state.ResumeTiming();
-        benchmark::DoNotOptimize(geometry::cleanMesh(m).outputFaces);
+        benchmark::DoNotOptimize(geometry::io::cleanMesh(m).outputFaces);
     }
 }
 

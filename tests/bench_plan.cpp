@@ -1,10 +1,11 @@
 // planShadows on the 250k-triangle platform: goal ≤ 20 µs for 4 splits on the 2-core dev machine.
-#include "geometry/builtin_scenes.h"
-#include "geometry/shadow_plan.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/shadow/shadow_plan.h"
 
 #include <benchmark/benchmark.h>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
 
 static void BM_PlanShadows(benchmark::State& state) {
     static const Scene scene = makePlatformScene();

@@ -1,15 +1,16 @@
 // Ground truth on the 250k-triangle platform: goal ≤ 150 ms per 1280×720 image on the 2-core
 // dev machine (Release). Receivers are what the default camera sees, found once by primary rays
 // outside the timed loops; only the shadow rays are timed.
-#include "geometry/builtin_scenes.h"
-#include "geometry/ground_truth.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/analysis/ground_truth.h"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <vector>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::analysis;
 
 namespace {
 

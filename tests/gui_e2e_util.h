@@ -421,7 +421,7 @@ struct ImageDiff {
 };
 
 /// Compares the RGB of two images over `region` (x, y, w, h in pixels; whole image when absent).
-inline ImageDiff diffImages(const renderer::Image& a, const renderer::Image& b,
+inline ImageDiff diffImages(const geometry::analysis::Image& a, const geometry::analysis::Image& b,
                             std::optional<std::array<int, 4>> region = std::nullopt) {
     std::array<int, 4> r = region.value_or(std::array<int, 4>{0, 0, a.width, a.height});
     if (!region && (a.width != b.width || a.height != b.height))

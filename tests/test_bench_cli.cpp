@@ -74,7 +74,7 @@ TEST(Bench, WritesOneRowPerConfigurationAndViewAndTheTradeoffChart) {
     EXPECT_NE(svg.find("Pareto front"), std::string::npos);
     EXPECT_NE(svg.find("ssm.json / paper.json"), std::string::npos);
     EXPECT_NE(svg.find("paper filter.kernel=5"), std::string::npos);
-    const renderer::Image png = renderer::readImageFile((dir / "tradeoff.png").string());
+    const geometry::analysis::Image png = geometry::analysis::readImageFile((dir / "tradeoff.png").string());
     EXPECT_EQ(png.width, 1000);
     EXPECT_EQ(png.height, 620);
     size_t red = 0; // the highlighted ssm/paper markers

@@ -1,7 +1,7 @@
 // The shadowscope executable: `render` writes valid PNGs and JSON; bad input gives a one-line
 // error and a non-zero exit.
 #include "cli_test_util.h"
-#include "renderer/heatmap.h"
+#include "geometry/analysis/heatmap.h"
 #include "renderer/image.h"
 
 #include <gtest/gtest.h>
@@ -29,10 +29,10 @@ TEST(Cli, RenderWritesPngsAndMetrics) {
     const CommandResult r = run("render --backend osmesa --scene plane --size 160x120 --shadow-res 256 --out " + dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find((dir / "eye.png").string()), std::string::npos) << "prints the paths it wrote";
-    const renderer::Image eye = renderer::readImageFile((dir / "eye.png").string());
+    const geometry::analysis::Image eye = geometry::analysis::readImageFile((dir / "eye.png").string());
     EXPECT_EQ(eye.width, 160);
     EXPECT_EQ(eye.height, 120);
-    const renderer::Image light = renderer::readImageFile((dir / "light.png").string());
+    const geometry::analysis::Image light = geometry::analysis::readImageFile((dir / "light.png").string());
     EXPECT_EQ(light.width, 256);
     std::ifstream in(dir / "metrics.json");
     const nlohmann::json m = nlohmann::json::parse(in);
@@ -99,16 +99,16 @@ TEST(Cli, RenderWritesEveryViewAndRawValues) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* name : {"eye.png", "light.png", "light_unwarped.png", "aliasing.png", "truth.png", "splits.png",
                              "texels.png"}) {
-        const renderer::Image img = renderer::readImageFile((dir / name).string());
+        const geometry::analysis::Image img = geometry::analysis::readImageFile((dir / name).string());
         EXPECT_GT(img.width, 0) << name;
     }
     int w = 0, h = 0;
-    const auto m = renderer::readPfm((dir / "aliasing.pfm").string(), w, h);
+    const auto m = geometry::analysis::readPfm((dir / "aliasing.pfm").string(), w, h);
     EXPECT_EQ(w, 96);
     EXPECT_EQ(h, 72);
     EXPECT_TRUE(std::any_of(m.begin(), m.end(), [](float v) { return std::isfinite(v) && v > 0.f; }));
-    (void)renderer::readPfm((dir / "shadow.pfm").string(), w, h);
-    (void)renderer::readPfm((dir / "truth.pfm").string(), w, h);
+    (void)geometry::analysis::readPfm((dir / "shadow.pfm").string(), w, h);
+    (void)geometry::analysis::readPfm((dir / "truth.pfm").string(), w, h);
     std::ifstream in(dir / "metrics.json");
     const nlohmann::json j = nlohmann::json::parse(in);
     for (const char* k : {"mean", "p50", "p95", "max", "undersampled"}) EXPECT_TRUE(j.at("aliasing").contains(k)) << k;

@@ -1,8 +1,8 @@
 // `shadowscope curves`: the CSV tables hold the DESIGN §3 reference values, the SVG charts have a
 // line and a legend entry per series, bad input gives a one-line error; and the chart axis ticks
-// (ui/chart.h) are round numbers.
+// (ui/charts/chart.h) are round numbers.
 #include "cli_test_util.h"
-#include "ui/chart.h"
+#include "ui/charts/chart.h"
 
 #include <gtest/gtest.h>
 
@@ -227,10 +227,10 @@ TEST(CurvesCommand, BadInputGivesOneLineErrorAndNonZeroExit) {
     }
 }
 
-// ---- ui/chart.h axis helpers -------------------------------------------------------------------
+// ---- ui/charts/chart.h axis helpers -------------------------------------------------------------------
 
 TEST(ChartAxes, LinearTicksAreRoundSteps) {
-    const std::vector<double> ticks = ui::niceTicks(0, 90, false);
+    const std::vector<double> ticks = ui::charts::niceTicks(0, 90, false);
     ASSERT_GE(ticks.size(), 3u);
     EXPECT_EQ(ticks.front(), 0.0);
     EXPECT_LE(ticks.back(), 90.0);
@@ -240,48 +240,48 @@ TEST(ChartAxes, LinearTicksAreRoundSteps) {
     for (size_t i = 1; i < ticks.size(); ++i) EXPECT_NEAR(ticks[i] - ticks[i - 1], step, 1e-9);
     EXPECT_GT(ticks.back() + step, 90.0) << "no round tick left out at the top";
     // Decimal steps come out as the decimal values, not as accumulated 0.1 + 0.2.
-    const std::vector<double> small = ui::niceTicks(0, 0.5, false, 6);
+    const std::vector<double> small = ui::charts::niceTicks(0, 0.5, false, 6);
     ASSERT_EQ(small.size(), 6u);
     EXPECT_EQ(small[3], 0.3);
-    EXPECT_EQ(ui::formatTick(small[3]), "0.3");
+    EXPECT_EQ(ui::charts::formatTick(small[3]), "0.3");
 }
 
 TEST(ChartAxes, LogTicksArePowersOfTen) {
-    EXPECT_EQ(ui::niceTicks(1, 100, true), (std::vector<double>{1, 10, 100}));
-    EXPECT_EQ(ui::niceTicks(2, 20, true), (std::vector<double>{2, 5, 10, 20}));
-    const std::vector<double> wide = ui::niceTicks(1e-3, 1e9, true, 5);
+    EXPECT_EQ(ui::charts::niceTicks(1, 100, true), (std::vector<double>{1, 10, 100}));
+    EXPECT_EQ(ui::charts::niceTicks(2, 20, true), (std::vector<double>{2, 5, 10, 20}));
+    const std::vector<double> wide = ui::charts::niceTicks(1e-3, 1e9, true, 5);
     ASSERT_FALSE(wide.empty());
     EXPECT_LE(wide.size(), 5u);
-    EXPECT_TRUE(ui::niceTicks(0, 10, true).empty()) << "no log ticks through zero";
-    EXPECT_EQ(ui::formatTick(1e6), "1e6");
-    EXPECT_EQ(ui::formatTick(2.5e-5), "2.5e-5");
+    EXPECT_TRUE(ui::charts::niceTicks(0, 10, true).empty()) << "no log ticks through zero";
+    EXPECT_EQ(ui::charts::formatTick(1e6), "1e6");
+    EXPECT_EQ(ui::charts::formatTick(2.5e-5), "2.5e-5");
 }
 
 TEST(ChartAxes, RangesAndRuns) {
-    const ui::AxisRange log = ui::niceRange(3, 4000, true);
+    const ui::charts::AxisRange log = ui::charts::niceRange(3, 4000, true);
     EXPECT_DOUBLE_EQ(log.lo, 1);
     EXPECT_DOUBLE_EQ(log.hi, 1e4);
-    const ui::AxisRange lin = ui::niceRange(0.3, 87, false);
+    const ui::charts::AxisRange lin = ui::charts::niceRange(0.3, 87, false);
     EXPECT_DOUBLE_EQ(lin.lo, 0);
     EXPECT_DOUBLE_EQ(lin.hi, 90);
-    EXPECT_DOUBLE_EQ(ui::axisFraction(10, log, true), 0.25);
+    EXPECT_DOUBLE_EQ(ui::charts::axisFraction(10, log, true), 0.25);
 
-    ui::Chart c;
+    ui::charts::Chart c;
     c.y.log = true;
-    c.series.push_back({"s", ui::paletteColour(0), {{0, 1}, {1, 2}, {2, INFINITY}, {3, 4}, {4, 80}, {5, -1}, {6, 3}}, ui::SeriesStyle::Lines, 3.f, {}});
-    const auto runs = ui::plottableRuns(c.series[0], false, true);
+    c.series.push_back({"s", ui::charts::paletteColour(0), {{0, 1}, {1, 2}, {2, INFINITY}, {3, 4}, {4, 80}, {5, -1}, {6, 3}}, ui::charts::SeriesStyle::Lines, 3.f, {}});
+    const auto runs = ui::charts::plottableRuns(c.series[0], false, true);
     ASSERT_EQ(runs.size(), 3u) << "∞ and non-positive (on a log axis) break the line";
     EXPECT_EQ(runs[0].size(), 2u);
     EXPECT_EQ(runs[1].size(), 2u);
     EXPECT_EQ(runs[2].size(), 1u);
-    const ui::AxisRange y = ui::axisRange(c, false);
+    const ui::charts::AxisRange y = ui::charts::axisRange(c, false);
     EXPECT_DOUBLE_EQ(y.lo, 1);
     EXPECT_DOUBLE_EQ(y.hi, 100) << "∞ is not part of the range, 80 is";
     c.y.max = 1000.0;
-    EXPECT_DOUBLE_EQ(ui::axisRange(c, false).hi, 1000) << "a fixed bound wins";
+    EXPECT_DOUBLE_EQ(ui::charts::axisRange(c, false).hi, 1000) << "a fixed bound wins";
     // Less than a decade of data keeps a linear-style range rather than a whole decade.
-    const ui::AxisRange narrow = ui::niceRange(1, 1.0001, true);
+    const ui::charts::AxisRange narrow = ui::charts::niceRange(1, 1.0001, true);
     EXPECT_GE(narrow.lo, 0.99);
     EXPECT_LE(narrow.hi, 1.01);
-    EXPECT_GE(ui::niceTicks(narrow.lo, narrow.hi, true).size(), 2u);
+    EXPECT_GE(ui::charts::niceTicks(narrow.lo, narrow.hi, true).size(), 2u);
 }

@@ -16,7 +16,7 @@ struct Region {
     double mean = 0, variance = 0;
 };
 
-Region stats(const renderer::Image& img, const ui::Rect& r) {
+Region stats(const geometry::analysis::Image& img, const ui::Rect& r) {
     double sum = 0, sum2 = 0;
     size_t n = 0;
     for (int y = int(r.y); y < int(r.bottom()) && y < img.height; ++y)
@@ -36,7 +36,7 @@ Region stats(const renderer::Image& img, const ui::Rect& r) {
 }
 
 /// Pixels that differ between two images inside r.
-size_t differing(const renderer::Image& a, const renderer::Image& b, const ui::Rect& r) {
+size_t differing(const geometry::analysis::Image& a, const geometry::analysis::Image& b, const ui::Rect& r) {
     size_t n = 0;
     for (int y = int(r.y); y < int(r.bottom()); ++y)
         for (int x = int(r.x); x < int(r.right()); ++x)
@@ -45,7 +45,7 @@ size_t differing(const renderer::Image& a, const renderer::Image& b, const ui::R
 }
 
 /// Fraction of near-white pixels inside r.
-double stats_of_white(const renderer::Image& img, const ui::Rect& r) {
+double stats_of_white(const geometry::analysis::Image& img, const ui::Rect& r) {
     size_t white = 0, n = 0;
     for (int y = int(r.y); y < int(r.bottom()); ++y)
         for (int x = int(r.x); x < int(r.right()); ++x, ++n) {
@@ -68,7 +68,7 @@ protected:
     }
     std::unique_ptr<ui::HeadlessDashboard> make(const std::vector<std::string>& assignments = {}) {
         app::RenderOptions o = options_;
-        for (const auto& a : assignments) geometry::applyAssignment(o.settings, a);
+        for (const auto& a : assignments) geometry::shadow::applyAssignment(o.settings, a);
         ui::LoadedScene scene = app::loadDashboardScene(o);
         ui::DashboardState state = app::initialDashboardState(scene, o);
         return std::make_unique<ui::HeadlessDashboard>(std::move(scene), state, app::dashboardOptions(o), kW, kH);
@@ -79,7 +79,7 @@ protected:
 
 TEST_F(HeadlessDashboardTest, EveryPanelHasContent) {
     auto d = make();
-    const renderer::Image img = d->render(2);
+    const geometry::analysis::Image img = d->render(2);
     ASSERT_EQ(img.width, kW);
     ASSERT_EQ(img.height, kH);
     const ui::DashboardRects& r = d->dashboard().rects();
@@ -93,7 +93,7 @@ TEST_F(HeadlessDashboardTest, EveryPanelHasContent) {
     const uint8_t* sky = img.at(int(r.eye.x + r.eye.w / 2), int(r.eye.y + 60));
     EXPECT_GT(sky[2], sky[0]) << "blue sky at the top of the eye view";
     // Statistics arrived: the inspection ran and found receivers.
-    const renderer::Inspection* in = d->dashboard().inspection(0);
+    const geometry::analysis::Inspection* in = d->dashboard().inspection(0);
     ASSERT_NE(in, nullptr);
     EXPECT_GT(in->aliasing.count, 1000u);
     ASSERT_TRUE(in->truth);
@@ -103,7 +103,7 @@ TEST_F(HeadlessDashboardTest, EveryPanelHasContent) {
 TEST_F(HeadlessDashboardTest, FilterKernelChangesTheEyePanelOnly) {
     auto narrow = make({"filter.type=pcf", "filter.kernel=1"});
     auto wide = make({"filter.type=pcf", "filter.kernel=7"});
-    const renderer::Image a = narrow->render(2), b = wide->render(2);
+    const geometry::analysis::Image a = narrow->render(2), b = wide->render(2);
     const ui::DashboardRects& r = narrow->dashboard().rects();
     EXPECT_GT(differing(a, b, r.eye), 200u) << "wider PCF softens the shadow edges";
     EXPECT_EQ(differing(a, b, r.light), 0u) << "the shadow map does not depend on the filter";
@@ -112,7 +112,7 @@ TEST_F(HeadlessDashboardTest, FilterKernelChangesTheEyePanelOnly) {
 TEST_F(HeadlessDashboardTest, WarpMethodChangesTheLightPanel) {
     auto uniform = make({"warp.method=uniform"});
     auto lispsm = make({"warp.method=lispsm"});
-    const renderer::Image a = uniform->render(2), b = lispsm->render(2);
+    const geometry::analysis::Image a = uniform->render(2), b = lispsm->render(2);
     const ui::DashboardRects& r = uniform->dashboard().rects();
     const double area = double(r.light.w) * r.light.h;
     EXPECT_GT(double(differing(a, b, r.light)), 0.05 * area) << "the warp reshapes the light's view";
@@ -121,7 +121,7 @@ TEST_F(HeadlessDashboardTest, WarpMethodChangesTheLightPanel) {
 TEST_F(HeadlessDashboardTest, SameStateSamePixels) {
     auto first = make({"warp.method=lispsm"});
     auto second = make({"warp.method=lispsm"});
-    const renderer::Image a = first->render(2), b = second->render(2);
+    const geometry::analysis::Image a = first->render(2), b = second->render(2);
     const ui::DashboardRects& r = first->dashboard().rects();
     for (const ui::Rect& rect : {r.eye, r.light, r.heatmap, r.controls})
         EXPECT_EQ(differing(a, b, rect), 0u) << "deterministic panels (stats hold live timings)";
@@ -131,14 +131,14 @@ TEST_F(HeadlessDashboardTest, CompareShowsBothSidesAndTheirDifference) {
     app::RenderOptions o = options_;
     ui::LoadedScene scene = app::loadDashboardScene(o);
     ui::DashboardState state = app::initialDashboardState(scene, o);
-    geometry::applySetting(state.settings[1], "warp.method", "lispsm");
+    geometry::shadow::applySetting(state.settings[1], "warp.method", "lispsm");
     state.views.compare = ui::CompareMode::SideBySide;
     state.views.heatmap = ui::HeatmapKind::Difference;
     ui::HeadlessDashboard d(std::move(scene), state, app::dashboardOptions(o), kW, kH);
-    const renderer::Image img = d.render(2);
+    const geometry::analysis::Image img = d.render(2);
     ASSERT_NE(d.dashboard().inspection(1), nullptr);
-    const renderer::Inspection& a = *d.dashboard().inspection(0);
-    const renderer::Inspection& b = *d.dashboard().inspection(1);
+    const geometry::analysis::Inspection& a = *d.dashboard().inspection(0);
+    const geometry::analysis::Inspection& b = *d.dashboard().inspection(1);
     EXPECT_EQ(a.width, b.width);
     EXPECT_NE(a.aliasing.p95, b.aliasing.p95) << "two warps, two error distributions";
     // The difference heatmap is not uniform grey: m_A / m_B varies over the receivers.
@@ -205,9 +205,9 @@ namespace {
 
 TEST_F(HeadlessDashboardTest, ChartTabsDrawTheCurvesAndTheTradeoffSweepRuns) {
     auto d = make();
-    const renderer::Image stats = d->render(2);
+    const geometry::analysis::Image stats = d->render(2);
     d->dashboard().showTab(1); // n'(γ)
-    const renderer::Image warp = d->render(2);
+    const geometry::analysis::Image warp = d->render(2);
     const ui::Rect& r = d->dashboard().rects().stats;
     EXPECT_GT(differing(stats, warp, r), size_t(0.3 * r.w * r.h)) << "the chart replaces the table";
     // The chart has a white plot background (the table is dark).
@@ -217,8 +217,8 @@ TEST_F(HeadlessDashboardTest, ChartTabsDrawTheCurvesAndTheTradeoffSweepRuns) {
     for (int i = 0; i < 20 && d->dashboard().tradeoffRunning(); ++i) (void)d->render(1);
     const auto& results = d->dashboard().tradeoffResults();
     if (const char* dump = std::getenv("SHADOWSCOPE_TEST_DUMP")) { // for looking at the charts by hand
-        renderer::writePng(std::string(dump) + "/warp_tab.png", warp);
-        renderer::writePng(std::string(dump) + "/tradeoff_tab.png", d->render(1));
+        geometry::analysis::writePng(std::string(dump) + "/warp_tab.png", warp);
+        geometry::analysis::writePng(std::string(dump) + "/tradeoff_tab.png", d->render(1));
     }
     ASSERT_GE(results.size(), 5u) << "4 presets + the current settings";
     double ssm = 0, paper = 0;
@@ -235,7 +235,7 @@ TEST_F(HeadlessDashboardTest, ChartTabsDrawTheCurvesAndTheTradeoffSweepRuns) {
 namespace {
 
 /// Rows of the controls panel's first button (the first rows with bright text pixels).
-int firstTextHeight(const renderer::Image& img, const ui::Rect& r) {
+int firstTextHeight(const geometry::analysis::Image& img, const ui::Rect& r) {
     int first = -1, last = -1;
     for (int y = int(r.y); y < int(r.y + r.h * 0.2f); ++y) {
         bool bright = false;
@@ -254,7 +254,7 @@ TEST_F(HeadlessDashboardTest, HighDpiScaleDoublesTheLayoutAndRasterizesTextLarge
         ui::DashboardOptions options = app::dashboardOptions(o);
         options.uiScale = scale;
         ui::HeadlessDashboard d(std::move(scene), state, options, w, h);
-        const renderer::Image img = d.render(2);
+        const geometry::analysis::Image img = d.render(2);
         return std::pair{img, d.dashboard().rects()};
     };
     const auto [one, r1] = render(1.f, 960, 600);

@@ -4,7 +4,7 @@
 #include "ui/dashboard_layout.h"
 #include "ui/image_view.h"
 #include "ui/orbit_camera.h"
-#include "geometry/settings.h"
+#include "geometry/shadow/settings.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -15,6 +15,7 @@
 #include <limits>
 
 using namespace ui;
+using namespace ui::charts;
 
 namespace {
 
@@ -146,7 +147,7 @@ TEST(ImageView, PanMovesTheImageWithTheDrag) {
 }
 
 TEST(OrbitCamera, PanFlyAndLookMoveAsNamed) {
-    geometry::Camera c;
+    geometry::scene::Camera c;
     c.eye = {0, 0, 10};
     c.target = {0, 0, 0};
     OrbitCamera o = OrbitCamera::from(c);
@@ -170,8 +171,8 @@ TEST(OrbitCamera, PanFlyAndLookMoveAsNamed) {
 
 TEST(DashboardConfig, RoundTripsSettingsViewsAndLayout) {
     DashboardState s;
-    geometry::applySetting(s.settings[0], "warp.method", "lispsm");
-    geometry::applySetting(s.settings[1], "filter.kernel", "7");
+    geometry::shadow::applySetting(s.settings[0], "warp.method", "lispsm");
+    geometry::shadow::applySetting(s.settings[1], "filter.kernel", "7");
     s.views.heatmap = HeatmapKind::Truth;
     s.views.compare = CompareMode::Split;
     s.views.splitPosition = 0.25f;
@@ -208,7 +209,7 @@ TEST(DashboardConfig, CorruptFilesAreReportedAndChangeNothing) {
     for (const std::string& text : bad) {
         std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
         DashboardState state;
-        geometry::applySetting(state.settings[0], "splits.count", "3");
+        geometry::shadow::applySetting(state.settings[0], "splits.count", "3");
         WindowGeometry win;
         const auto error = loadDashboardConfig(path, state, win);
         ASSERT_TRUE(error) << text;
@@ -218,19 +219,19 @@ TEST(DashboardConfig, CorruptFilesAreReportedAndChangeNothing) {
     }
     // A good file saves and loads back.
     DashboardState good;
-    geometry::applySetting(good.settings[0], "bias.type", "slope");
+    geometry::shadow::applySetting(good.settings[0], "bias.type", "slope");
     ASSERT_FALSE(saveDashboardConfig(path, good, {800, 600}));
     DashboardState loaded;
     WindowGeometry win;
     ASSERT_FALSE(loadDashboardConfig(path, loaded, win));
-    EXPECT_EQ(loaded.settings[0].bias.type, geometry::BiasType::Slope);
+    EXPECT_EQ(loaded.settings[0].bias.type, geometry::shadow::BiasType::Slope);
     EXPECT_EQ(win.height, 600);
     std::filesystem::remove_all(dir);
 }
 
 TEST(DashboardControls, EverySettingBelongsToAShownGroup) {
     const auto& groups = controlGroups();
-    for (const auto& info : geometry::settingsDeclaration()) {
+    for (const auto& info : geometry::shadow::settingsDeclaration()) {
         const std::string g = settingGroup(info.key);
         EXPECT_NE(std::find(groups.begin(), groups.end(), g), groups.end()) << info.key;
         EXPECT_NE(g, "Views") << info.key << " would be drawn nowhere";

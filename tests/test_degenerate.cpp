@@ -5,10 +5,10 @@
 // in the plan, no GL error, and the fallback each case documents (docs/stability.md).
 #include "render_test_util.h"
 
-#include "geometry/builtin_scenes.h"
-#include "geometry/chunking.h"
-#include "geometry/ground_truth.h"
-#include "geometry/mesh_builder.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/scene/chunking.h"
+#include "geometry/analysis/ground_truth.h"
+#include "geometry/scene/mesh_builder.h"
 #include "renderer/context.h"
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
@@ -20,7 +20,9 @@
 #include <stdexcept>
 #include <string>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
+using namespace geometry::analysis;
 
 namespace {
 
@@ -72,8 +74,8 @@ void expectFinitePlan(const ShadowPlan& p, const std::string& what) {
 
 struct Frame {
     ShadowPlan plan;
-    renderer::Inspection in;
-    renderer::Image eye;
+    geometry::analysis::Inspection in;
+    geometry::analysis::Image eye;
     size_t at(glm::ivec2 p) const { return size_t(p.y) * size_t(in.width) + size_t(p.x); }
     size_t centre() const { return at({in.width / 2, in.height / 2}); }
     bool lit(size_t i) const { return in.shadow[i] >= 0.5f; }
@@ -303,7 +305,7 @@ TEST(Degenerate, ZeroSizeViewport) {
     }
     r.render(ok, kSize, 64);
     EXPECT_EQ(renderer::takeGlErrors(), "");
-    const renderer::Inspection in = renderer::inspect(r, ok, nullptr);
+    const geometry::analysis::Inspection in = renderer::inspect(r, ok, nullptr);
     EXPECT_EQ(in.width, kSize.width);
     EXPECT_GT(in.aliasing.count, 5000u);
 }

@@ -1,5 +1,5 @@
-#include "geometry/focus.h"
-#include "geometry/shadow_plan.h"
+#include "geometry/shadow/focus.h"
+#include "geometry/shadow/shadow_plan.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,8 @@
 
 #include "random_util.h"
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
 using testutil::randomUnit;
 using testutil::uniform;
 using testutil::uniform01;

@@ -1,7 +1,7 @@
 // glTF loading: hierarchy, materials, modes, buffers, and hostile files. Fixtures are generated
 // into a temporary folder (JSON via nlohmann, GLB assembled byte by byte) so every malformed
 // variant is a small, visible edit of one valid document.
-#include "geometry/gltf_loader.h"
+#include "geometry/io/gltf_loader.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,7 +21,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-using geometry::LoadedModel;
+using geometry::io::LoadedModel;
 using nlohmann::json;
 
 constexpr int kFloat = 5126, kUShort = 5123, kUByte = 5121;
@@ -148,7 +148,7 @@ protected:
         const auto start = std::chrono::steady_clock::now();
         std::string message;
         try {
-            (void)geometry::loadGltf(path);
+            (void)geometry::io::loadGltf(path);
             ADD_FAILURE() << path << " loaded without error";
         } catch (const std::runtime_error& e) {
             message = e.what();
@@ -175,10 +175,10 @@ bool hasNote(const LoadedModel& model, const std::string& text) {
 // Valid files
 
 TEST_F(GltfTest, EmbeddedDataUriTriangle) {
-    const LoadedModel model = geometry::loadGltf(writeDoc("triangle.gltf", embeddedTriangle()));
+    const LoadedModel model = geometry::io::loadGltf(writeDoc("triangle.gltf", embeddedTriangle()));
     EXPECT_EQ(model.format, "gltf");
     ASSERT_EQ(model.meshes.size(), 1u);
-    const geometry::Mesh& mesh = model.meshes[0];
+    const geometry::scene::Mesh& mesh = model.meshes[0];
     EXPECT_EQ(mesh.triangleCount(), 1u);
     EXPECT_EQ(mesh.positions.size(), 3u);
     EXPECT_EQ(mesh.normals.size(), mesh.positions.size()); // computed by cleanMesh
@@ -201,13 +201,13 @@ TEST_F(GltfTest, ChildTransformComposesWithParents) {
         {{"mesh", 0}}, // a second root, untransformed
     });
     doc["scenes"] = json::array({{{"nodes", {0, 3}}}});
-    const LoadedModel model = geometry::loadGltf(writeDoc("hierarchy.gltf", doc));
+    const LoadedModel model = geometry::io::loadGltf(writeDoc("hierarchy.gltf", doc));
     ASSERT_EQ(model.meshes.size(), 2u);
     // (0,0) (1,0) (0,1) → ×2 → rotated to (0,0) (0,2) (−2,0) → +(10,0,5)
-    const geometry::Aabb child = model.meshes[0].worldBounds();
+    const geometry::scene::Aabb child = model.meshes[0].worldBounds();
     EXPECT_TRUE(near(child.lo, {8, 0, 5})) << child.lo.x << " " << child.lo.y << " " << child.lo.z;
     EXPECT_TRUE(near(child.hi, {10, 2, 5})) << child.hi.x << " " << child.hi.y << " " << child.hi.z;
-    const geometry::Aabb root = model.meshes[1].worldBounds();
+    const geometry::scene::Aabb root = model.meshes[1].worldBounds();
     EXPECT_TRUE(near(root.lo, {0, 0, 0}));
     EXPECT_TRUE(near(root.hi, {1, 1, 0}));
     EXPECT_EQ(model.report.outputFaces, 2u); // instances summed
@@ -218,7 +218,7 @@ TEST_F(GltfTest, WithoutDefaultSceneAllRootsLoad) {
     doc.erase("scene");
     doc.erase("scenes");
     doc["nodes"] = json::array({{{"children", {1}}, {"translation", {0, 3, 0}}}, {{"mesh", 0}}, {{"mesh", 0}}});
-    const LoadedModel model = geometry::loadGltf(writeDoc("noscene.gltf", doc));
+    const LoadedModel model = geometry::io::loadGltf(writeDoc("noscene.gltf", doc));
     ASSERT_EQ(model.meshes.size(), 2u);
     EXPECT_TRUE(near(model.meshes[0].worldBounds().lo, {0, 3, 0}));
     EXPECT_TRUE(near(model.meshes[1].worldBounds().lo, {0, 0, 0}));
@@ -231,7 +231,7 @@ TEST_F(GltfTest, BaseColourPerPrimitive) {
         {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0.5, 1, 1}}}}, {"doubleSided", true}},
     });
     doc["meshes"][0]["primitives"] = json::array({primitive(0, 1, 4, 0), primitive(0, 1, 4, 1), primitive(0, 1)});
-    const LoadedModel model = geometry::loadGltf(writeDoc("colours.gltf", doc));
+    const LoadedModel model = geometry::io::loadGltf(writeDoc("colours.gltf", doc));
     ASSERT_EQ(model.meshes.size(), 3u);
     EXPECT_TRUE(near(model.meshes[0].color, {1, 0, 0}));
     EXPECT_TRUE(near(model.meshes[1].color, {0, 0.5f, 1}));
@@ -242,7 +242,7 @@ TEST_F(GltfTest, BaseColourPerPrimitive) {
 TEST_F(GltfTest, LinesPrimitiveSkippedWithNote) {
     json doc = embeddedTriangle();
     doc["meshes"][0]["primitives"] = json::array({primitive(0, 1), primitive(0, -1, 1)});
-    const LoadedModel model = geometry::loadGltf(writeDoc("lines.gltf", doc));
+    const LoadedModel model = geometry::io::loadGltf(writeDoc("lines.gltf", doc));
     ASSERT_EQ(model.meshes.size(), 1u);
     EXPECT_TRUE(hasNote(model, "mesh 0 primitive 1: mode LINES skipped"));
 }
@@ -254,7 +254,7 @@ TEST_F(GltfTest, StripAndFanAreUnrolled) {
     doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteLength", 48}}});
     doc["accessors"] = json::array({{{"bufferView", 0}, {"componentType", kFloat}, {"count", 4}, {"type", "VEC3"}}});
     doc["meshes"][0]["primitives"] = json::array({primitive(0, -1, 5), primitive(0, -1, 6)});
-    const LoadedModel model = geometry::loadGltf(writeDoc("strip.gltf", doc));
+    const LoadedModel model = geometry::io::loadGltf(writeDoc("strip.gltf", doc));
     ASSERT_EQ(model.meshes.size(), 2u);
     EXPECT_EQ(model.meshes[0].triangleCount(), 2u);
     EXPECT_EQ(model.meshes[1].triangleCount(), 2u);
@@ -263,14 +263,14 @@ TEST_F(GltfTest, StripAndFanAreUnrolled) {
 TEST_F(GltfTest, ExternalBinBuffer) {
     const Bytes bin = triangleBin().bytes;
     writeBytes("triangle.bin", bin);
-    const LoadedModel model = geometry::loadGltf(writeDoc("external.gltf", triangleDoc(bin, "triangle.bin")));
+    const LoadedModel model = geometry::io::loadGltf(writeDoc("external.gltf", triangleDoc(bin, "triangle.bin")));
     ASSERT_EQ(model.meshes.size(), 1u);
     EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
 }
 
 TEST_F(GltfTest, GlbWithBinChunk) {
     const Bytes bin = triangleBin().bytes;
-    const LoadedModel model = geometry::loadGltf(writeBytes("triangle.glb", makeGlb(triangleDoc(bin, "").dump(), bin)));
+    const LoadedModel model = geometry::io::loadGltf(writeBytes("triangle.glb", makeGlb(triangleDoc(bin, "").dump(), bin)));
     EXPECT_EQ(model.format, "glb");
     ASSERT_EQ(model.meshes.size(), 1u);
     EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
@@ -285,7 +285,7 @@ TEST_F(GltfTest, NonFinitePositionsAreCleanedNotFatal) {
     doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 6}}});
     doc["accessors"][0]["count"] = 4;
     doc["accessors"][1] = {{"bufferView", 1}, {"componentType", kUByte}, {"count", 6}, {"type", "SCALAR"}};
-    const LoadedModel model = geometry::loadGltf(writeDoc("nan.gltf", doc));
+    const LoadedModel model = geometry::io::loadGltf(writeDoc("nan.gltf", doc));
     ASSERT_EQ(model.meshes.size(), 1u);
     EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
     EXPECT_EQ(model.report.nonFiniteVertices, 1u);
@@ -295,7 +295,7 @@ TEST_F(GltfTest, ProgressStartsWithReadingThenReportsPrimitives) {
     json doc = embeddedTriangle();
     doc["meshes"][0]["primitives"] = json::array({primitive(0, 1), primitive(0, 1)});
     std::vector<std::string> stages;
-    (void)geometry::loadGltf(writeDoc("progress.gltf", doc), {}, [&](float fraction, std::string_view stage) {
+    (void)geometry::io::loadGltf(writeDoc("progress.gltf", doc), {}, [&](float fraction, std::string_view stage) {
         EXPECT_GE(fraction, 0.f);
         EXPECT_LE(fraction, 1.f);
         stages.emplace_back(stage);

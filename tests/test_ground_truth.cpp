@@ -1,7 +1,7 @@
 // Ground truth by ray casting (Embree): known answers on the plane scene and tiny scenes,
 // agreement with a brute-force tracer, input validation, and the platform as a whole.
-#include "geometry/builtin_scenes.h"
-#include "geometry/ground_truth.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/analysis/ground_truth.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -13,7 +13,9 @@
 #include <stdexcept>
 #include <vector>
 
-namespace geometry {
+using namespace geometry::scene;
+using namespace geometry::analysis;
+
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
@@ -419,4 +421,3 @@ TEST(GroundTruthPlatform, DefaultViewHasLitAndShadowedReceiversAndIsDeterministi
     EXPECT_LT(shadowedShare, 0.98) << shadowed << " of " << facing;
 }
 } // namespace
-} // namespace geometry

@@ -28,7 +28,7 @@ const char* const kShotFiles[] = {"eye.png", "light.png", "heatmap.png", "dashbo
 
 struct Shots {
     fs::path dir;
-    renderer::Image eye, light, heatmap, dashboard;
+    geometry::analysis::Image eye, light, heatmap, dashboard;
 };
 
 std::string toString(double v) { return std::to_string(long(std::lround(v))); }
@@ -332,10 +332,10 @@ protected:
                 throw std::runtime_error(std::string("the screenshot did not write ") + f + "\n" + context());
             fs::copy_file(shots_ / f, s.dir / f, fs::copy_options::overwrite_existing);
         }
-        s.eye = renderer::readImageFile((s.dir / "eye.png").string());
-        s.light = renderer::readImageFile((s.dir / "light.png").string());
-        s.heatmap = renderer::readImageFile((s.dir / "heatmap.png").string());
-        s.dashboard = renderer::readImageFile((s.dir / "dashboard.png").string());
+        s.eye = geometry::analysis::readImageFile((s.dir / "eye.png").string());
+        s.light = geometry::analysis::readImageFile((s.dir / "light.png").string());
+        s.heatmap = geometry::analysis::readImageFile((s.dir / "heatmap.png").string());
+        s.dashboard = geometry::analysis::readImageFile((s.dir / "dashboard.png").string());
         return s;
     }
 
@@ -517,7 +517,7 @@ TEST_F(GuiE2E, SamePixelsAsHeadless) {
                                    scaled(300));
     ASSERT_FALSE(r.timedOut) << r.output;
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const renderer::Image headless = renderer::readImageFile((headlessDir / "dashboard.png").string());
+    const geometry::analysis::Image headless = geometry::analysis::readImageFile((headlessDir / "dashboard.png").string());
     ASSERT_EQ(headless.width, kWidth);
     ASSERT_EQ(headless.height, kHeight);
     for (const char* id : {"eye_image", "light_image", "heatmap_image"}) {

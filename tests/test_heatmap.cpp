@@ -1,4 +1,4 @@
-#include "renderer/heatmap.h"
+#include "geometry/analysis/heatmap.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
-using namespace renderer;
+
+using namespace geometry::analysis;
 
 namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();

@@ -4,17 +4,20 @@
 
 #include "app/headless_frame.h"
 #include "renderer/inspection.h"
-#include "geometry/analytic_error.h"
-#include "geometry/builtin_scenes.h"
-#include "geometry/ground_truth.h"
-#include "geometry/mesh_builder.h"
+#include "geometry/shadow/analytic_error.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/analysis/ground_truth.h"
+#include "geometry/scene/mesh_builder.h"
 #include "renderer/context.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
+using namespace geometry::io;
+using namespace geometry::analysis;
 
 namespace {
 
@@ -81,7 +84,7 @@ TEST(Inspection, LispsmBalancesNearAndFarErrorUniformDoesNot) {
 }
 
 namespace {
-renderer::Inspection planeWithTruth(float bias) {
+geometry::analysis::Inspection planeWithTruth(float bias) {
     app::RenderOptions o;
     o.scene = "plane";
     o.backend = "osmesa";
@@ -96,7 +99,7 @@ renderer::Inspection planeWithTruth(float bias) {
 } // namespace
 
 TEST(Inspection, TruthAgreesOnPoleShadowsAndCatchesNegativeBias) {
-    const renderer::Inspection good = planeWithTruth(0.05f);
+    const geometry::analysis::Inspection good = planeWithTruth(0.05f);
     ASSERT_TRUE(good.truth);
     EXPECT_GT(good.truth->count, 20000u);
     EXPECT_LT(good.truth->falseShadow + good.truth->falseLit, 0.005);
@@ -104,7 +107,7 @@ TEST(Inspection, TruthAgreesOnPoleShadowsAndCatchesNegativeBias) {
     size_t shadowed = 0;
     for (size_t i = 0; i < good.occluded->size(); ++i) shadowed += good.receiver[i] && (*good.occluded)[i];
     EXPECT_GT(shadowed, 100u);
-    const renderer::Inspection bad = planeWithTruth(-0.5f);
+    const geometry::analysis::Inspection bad = planeWithTruth(-0.5f);
     EXPECT_GT(bad.truth->falseShadow, 0.2);
 }
 
@@ -117,7 +120,7 @@ TEST(Inspection, TexelUtilizationFallsWithResolution) {
     for (int res : {128, 512, 2048}) {
         o.settings.resolution = res;
         const app::HeadlessFrame f = app::renderHeadless(o, 0);
-        const renderer::Inspection in = renderer::inspect(*f.renderer, f.plan, nullptr);
+        const geometry::analysis::Inspection in = renderer::inspect(*f.renderer, f.plan, nullptr);
         ASSERT_EQ(in.utilization.size(), 1u);
         EXPECT_GT(in.utilization[0], 0.0);
         EXPECT_LT(in.utilization[0], previous) << res;

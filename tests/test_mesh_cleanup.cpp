@@ -1,6 +1,6 @@
 // cleanMesh(): every step on hand-built meshes, counted and checked.
-#include "geometry/mesh_builder.h"
-#include "geometry/model_loader.h"
+#include "geometry/scene/mesh_builder.h"
+#include "geometry/io/model_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,8 @@
 #include <limits>
 #include <set>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::io;
 
 namespace {
 

@@ -1,7 +1,7 @@
 // loadModel()/saveMesh() for OBJ, STL, OFF, PLY: fixtures are written by the tests into a
 // temporary folder, good and hostile alike.
-#include "geometry/mesh_builder.h"
-#include "geometry/model_loader.h"
+#include "geometry/scene/mesh_builder.h"
+#include "geometry/io/model_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,8 @@
 #include <limits>
 #include <unistd.h>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::io;
 namespace fs = std::filesystem;
 
 namespace {

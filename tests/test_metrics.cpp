@@ -1,4 +1,4 @@
-#include "geometry/metrics.h"
+#include "geometry/analysis/metrics.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-using namespace geometry;
+using namespace geometry::analysis;
 
 namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();

@@ -1,7 +1,7 @@
 // The full shadow plan: splits, focus bodies and warps together.
-#include "geometry/builtin_scenes.h"
-#include "geometry/focus.h"
-#include "geometry/shadow_plan.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/shadow/focus.h"
+#include "geometry/shadow/shadow_plan.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,8 @@
 
 #include "random_util.h"
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
 using testutil::randomUnit;
 using testutil::uniform;
 using testutil::uniform01;

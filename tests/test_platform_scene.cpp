@@ -1,13 +1,14 @@
 // The "platform" built-in scene: deterministic, on its triangle budget, well formed.
-#include "geometry/builtin_scenes.h"
-#include "geometry/chunking.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/scene/chunking.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-namespace geometry {
+using namespace geometry::scene;
+
 namespace {
 
 /// Built once: the default scene is used by several tests and costs tens of milliseconds.
@@ -142,4 +143,3 @@ TEST(PlatformScene, PositionsFiniteAndNormalsUnit) {
 }
 
 } // namespace
-} // namespace geometry

@@ -1,7 +1,7 @@
 // JSON presets: settingsToJson/settingsFromJson round-trip every declared key, the shipped presets
 // hold what they promise, bad files give one-line errors, and --preset / --set precedence does not
 // depend on the order on the command line.
-#include "geometry/preset.h"
+#include "geometry/io/preset.h"
 #include "app/render_options.h"
 
 #include <CLI/CLI.hpp>
@@ -17,8 +17,8 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-using geometry::SettingInfo;
-using geometry::ShadowSettings;
+using geometry::shadow::SettingInfo;
+using geometry::shadow::ShadowSettings;
 using json = nlohmann::json;
 using Kind = SettingInfo::Kind;
 
@@ -56,11 +56,11 @@ std::string errorOf(const std::function<void()>& f) {
 }
 
 std::string loadError(const std::string& path) {
-    return errorOf([&] { (void)geometry::loadPreset(path); });
+    return errorOf([&] { (void)geometry::io::loadPreset(path); });
 }
 
 std::string fromJsonError(const json& j) {
-    return errorOf([&] { (void)geometry::settingsFromJson(j); });
+    return errorOf([&] { (void)geometry::io::settingsFromJson(j); });
 }
 
 /// The JSON leaf of a dotted key, or nullptr.
@@ -80,20 +80,20 @@ const json* leaf(const json& j, std::string_view key) {
 /// Every key away from its default: the maximum, the last choice, true.
 ShadowSettings extremeSettings() {
     ShadowSettings s;
-    for (const auto& info : geometry::settingsDeclaration()) info.set(s, info.max);
+    for (const auto& info : geometry::shadow::settingsDeclaration()) info.set(s, info.max);
     return s;
 }
 
 /// Floats that no short decimal represents, to check no precision is lost on the way.
 ShadowSettings awkwardSettings() {
     ShadowSettings s = extremeSettings();
-    for (const auto& info : geometry::settingsDeclaration())
+    for (const auto& info : geometry::shadow::settingsDeclaration())
         if (info.kind == Kind::Float) info.set(s, info.min + (info.max - info.min) / 3.0);
     return s;
 }
 
 void expectSameSettings(const ShadowSettings& a, const ShadowSettings& b) {
-    for (const auto& info : geometry::settingsDeclaration()) EXPECT_EQ(info.get(a), info.get(b)) << info.key;
+    for (const auto& info : geometry::shadow::settingsDeclaration()) EXPECT_EQ(info.get(a), info.get(b)) << info.key;
 }
 
 void parseArgs(CLI::App& cli, std::vector<std::string> args) {
@@ -105,8 +105,8 @@ void parseArgs(CLI::App& cli, std::vector<std::string> args) {
 
 TEST(Presets, EveryKeyIsPresentWithItsJsonType) {
     const ShadowSettings s = extremeSettings();
-    const json j = geometry::settingsToJson(s);
-    for (const auto& info : geometry::settingsDeclaration()) {
+    const json j = geometry::io::settingsToJson(s);
+    for (const auto& info : geometry::shadow::settingsDeclaration()) {
         const json* v = leaf(j, info.key);
         ASSERT_NE(v, nullptr) << info.key;
         switch (info.kind) {
@@ -117,31 +117,31 @@ TEST(Presets, EveryKeyIsPresentWithItsJsonType) {
         }
     }
     EXPECT_EQ(j.at("filter").at("eye_blur").at("iterations"), 8);
-    EXPECT_EQ(geometry::settingsToJson(ShadowSettings{}).at("bias").at("constant").dump(), "0.05") << "floats print short";
+    EXPECT_EQ(geometry::io::settingsToJson(ShadowSettings{}).at("bias").at("constant").dump(), "0.05") << "floats print short";
 }
 
 TEST(Presets, EveryKeyRoundTrips) {
     const ShadowSettings defaults;
     for (const ShadowSettings& s : {extremeSettings(), awkwardSettings()}) {
-        for (const auto& info : geometry::settingsDeclaration())
+        for (const auto& info : geometry::shadow::settingsDeclaration())
             EXPECT_NE(info.get(s), info.get(defaults)) << info.key << " should differ from its default";
-        expectSameSettings(geometry::settingsFromJson(geometry::settingsToJson(s)), s);
-        expectSameSettings(geometry::settingsFromJson(json::parse(geometry::settingsToJson(s).dump())), s);
+        expectSameSettings(geometry::io::settingsFromJson(geometry::io::settingsToJson(s)), s);
+        expectSameSettings(geometry::io::settingsFromJson(json::parse(geometry::io::settingsToJson(s).dump())), s);
         const std::string path = (testDir() / "roundtrip.json").string();
-        geometry::savePreset(path, s, "round trip");
-        expectSameSettings(geometry::loadPreset(path), s);
+        geometry::io::savePreset(path, s, "round trip");
+        expectSameSettings(geometry::io::loadPreset(path), s);
     }
 }
 
 TEST(Presets, SaveWritesPrettyJsonWithNameFirst) {
     const std::string path = (testDir() / "saved.json").string();
-    geometry::savePreset(path, ShadowSettings{}, "mine", "what it is");
+    geometry::io::savePreset(path, ShadowSettings{}, "mine", "what it is");
     std::ifstream in(path, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_EQ(text.rfind("{\n  \"name\": \"mine\",\n  \"description\": \"what it is\",\n  \"shadow_map\"", 0), 0u) << text;
     EXPECT_EQ(text.back(), '\n');
     EXPECT_EQ(json::parse(text).at("name"), "mine");
-    EXPECT_NE(errorOf([] { geometry::savePreset("/nonexistent-dir/x.json", ShadowSettings{}); }).find("cannot write"),
+    EXPECT_NE(errorOf([] { geometry::io::savePreset("/nonexistent-dir/x.json", ShadowSettings{}); }).find("cannot write"),
               std::string::npos);
 }
 
@@ -149,29 +149,31 @@ TEST(Presets, MissingKeysKeepTheBase) {
     ShadowSettings base;
     base.splits.count = 5;
     base.bias.constant = 0.3f;
-    const ShadowSettings s = geometry::settingsFromJson(json::parse(R"({"warp": {"method": "psm"}})"), base);
-    EXPECT_EQ(s.warp.method, geometry::WarpMethod::Psm);
+    const ShadowSettings s = geometry::io::settingsFromJson(json::parse(R"({"warp": {"method": "psm"}})"), base);
+    EXPECT_EQ(s.warp.method, geometry::shadow::WarpMethod::Psm);
     EXPECT_EQ(s.splits.count, 5);
     EXPECT_EQ(s.bias.constant, 0.3f);
-    const ShadowSettings t = geometry::loadPreset(writeFile("partial.json", R"({"name": "x", "filter": {"eye_blur": {}}})"), base);
+    const ShadowSettings t = geometry::io::loadPreset(writeFile("partial.json", R"({"name": "x", "filter": {"eye_blur": {}}})"), base);
     expectSameSettings(t, base);
 }
 
 TEST(Presets, ShippedPresetsHoldTheirTechnique) {
-    using namespace geometry;
-    const ShadowSettings ssm = geometry::loadPreset(presetPath("ssm.json"));
+    using namespace geometry::scene;
+using namespace geometry::shadow;
+using namespace geometry::io;
+    const ShadowSettings ssm = geometry::io::loadPreset(presetPath("ssm.json"));
     EXPECT_EQ(ssm.warp.method, WarpMethod::Uniform);
     EXPECT_EQ(ssm.splits.count, 1);
     EXPECT_EQ(ssm.bias.type, BiasType::Constant);
     EXPECT_EQ(ssm.filter.type, FilterType::Hw2x2);
 
-    const ShadowSettings lispsm = geometry::loadPreset(presetPath("lispsm.json"));
+    const ShadowSettings lispsm = geometry::io::loadPreset(presetPath("lispsm.json"));
     EXPECT_EQ(lispsm.warp.method, WarpMethod::Lispsm);
     EXPECT_EQ(lispsm.splits.count, 1);
     EXPECT_EQ(lispsm.bias.type, BiasType::Constant);
     EXPECT_EQ(lispsm.filter.type, FilterType::Hw2x2);
 
-    const ShadowSettings pssm = geometry::loadPreset(presetPath("pssm3.json"));
+    const ShadowSettings pssm = geometry::io::loadPreset(presetPath("pssm3.json"));
     EXPECT_EQ(pssm.splits.count, 3);
     EXPECT_EQ(pssm.splits.scheme, SplitScheme::Practical);
     EXPECT_EQ(pssm.splits.lambda, 0.5);
@@ -179,7 +181,7 @@ TEST(Presets, ShippedPresetsHoldTheirTechnique) {
     EXPECT_EQ(pssm.bias.type, BiasType::Constant);
     EXPECT_EQ(pssm.filter.type, FilterType::Hw2x2);
 
-    const ShadowSettings paper = geometry::loadPreset(presetPath("paper.json"));
+    const ShadowSettings paper = geometry::io::loadPreset(presetPath("paper.json"));
     EXPECT_EQ(paper.bias.type, BiasType::Constant);
     EXPECT_EQ(paper.warp.method, WarpMethod::Glispsm);
     EXPECT_EQ(paper.splits.count, 2);
@@ -197,7 +199,7 @@ TEST(Presets, ShippedPresetsAreWhatSavePresetWrites) {
         ASSERT_TRUE(j.at("name").is_string()) << name;
         ASSERT_TRUE(j.at("description").is_string()) << name;
         const std::string again = (testDir() / name).string();
-        geometry::savePreset(again, geometry::loadPreset(presetPath(name)), j.at("name").get<std::string>(),
+        geometry::io::savePreset(again, geometry::io::loadPreset(presetPath(name)), j.at("name").get<std::string>(),
                         j.at("description").get<std::string>());
         std::ifstream in2(again, std::ios::binary);
         const std::string text2((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());
@@ -261,7 +263,7 @@ TEST(Presets, BadFilesGiveOneLineErrorsNamingTheProblem) {
 
 TEST(Presets, JsonErrorsArePrefixedAndMatchSet) {
     ShadowSettings s;
-    const std::string setMessage = errorOf([&] { geometry::applySetting(s, "splits.count", "99"); });
+    const std::string setMessage = errorOf([&] { geometry::shadow::applySetting(s, "splits.count", "99"); });
     EXPECT_EQ(fromJsonError(json::parse(R"({"splits": {"count": 99}})")), "preset: " + setMessage);
     EXPECT_EQ(fromJsonError(json::array()), "preset: expected a JSON object, got array");
     EXPECT_EQ(fromJsonError(json::parse(R"({"nope": 1})")).rfind("preset: unknown setting 'nope' (known: ", 0), 0u);
@@ -295,9 +297,9 @@ TEST(Presets, SetWinsOverPresetWhateverTheOrder) {
         parseArgs(cli, args);
         EXPECT_EQ(o.settings.splits.count, 4) << args[0];
         EXPECT_EQ(o.settings.resolution, 512) << args[0];
-        EXPECT_EQ(o.settings.warp.method, geometry::WarpMethod::Glispsm) << args[0];
-        EXPECT_EQ(o.settings.splits.scheme, geometry::SplitScheme::Adaptive) << args[0];
-        EXPECT_EQ(o.settings.filter.type, geometry::FilterType::Pcf) << args[0];
+        EXPECT_EQ(o.settings.warp.method, geometry::shadow::WarpMethod::Glispsm) << args[0];
+        EXPECT_EQ(o.settings.splits.scheme, geometry::shadow::SplitScheme::Adaptive) << args[0];
+        EXPECT_EQ(o.settings.filter.type, geometry::shadow::FilterType::Pcf) << args[0];
         EXPECT_EQ(o.settings.filter.kernel, 5) << args[0];
     }
 }
@@ -310,7 +312,7 @@ TEST(Presets, LaterPresetsAndSetsWin) {
     parseArgs(cli, {"--set", "splits.count=3", "--preset", presetPath("paper.json"), "--set", "splits.count=5",
                     "--preset", partial});
     EXPECT_EQ(o.settings.filter.kernel, 7);               // the later preset
-    EXPECT_EQ(o.settings.filter.type, geometry::FilterType::Pcf); // the earlier one, not overridden
+    EXPECT_EQ(o.settings.filter.type, geometry::shadow::FilterType::Pcf); // the earlier one, not overridden
     EXPECT_EQ(o.settings.splits.count, 5);                // the last --set
 }
 
@@ -323,7 +325,7 @@ TEST(Presets, OptionsOnlyTouchTheirCommand) {
     app::addRenderOptions(*cli.add_subcommand("render"), render);
     parseArgs(cli, {"render", "--set", "splits.count=4", "--preset", presetPath("lispsm.json")});
     EXPECT_EQ(render.settings.splits.count, 4);
-    EXPECT_EQ(render.settings.warp.method, geometry::WarpMethod::Lispsm);
+    EXPECT_EQ(render.settings.warp.method, geometry::shadow::WarpMethod::Lispsm);
     EXPECT_EQ(top.settings.splits.count, 7);
     EXPECT_EQ(top.settings.warp.method, ShadowSettings{}.warp.method);
 }

@@ -2,12 +2,15 @@
 #include "render_test_util.h"
 
 #include "app/headless_frame.h"
-#include "geometry/builtin_scenes.h"
+#include "geometry/scene/builtin_scenes.h"
 #include "renderer/context.h"
 
 #include <gtest/gtest.h>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
+using namespace geometry::io;
+using namespace geometry::analysis;
 
 namespace {
 
@@ -27,7 +30,7 @@ app::RenderOptions smallOptions(const std::string& scene) {
 TEST(HeadlessRender, PoleShadowLiesWhereGeometryPutsIt) {
     const app::HeadlessFrame f = app::renderHeadless(smallOptions("plane"));
     EXPECT_EQ(renderer::takeGlErrors(), "");
-    const renderer::Image eye = f.renderer->readEye();
+    const geometry::analysis::Image eye = f.renderer->readEye();
     ASSERT_EQ(eye.width, 320);
     const glm::vec3 l = f.plan.l;
     const Pole& pole = planeScenePoles()[0];
@@ -56,7 +59,7 @@ TEST(HeadlessRender, PoleShadowFollowsTheLight) {
     const Scene scene = makePlaneScene();
     o.light = glm::vec3(-scene.light.direction.x, scene.light.direction.y, -scene.light.direction.z);
     const app::HeadlessFrame f = app::renderHeadless(o);
-    const renderer::Image eye = f.renderer->readEye();
+    const geometry::analysis::Image eye = f.renderer->readEye();
     const glm::vec3 l0 = scene.light.l();
     const Pole& pole = planeScenePoles()[0];
     const glm::vec3 oldTip = pole.base + glm::vec3(l0.x, 0.f, l0.z) * (pole.height / -l0.y);
@@ -79,7 +82,7 @@ TEST(HeadlessRender, PlatformHasLitAndShadowedReceivers) {
     o.settings.resolution = 512;
     const app::HeadlessFrame f = app::renderHeadless(o, 0);
     EXPECT_EQ(renderer::takeGlErrors(), "");
-    const renderer::Image shadowed = f.renderer->readEye();
+    const geometry::analysis::Image shadowed = f.renderer->readEye();
     ShadowPlan noCasters = f.plan;
     for (auto& s : noCasters.splits) {
         SplitPlan empty;
@@ -89,7 +92,7 @@ TEST(HeadlessRender, PlatformHasLitAndShadowedReceivers) {
         s = empty;
     }
     f.renderer->render(noCasters, o.size, 64);
-    const renderer::Image unshadowed = f.renderer->readEye();
+    const geometry::analysis::Image unshadowed = f.renderer->readEye();
     EXPECT_EQ(renderer::takeGlErrors(), "");
     int inShadow = 0, litReceivers = 0;
     for (int y = 0; y < shadowed.height; ++y)
@@ -105,7 +108,7 @@ TEST(HeadlessRender, PlatformHasLitAndShadowedReceivers) {
 
 TEST(HeadlessRender, LightViewShowsDepthAndEmptyTexels) {
     const app::HeadlessFrame f = app::renderHeadless(smallOptions("plane"), 0);
-    const renderer::Image light = f.renderer->readLight();
+    const geometry::analysis::Image light = f.renderer->readLight();
     ASSERT_EQ(light.width, 1024);
     // The ground fills most of the focused map: many grey levels, not one flat colour.
     int levels[256] = {};
@@ -129,7 +132,7 @@ TEST(HeadlessRender, EglContextWhereAnEglDeviceExists) {
     o.backend = "egl";
     const app::HeadlessFrame f = app::renderHeadless(o, 0);
     EXPECT_EQ(renderer::takeGlErrors(), "");
-    const renderer::Image eye = f.renderer->readEye();
+    const geometry::analysis::Image eye = f.renderer->readEye();
     // Not a blank image: ground, sky and poles give different colours.
     const float sky = testutil::luminance(eye, {160, 2}), ground = testutil::luminance(eye, {160, 230});
     EXPECT_GT(std::abs(sky - ground), 0.05f);

@@ -1,13 +1,13 @@
-#include "geometry/builtin_scenes.h"
-#include "geometry/chunking.h"
-#include "geometry/mesh_builder.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/scene/chunking.h"
+#include "geometry/scene/mesh_builder.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-using namespace geometry;
+using namespace geometry::scene;
 
 TEST(PlaneScene, IsDeterministicWithPolesAndBounds) {
     const Scene a = makePlaneScene(), b = makePlaneScene();

@@ -1,7 +1,7 @@
-// Scene files (geometry/scene_file.h): the shipped files, transforms, model references, every
+// Scene files (geometry/io/scene_file.h): the shipped files, transforms, model references, every
 // validation error, and resolveScene() for each kind of --scene argument.
-#include "geometry/builtin_scenes.h"
-#include "geometry/scene_file.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/io/scene_file.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,8 @@
 #include <string_view>
 #include <vector>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::io;
 namespace fs = std::filesystem;
 
 namespace {

@@ -1,4 +1,4 @@
-#include "geometry/settings.h"
+#include "geometry/shadow/settings.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-using namespace geometry;
+using namespace geometry::shadow;
 
 namespace {
 std::string errorOf(const std::string& kv) {

@@ -1,11 +1,11 @@
-#include "geometry/splits.h"
+#include "geometry/shadow/splits.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-using namespace geometry;
+using namespace geometry::shadow;
 
 namespace {
 constexpr double n = 1, f = 100, half = std::numbers::pi / 2;

@@ -1,11 +1,11 @@
 // Pure stability helpers: the light turned to a chosen light-view angle, path interpolation,
-// and the flicker and seam measures (geometry/light_angle.h, path_interpolation.h,
+// and the flicker and seam measures (geometry/scene/light_angle.h, path_interpolation.h,
 // stability_metrics.h).
-#include "geometry/builtin_scenes.h"
-#include "geometry/caster_coverage.h"
-#include "geometry/light_angle.h"
-#include "geometry/path_interpolation.h"
-#include "geometry/stability_metrics.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/analysis/caster_coverage.h"
+#include "geometry/scene/light_angle.h"
+#include "geometry/scene/path_interpolation.h"
+#include "geometry/analysis/stability_metrics.h"
 
 #include "random_util.h"
 
@@ -18,7 +18,9 @@
 #include <stdexcept>
 #include <vector>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
+using namespace geometry::analysis;
 
 namespace {
 

@@ -2,7 +2,7 @@
 // filter, split and warp control has the effect it promises.
 #include "render_test_util.h"
 
-#include "geometry/builtin_scenes.h"
+#include "geometry/scene/builtin_scenes.h"
 #include "renderer/context.h"
 #include "renderer/renderer.h"
 
@@ -13,7 +13,9 @@
 #include <memory>
 #include <set>
 
-using namespace geometry;
+using namespace geometry::scene;
+using namespace geometry::shadow;
+using namespace geometry::analysis;
 
 namespace {
 

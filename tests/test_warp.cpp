@@ -1,6 +1,6 @@
 // Warp parameters against DESIGN §3.2's reference values (n = 1, f = 100, φ = π/6).
-#include "geometry/analytic_error.h"
-#include "geometry/warp.h"
+#include "geometry/shadow/analytic_error.h"
+#include "geometry/shadow/warp.h"
 
 #include <glm/glm.hpp>
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-using namespace geometry;
+using namespace geometry::shadow;
 
 namespace {
 constexpr double n = 1, f = 100, phi = std::numbers::pi / 6, half = std::numbers::pi / 2;

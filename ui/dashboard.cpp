@@ -1,9 +1,9 @@
 #include "dashboard.h"
 
 #include "widget_map.h"
-#include "geometry/preset.h"
-#include "geometry/shadow_plan.h"
-#include "renderer/view_images.h"
+#include "geometry/io/preset.h"
+#include "geometry/shadow/shadow_plan.h"
+#include "geometry/analysis/view_images.h"
 
 #include <imgui.h>
 
@@ -39,7 +39,7 @@ Dashboard::Dashboard(LoadedScene scene, DashboardState state, DashboardOptions o
 
 Dashboard::~Dashboard() = default;
 
-const renderer::Inspection* Dashboard::inspection(int side) const noexcept {
+const geometry::analysis::Inspection* Dashboard::inspection(int side) const noexcept {
     return sides_[side].inspection ? &*sides_[side].inspection : nullptr;
 }
 
@@ -78,18 +78,18 @@ Rect contentArea(const Rect& panel, float header, float pad) noexcept {
 }
 
 /// Exact text of the values a frame depends on, so a change anywhere re-inspects.
-std::string frameKey(const geometry::ShadowSettings& s, const geometry::Scene& scene, geometry::Viewport size,
+std::string frameKey(const geometry::shadow::ShadowSettings& s, const geometry::scene::Scene& scene, geometry::shadow::Viewport size,
                      bool truth, int generation) {
     std::ostringstream k;
-    k << geometry::settingsToJson(s).dump() << '|' << std::hexfloat << scene.camera.eye.x << ',' << scene.camera.eye.y
+    k << geometry::io::settingsToJson(s).dump() << '|' << std::hexfloat << scene.camera.eye.x << ',' << scene.camera.eye.y
       << ',' << scene.camera.eye.z << ',' << scene.camera.target.x << ',' << scene.camera.target.y << ','
       << scene.camera.target.z << ',' << scene.light.direction.x << ',' << scene.light.direction.y << ','
       << scene.light.direction.z << '|' << size.width << 'x' << size.height << '|' << truth << '|' << generation;
     return k.str();
 }
 
-renderer::Image placeholder(int w, int h) {
-    renderer::Image img;
+geometry::analysis::Image placeholder(int w, int h) {
+    geometry::analysis::Image img;
     img.width = std::max(w, 1);
     img.height = std::max(h, 1);
     img.rgba.assign(size_t(img.width) * img.height * 4, 38);
@@ -141,7 +141,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
 }
 
 void Dashboard::renderViews(const FrameInput& input) {
-    geometry::Scene& scene = scene_.file.scene;
+    geometry::scene::Scene& scene = scene_.file.scene;
     if (flyLooking_ && glm::length(input.fly) > 0.f) {
         const float step = state_.flySpeed * std::clamp(input.deltaSeconds, 0.f, 0.25f);
         state_.camera.fly(input.fly.z * step, input.fly.x * step, input.fly.y * step);
@@ -150,7 +150,7 @@ void Dashboard::renderViews(const FrameInput& input) {
     scene.light.direction = state_.sun.direction();
 
     const bool sideBySide = state_.views.compare == CompareMode::SideBySide;
-    geometry::Viewport size{int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w), int(eyeArea_.h)};
+    geometry::shadow::Viewport size{int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w), int(eyeArea_.h)};
     size.width = std::max(size.width, 16);
     size.height = std::max(size.height, 16);
     const int sides = comparing() ? 2 : 1;
@@ -159,7 +159,7 @@ void Dashboard::renderViews(const FrameInput& input) {
         if (!side.renderer) side.renderer = std::make_unique<renderer::Renderer>(scene);
         try {
             const auto p0 = std::chrono::steady_clock::now();
-            side.plan = geometry::planShadows(state_.settings[i], scene.bounds(), scene.camera, scene.light, size);
+            side.plan = geometry::shadow::planShadows(state_.settings[i], scene.bounds(), scene.camera, scene.light, size);
             side.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - p0).count();
             renderer::ViewOptions v;
             v.lightViewSize = lightViewSize_;
@@ -202,24 +202,24 @@ void Dashboard::updateHeatmap() {
     if (k.str() == heatmapKey_) return;
     heatmapKey_ = k.str();
     const Side& side = sides_[s];
-    renderer::Image img;
+    geometry::analysis::Image img;
     try {
         if (!side.inspection) {
             img = placeholder(side.size.width, side.size.height);
         } else {
-            const renderer::Inspection& in = *side.inspection;
+            const geometry::analysis::Inspection& in = *side.inspection;
             switch (v.heatmap) {
-            case HeatmapKind::Aliasing: img = renderer::aliasingView(in, side.eye, v.heatmapBlend); break;
+            case HeatmapKind::Aliasing: img = geometry::analysis::aliasingView(in, side.eye, v.heatmapBlend); break;
             case HeatmapKind::Truth:
-                img = in.occluded ? renderer::truthView(in, side.eye, v.heatmapBlend) : placeholder(in.width, in.height);
+                img = in.occluded ? geometry::analysis::truthView(in, side.eye, v.heatmapBlend) : placeholder(in.width, in.height);
                 break;
-            case HeatmapKind::Splits: img = renderer::splitsView(side.eye, in, side.plan); break;
-            case HeatmapKind::Texels: img = renderer::texelsView(side.eye, in, std::max(1, v.texelGrid)); break;
+            case HeatmapKind::Splits: img = geometry::analysis::splitsView(side.eye, in, side.plan); break;
+            case HeatmapKind::Texels: img = geometry::analysis::texelsView(side.eye, in, std::max(1, v.texelGrid)); break;
             case HeatmapKind::Difference:
                 img = comparing() && sides_[0].inspection && sides_[1].inspection &&
                               sides_[0].inspection->width == sides_[1].inspection->width &&
                               sides_[0].inspection->height == sides_[1].inspection->height
-                          ? renderer::differenceView(*sides_[0].inspection, *sides_[1].inspection)
+                          ? geometry::analysis::differenceView(*sides_[0].inspection, *sides_[1].inspection)
                           : placeholder(in.width, in.height);
                 break;
             case HeatmapKind::Count: img = placeholder(in.width, in.height); break;
@@ -233,27 +233,27 @@ void Dashboard::updateHeatmap() {
     heatmap_.upload(heatmapImage_);
 }
 
-renderer::Image Dashboard::eyeImage(int side) const {
-    return sides_[side].renderer ? sides_[side].renderer->readEye() : renderer::Image{};
+geometry::analysis::Image Dashboard::eyeImage(int side) const {
+    return sides_[side].renderer ? sides_[side].renderer->readEye() : geometry::analysis::Image{};
 }
 
-renderer::Image Dashboard::lightImage() const {
+geometry::analysis::Image Dashboard::lightImage() const {
     const auto& r = sides_[shownSide()].renderer;
     if (!r) return {};
     return state_.views.unwarped ? r->readUnwarpedLight() : r->readLight();
 }
 
-renderer::Image Dashboard::heatmapImage() const { return heatmapImage_; }
+geometry::analysis::Image Dashboard::heatmapImage() const { return heatmapImage_; }
 
-std::vector<std::string> Dashboard::saveScreenshots(const renderer::Image& dashboard) {
+std::vector<std::string> Dashboard::saveScreenshots(const geometry::analysis::Image& dashboard) {
     std::vector<std::string> written;
     try {
         const std::filesystem::path dir = options_.screenshotDir;
         std::filesystem::create_directories(dir);
-        const auto save = [&](const char* name, const renderer::Image& img) {
+        const auto save = [&](const char* name, const geometry::analysis::Image& img) {
             if (img.width <= 0 || img.height <= 0) return;
             const std::string path = (dir / name).string();
-            renderer::writePng(path, img);
+            geometry::analysis::writePng(path, img);
             written.push_back(path);
         };
         save("eye.png", eyeImage(0));

@@ -8,7 +8,7 @@
 // same pixels for the same state and size.
 #include "dashboard_state.h"
 #include "scene_loader.h"
-#include "tradeoff_chart.h"
+#include "ui/charts/tradeoff_chart.h"
 #include "renderer/image.h"
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
@@ -80,22 +80,22 @@ public:
     [[nodiscard]] bool screenshotRequested() const noexcept { return screenshotRequested_; }
     /// Writes eye.png, light.png, heatmap.png (and eye_b.png when comparing) and dashboard.png
     /// into the screenshot folder; returns the paths written and shows them in the status bar.
-    std::vector<std::string> saveScreenshots(const renderer::Image& dashboard);
+    std::vector<std::string> saveScreenshots(const geometry::analysis::Image& dashboard);
 
     /// The images the panels show this frame (for screenshots and tests).
-    [[nodiscard]] renderer::Image eyeImage(int side = 0) const;
-    [[nodiscard]] renderer::Image lightImage() const;
-    [[nodiscard]] renderer::Image heatmapImage() const;
+    [[nodiscard]] geometry::analysis::Image eyeImage(int side = 0) const;
+    [[nodiscard]] geometry::analysis::Image lightImage() const;
+    [[nodiscard]] geometry::analysis::Image heatmapImage() const;
 
     /// The last statistics of side A or B (nullopt before the first inspection).
-    [[nodiscard]] const renderer::Inspection* inspection(int side) const noexcept;
-    [[nodiscard]] const geometry::ShadowPlan& plan(int side) const noexcept { return sides_[side].plan; }
+    [[nodiscard]] const geometry::analysis::Inspection* inspection(int side) const noexcept;
+    [[nodiscard]] const geometry::shadow::ShadowPlan& plan(int side) const noexcept { return sides_[side].plan; }
     [[nodiscard]] const LoadedScene& scene() const noexcept { return scene_; }
     [[nodiscard]] bool loading() const noexcept { return loader_.busy(); }
     /// Selects a tab of the stats panel: 0 Stats, 1 n'(γ), 2 λ(θ), 3 m_z(z), 4 Trade-off.
     void showTab(int tab) noexcept { requestedTab_ = tab; }
     /// The trade-off sweep's results so far (Charts panel).
-    [[nodiscard]] const std::vector<TradeoffPoint>& tradeoffResults() const noexcept { return sweep_.results; }
+    [[nodiscard]] const std::vector<charts::TradeoffPoint>& tradeoffResults() const noexcept { return sweep_.results; }
     [[nodiscard]] bool tradeoffRunning() const noexcept { return sweep_.running; }
     /// Starts the trade-off sweep (the "Run sweep" button).
     void startTradeoffSweep();
@@ -105,12 +105,12 @@ public:
 private:
     struct Side {
         std::unique_ptr<renderer::Renderer> renderer;
-        geometry::ShadowPlan plan;
+        geometry::shadow::ShadowPlan plan;
         double planMicroseconds = 0;
-        std::optional<renderer::Inspection> inspection;
-        renderer::Image eye;
+        std::optional<geometry::analysis::Inspection> inspection;
+        geometry::analysis::Image eye;
         std::string inspectedKey;
-        geometry::Viewport size{0, 0};
+        geometry::shadow::Viewport size{0, 0};
     };
 
     void pollSceneLoad();
@@ -132,7 +132,7 @@ private:
     void drawAnalyticChart(int which); // 0 n'(γ), 1 λ(θ), 2 m_z(z)
     void drawTradeoffTab();
     void stepTradeoffSweep();
-    void exportChart(const Chart& chart, const std::string& name);
+    void exportChart(const charts::Chart& chart, const std::string& name);
     void drawStatusBar();
     void drawControlsPanel();
     void drawSceneGroup();
@@ -152,7 +152,7 @@ private:
     SceneLoader loader_;
     std::array<Side, 2> sides_;
     renderer::Texture2D heatmap_;
-    renderer::Image heatmapImage_;
+    geometry::analysis::Image heatmapImage_;
     std::string heatmapKey_;
     DashboardRects rects_;
     Rect eyeArea_, lightArea_, heatmapArea_;
@@ -173,12 +173,12 @@ private:
     struct TradeoffSweep {
         struct Config {
             std::string label, preset;
-            geometry::ShadowSettings settings;
+            geometry::shadow::ShadowSettings settings;
         };
         std::vector<Config> configs;
         size_t next = 0;
         bool running = false;
-        std::vector<TradeoffPoint> results;
+        std::vector<charts::TradeoffPoint> results;
         std::unique_ptr<renderer::Renderer> renderer;
         int generation = -1; // scene generation the renderer holds
     } sweep_;

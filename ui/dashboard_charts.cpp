@@ -3,10 +3,11 @@
 // background of the live dashboard. The same chart descriptions as `curves` and `bench`.
 #include "dashboard.h"
 
-#include "analytic_charts.h"
-#include "chart_imgui.h"
+#include "ui/charts/analytic_charts.h"
+#include "ui/chart_image.h"
+#include "ui/charts/chart_imgui.h"
 #include "widget_map.h"
-#include "geometry/preset.h"
+#include "geometry/io/preset.h"
 
 #include <imgui.h>
 
@@ -19,9 +20,9 @@ namespace ui {
 
 namespace {
 
-CurveParams curveParams(const geometry::Camera& cam, const geometry::ShadowPlan& plan, const geometry::ShadowSettings& s,
+charts::CurveParams curveParams(const geometry::scene::Camera& cam, const geometry::shadow::ShadowPlan& plan, const geometry::shadow::ShadowSettings& s,
                         int screenHeight) {
-    CurveParams p;
+    charts::CurveParams p;
     p.near = cam.near;
     p.far = cam.far;
     p.fovYDeg = cam.fovYDeg;
@@ -50,12 +51,12 @@ Rect chartArea(const char* id, const float** mouse, float* mouseStorage) {
 
 } // namespace
 
-void Dashboard::exportChart(const Chart& chart, const std::string& name) {
+void Dashboard::exportChart(const charts::Chart& chart, const std::string& name) {
     try {
         const std::filesystem::path dir = options_.screenshotDir;
         std::filesystem::create_directories(dir);
-        writeSvg(dir / (name + ".svg"), chart, 1000, 620);
-        renderer::writePng((dir / (name + ".png")).string(), renderChartImage(chart, 1000, 620));
+        charts::writeSvg(dir / (name + ".svg"), chart, 1000, 620);
+        geometry::analysis::writePng((dir / (name + ".png")).string(), renderChartImage(chart, 1000, 620));
         status_ = "saved " + (dir / (name + ".svg")).string() + ", " + (dir / (name + ".png")).string();
     } catch (const std::exception& e) {
         status_ = std::string("chart export failed: ") + e.what();
@@ -64,16 +65,16 @@ void Dashboard::exportChart(const Chart& chart, const std::string& name) {
 
 void Dashboard::drawAnalyticChart(int which) {
     const int side = shownSide();
-    const CurveParams p =
+    const charts::CurveParams p =
         curveParams(scene_.file.scene.camera, sides_[side].plan, state_.settings[side], std::max(1, sides_[side].size.height));
-    Chart chart;
+    charts::Chart chart;
     const char* name = "chart";
     if (which == 2) {
-        chart = errorChart(errorRows(p), p);
+        chart = charts::errorChart(charts::errorRows(p), p);
         name = "error_curve";
     } else {
-        const auto rows = warpRows(p);
-        chart = which == 0 ? warpChart(rows, p, p.gammaDeg) : lambdaChart(rows, p, p.gammaDeg);
+        const auto rows = charts::warpRows(p);
+        chart = which == 0 ? charts::warpChart(rows, p, p.gammaDeg) : charts::lambdaChart(rows, p, p.gammaDeg);
         name = which == 0 ? "warp_curve" : "lambda_curve";
     }
     bool save = ImGui::SmallButton("Export SVG + PNG");
@@ -86,7 +87,7 @@ void Dashboard::drawAnalyticChart(int which) {
     float storage[2];
     const float* mouse = nullptr;
     const Rect area = chartArea("chart_area", &mouse, storage);
-    drawChart(ImGui::GetWindowDrawList(), chart, area, mouse);
+    charts::drawChart(ImGui::GetWindowDrawList(), chart, {area.x, area.y, area.w, area.h}, mouse);
     if (save) exportChart(chart, name);
 }
 
@@ -105,13 +106,13 @@ void Dashboard::drawTradeoffTab() {
         widgetMapRecord("tradeoff.cancel");
     }
     ImGui::SameLine();
-    const Chart chart = tradeoffChart(s.results, "frame time, GPU median (ms)");
+    const charts::Chart chart = charts::tradeoffChart(s.results, "frame time, GPU median (ms)");
     if (ImGui::SmallButton("Export SVG + PNG")) exportChart(chart, "tradeoff");
     widgetMapRecord("export.tradeoff");
     float storage[2];
     const float* mouse = nullptr;
     const Rect area = chartArea("tradeoff_area", &mouse, storage);
-    drawChart(ImGui::GetWindowDrawList(), chart, area, mouse);
+    charts::drawChart(ImGui::GetWindowDrawList(), chart, {area.x, area.y, area.w, area.h}, mouse);
 }
 
 void Dashboard::startTradeoffSweep() {
@@ -121,7 +122,7 @@ void Dashboard::startTradeoffSweep() {
     for (const auto& path : options_.presetChoices) {
         try {
             const std::string stem = std::filesystem::path(path).stem().string();
-            s.configs.push_back({stem, stem, geometry::loadPreset(path)});
+            s.configs.push_back({stem, stem, geometry::io::loadPreset(path)});
         } catch (const std::exception& e) {
             status_ = e.what();
         }
@@ -140,28 +141,28 @@ void Dashboard::stepTradeoffSweep() {
         status_ = "trade-off sweep done: " + std::to_string(s.results.size()) + " configurations";
         return;
     }
-    geometry::Scene& scene = scene_.file.scene;
+    geometry::scene::Scene& scene = scene_.file.scene;
     if (!s.renderer || s.generation != sceneGeneration_) {
         s.renderer = std::make_unique<renderer::Renderer>(scene);
         s.generation = sceneGeneration_;
     }
     const auto& cfg = s.configs[s.next++];
-    const geometry::Viewport size = sides_[0].size.width > 0 ? sides_[0].size : geometry::Viewport{640, 360};
+    const geometry::shadow::Viewport size = sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360};
     renderer::ViewOptions vo;
     vo.lightViewSize = 16;
     vo.overlays = false;
     vo.unwarped = false;
     try {
         std::vector<double> gpu;
-        geometry::ShadowPlan plan;
+        geometry::shadow::ShadowPlan plan;
         for (int i = 0; i < 4; ++i) { // one warm-up frame, three timed
-            plan = geometry::planShadows(cfg.settings, scene.bounds(), scene.camera, scene.light, size);
+            plan = geometry::shadow::planShadows(cfg.settings, scene.bounds(), scene.camera, scene.light, size);
             s.renderer->render(plan, size, vo);
             const renderer::PassTimes& t = s.renderer->waitForTimings();
             if (i > 0 && t.valid) gpu.push_back(t.frame());
         }
         std::sort(gpu.begin(), gpu.end());
-        const renderer::Inspection in = renderer::inspect(*s.renderer, plan, nullptr);
+        const geometry::analysis::Inspection in = renderer::inspect(*s.renderer, plan, nullptr);
         s.results.push_back({cfg.label, cfg.preset, gpu.empty() ? NAN : gpu[gpu.size() / 2], in.aliasing.p95});
     } catch (const std::exception& e) {
         status_ = "trade-off sweep: " + cfg.label + ": " + e.what();

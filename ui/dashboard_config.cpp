@@ -1,7 +1,7 @@
 #include "dashboard_config.h"
 
-#include "geometry/json_file.h"
-#include "geometry/preset.h"
+#include "geometry/io/json_file.h"
+#include "geometry/io/preset.h"
 
 #include <nlohmann/json.hpp>
 
@@ -93,8 +93,8 @@ const json& object(const json& j, const char* key, const std::string& path) {
 json dashboardToJson(const DashboardState& s, const WindowGeometry& window) {
     const ViewSettings& v = s.views;
     return json{
-        {"settings", geometry::settingsToJson(s.settings[0])},
-        {"settings_b", geometry::settingsToJson(s.settings[1])},
+        {"settings", geometry::io::settingsToJson(s.settings[0])},
+        {"settings_b", geometry::io::settingsToJson(s.settings[1])},
         {"views",
          {{"light_split", v.lightSplit},
           {"overlays", v.overlays},
@@ -123,8 +123,8 @@ void dashboardFromJson(const json& j, DashboardState& state, WindowGeometry& win
     DashboardState s = state; // applied only when everything parses
     WindowGeometry w = window;
     try {
-        if (const json* a = member(j, "settings")) s.settings[0] = geometry::settingsFromJson(*a, s.settings[0]);
-        if (const json* b = member(j, "settings_b")) s.settings[1] = geometry::settingsFromJson(*b, s.settings[1]);
+        if (const json* a = member(j, "settings")) s.settings[0] = geometry::io::settingsFromJson(*a, s.settings[0]);
+        if (const json* b = member(j, "settings_b")) s.settings[1] = geometry::io::settingsFromJson(*b, s.settings[1]);
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(std::string("config: ") + e.what());
     }
@@ -163,7 +163,7 @@ std::optional<std::string> loadDashboardConfig(const std::filesystem::path& path
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return std::nullopt;
     try {
-        const json j = geometry::readJsonFile(path.string(), path.string(), 1u << 20, 16);
+        const json j = geometry::io::readJsonFile(path.string(), path.string(), 1u << 20, 16);
         dashboardFromJson(j, state, window);
         return std::nullopt;
     } catch (const std::exception& e) {

@@ -1,7 +1,7 @@
 #pragma once
 // The dashboard's persistent state: the last settings (A and B), the view options and the window
 // layout, in $XDG_CONFIG_HOME/shadowscope/dashboard.json (default ~/.config/shadowscope). The
-// settings use the preset layout (geometry/preset.h), so a config's "settings" object is a preset.
+// settings use the preset layout (geometry/io/preset.h), so a config's "settings" object is a preset.
 #include "dashboard_state.h"
 
 #include <nlohmann/json_fwd.hpp>

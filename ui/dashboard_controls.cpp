@@ -4,8 +4,8 @@
 
 #include "settings_panel.h"
 #include "widget_map.h"
-#include "geometry/light_angle.h"
-#include "geometry/preset.h"
+#include "geometry/scene/light_angle.h"
+#include "geometry/io/preset.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -76,7 +76,7 @@ void Dashboard::drawControlsPanel() {
 
 void Dashboard::drawSceneGroup() {
     if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    const geometry::Scene& scene = scene_.file.scene;
+    const geometry::scene::Scene& scene = scene_.file.scene;
     ImGui::Text("%s: %zu triangles, %zu meshes", scene.name.c_str(), scene.triangleCount(), scene.meshes.size());
     if (ImGui::BeginCombo("scene", scene_.source.c_str())) {
         for (const auto& choice : options_.sceneChoices) {
@@ -118,7 +118,7 @@ void Dashboard::drawSceneGroup() {
 
 void Dashboard::drawCameraLightGroup() {
     if (!ImGui::CollapsingHeader("Camera & light", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    geometry::Camera& cam = scene_.file.scene.camera;
+    geometry::scene::Camera& cam = scene_.file.scene.camera;
     ImGui::TextWrapped("Eye view: drag to orbit, shift+drag or middle-drag to pan, wheel to dolly, right-drag to "
                        "look and WASD/QE to fly.");
     ImGui::SliderFloat("fly speed", &state_.flySpeed, 0.1f, 1000.f, "%.3g units/s", ImGuiSliderFlags_Logarithmic);
@@ -140,7 +140,7 @@ void Dashboard::drawCameraLightGroup() {
     ImGui::SliderFloat("sun elevation", &state_.sun.elevationDeg, -89.f, 90.f, "%.1f°");
     widgetMapRecord("sun.elevation");
     sunGizmo(state_.sun, std::min(ImGui::GetContentRegionAvail().x, 9.f * ImGui::GetFontSize()));
-    const geometry::ShadowPlan& plan = sides_[0].plan;
+    const geometry::shadow::ShadowPlan& plan = sides_[0].plan;
     ImGui::Text("γ = %.2f°  (light–view angle %.2f°)", plan.gammaDeg, plan.lightViewAngleDeg);
     help("γ: the smallest angle between light and view directions (0 = parallel, the dueling frusta when "
          "the light faces the camera)");
@@ -150,7 +150,7 @@ void Dashboard::drawCameraLightGroup() {
     ImGui::SameLine();
     if (ImGui::Button("Set light–view angle")) {
         const glm::vec3 v = cam.target - cam.eye;
-        state_.sun = SunAngles::from(geometry::lightAtViewAngle(v, state_.sun.direction(), targetGammaDeg_));
+        state_.sun = SunAngles::from(geometry::scene::lightAtViewAngle(v, state_.sun.direction(), targetGammaDeg_));
     }
     widgetMapRecord("set_gamma");
     help("Turns the light about the eye so it makes this angle with the view direction (0: from behind the eye, "
@@ -176,7 +176,7 @@ void Dashboard::drawSettingsGroups() {
     } else {
         state_.editing = 0;
     }
-    geometry::ShadowSettings& s = state_.settings[std::clamp(state_.editing, 0, 1)];
+    geometry::shadow::ShadowSettings& s = state_.settings[std::clamp(state_.editing, 0, 1)];
     for (const std::string& group : controlGroups()) {
         if (group == "Scene" || group == "Camera & light" || group == "Views") continue;
         if (!ImGui::CollapsingHeader(group.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
@@ -185,7 +185,7 @@ void Dashboard::drawSettingsGroups() {
         drawSettingsWidgets(s, inGroup, &group, &error);
         if (!error.empty()) status_ = error;
         if (group == "Partitions") {
-            const geometry::ShadowPlan& plan = sides_[std::clamp(state_.editing, 0, 1)].plan;
+            const geometry::shadow::ShadowPlan& plan = sides_[std::clamp(state_.editing, 0, 1)].plan;
             for (size_t i = 0; i < plan.splits.size(); ++i) {
                 const auto& sp = plan.splits[i];
                 ImGui::TextDisabled("split %zu: [%.3g, %.3g]  n' %s  res %d%s", i, sp.near, sp.far,
@@ -223,13 +223,13 @@ void Dashboard::drawViewsGroup() {
 
 void Dashboard::drawPresetsGroup() {
     if (!ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    geometry::ShadowSettings& s = state_.settings[std::clamp(state_.editing, 0, 1)];
+    geometry::shadow::ShadowSettings& s = state_.settings[std::clamp(state_.editing, 0, 1)];
     if (ImGui::BeginCombo("preset", "(choose)")) {
         for (const auto& choice : options_.presetChoices) {
             if (ImGui::Selectable(choice.c_str())) {
                 presetPath_ = choice;
                 try {
-                    s = geometry::loadPreset(choice);
+                    s = geometry::io::loadPreset(choice);
                     status_ = "loaded preset " + choice;
                 } catch (const std::exception& e) {
                     status_ = e.what();
@@ -244,7 +244,7 @@ void Dashboard::drawPresetsGroup() {
     widgetMapRecord("preset.file");
     if (ImGui::Button("Load preset")) {
         try {
-            s = geometry::loadPreset(presetPath_);
+            s = geometry::io::loadPreset(presetPath_);
             status_ = "loaded preset " + presetPath_;
         } catch (const std::exception& e) {
             status_ = e.what(); // the settings stay as they were
@@ -254,7 +254,7 @@ void Dashboard::drawPresetsGroup() {
     ImGui::SameLine();
     if (ImGui::Button("Save preset")) {
         try {
-            geometry::savePreset(presetPath_, s, std::filesystem::path(presetPath_).stem().string());
+            geometry::io::savePreset(presetPath_, s, std::filesystem::path(presetPath_).stem().string());
             status_ = "saved preset " + presetPath_;
         } catch (const std::exception& e) {
             status_ = e.what();

@@ -22,7 +22,7 @@ HeadlessDashboard::HeadlessDashboard(LoadedScene scene, DashboardState state, Da
     target_.ensure(width, height);
 }
 
-renderer::Image HeadlessDashboard::render(int frames) {
+geometry::analysis::Image HeadlessDashboard::render(int frames) {
     imgui_.makeCurrent();
     ImGuiIO& io = ImGui::GetIO();
     for (int i = 0; i < std::max(frames, 1); ++i) {
@@ -37,7 +37,7 @@ renderer::Image HeadlessDashboard::render(int frames) {
         target_.bindAndClear(0.f, 0.f, 0.f);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
-    renderer::Image img = renderer::readTexture(target_.texture(), width_, height_);
+    geometry::analysis::Image img = renderer::readTexture(target_.texture(), width_, height_);
     for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
     renderer::ColorTarget::unbind();
     return img;

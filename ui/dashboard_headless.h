@@ -14,7 +14,7 @@ public:
     HeadlessDashboard(LoadedScene scene, DashboardState state, DashboardOptions options, int width, int height);
     /// Runs `frames` frames (the first lays out and renders the views; later ones settle timings)
     /// and returns the last one's pixels.
-    [[nodiscard]] renderer::Image render(int frames = 3);
+    [[nodiscard]] geometry::analysis::Image render(int frames = 3);
     [[nodiscard]] Dashboard& dashboard() noexcept { return *dashboard_; }
 
 private:

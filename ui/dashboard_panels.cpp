@@ -105,7 +105,7 @@ void Dashboard::probeEye(int side, glm::ivec2 px, ViewPanel panel) {
     p.side = side;
     p.pixel = px;
     if (s.inspection && px.x < s.inspection->width && px.y < s.inspection->height) {
-        const renderer::Inspection& in = *s.inspection;
+        const geometry::analysis::Inspection& in = *s.inspection;
         const size_t i = size_t(px.y) * in.width + px.x;
         p.sky = in.aux[i].z < 0.f;
         p.receiver = in.receiver[i] != 0;
@@ -115,7 +115,7 @@ void Dashboard::probeEye(int side, glm::ivec2 px, ViewPanel panel) {
         p.split = int(in.aux[i].z);
         p.mapDepth = in.aux[i].w;
         p.position = in.positions[i];
-        const geometry::Camera& cam = scene_.file.scene.camera;
+        const geometry::scene::Camera& cam = scene_.file.scene.camera;
         p.viewDepth = glm::dot(p.position - cam.eye, glm::normalize(cam.target - cam.eye));
         if (in.occluded) p.truthShadowed = (*in.occluded)[i] != 0;
     }
@@ -150,7 +150,7 @@ void Dashboard::drawEyePanel(const FrameInput& input) {
                               "Click: pin the pixel in the inspector. Double-click: fit.");
         zoomButtons(state_.imageViews[int(ViewPanel::Eye)], "eye");
         const ImageView& view = state_.imageViews[int(ViewPanel::Eye)];
-        const geometry::Viewport size = sides_[0].size;
+        const geometry::shadow::Viewport size = sides_[0].size;
         const bool clicked = ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f;
         if (mode == CompareMode::SideBySide && sides_[1].renderer) {
             const float half = std::floor((eyeArea_.w - 2.f) * 0.5f);

@@ -5,7 +5,7 @@
 #include "dashboard_layout.h"
 #include "image_view.h"
 #include "orbit_camera.h"
-#include "geometry/settings.h"
+#include "geometry/shadow/settings.h"
 
 #include <array>
 #include <string_view>
@@ -34,7 +34,7 @@ struct ViewSettings {
 };
 
 struct DashboardState {
-    std::array<geometry::ShadowSettings, 2> settings{}; // A, B
+    std::array<geometry::shadow::ShadowSettings, 2> settings{}; // A, B
     int editing = 0;                                     // which set the controls edit (0 = A)
     ViewSettings views;
     OrbitCamera camera;

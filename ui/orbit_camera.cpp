@@ -14,7 +14,7 @@ glm::vec3 offsetDirection(float yawDeg, float pitchDeg) noexcept { // from targe
 }
 } // namespace
 
-OrbitCamera OrbitCamera::from(const geometry::Camera& c) noexcept {
+OrbitCamera OrbitCamera::from(const geometry::scene::Camera& c) noexcept {
     OrbitCamera o;
     o.target = c.target;
     const glm::vec3 d = c.eye - c.target;
@@ -59,7 +59,7 @@ void OrbitCamera::fly(float forward, float right, float up) noexcept {
 
 glm::vec3 OrbitCamera::eye() const noexcept { return target + distance * offsetDirection(yawDeg, pitchDeg); }
 
-void OrbitCamera::applyTo(geometry::Camera& c) const noexcept {
+void OrbitCamera::applyTo(geometry::scene::Camera& c) const noexcept {
     c.target = target;
     c.eye = eye();
 }

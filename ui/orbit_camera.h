@@ -1,7 +1,7 @@
 #pragma once
 // Camera rig for the eye view: orbit (drag), pan, dolly (scroll), and fly (look around the eye,
 // move with WASD/QE); azimuth/elevation light control. Pure math on plain values.
-#include "geometry/scene.h"
+#include "geometry/scene/scene.h"
 
 namespace ui {
 
@@ -9,7 +9,7 @@ struct OrbitCamera {
     glm::vec3 target{0.f};
     float yawDeg = 0.f, pitchDeg = 20.f, distance = 10.f;
 
-    static OrbitCamera from(const geometry::Camera& c) noexcept;
+    static OrbitCamera from(const geometry::scene::Camera& c) noexcept;
     /// Turns about the target.
     void rotate(float dxPixels, float dyPixels) noexcept;
     void zoom(float wheelSteps) noexcept;
@@ -23,7 +23,7 @@ struct OrbitCamera {
     void fly(float forward, float right, float up) noexcept;
     [[nodiscard]] glm::vec3 eye() const noexcept;
     /// Writes eye and target into `c`, keeping its lens settings.
-    void applyTo(geometry::Camera& c) const noexcept;
+    void applyTo(geometry::scene::Camera& c) const noexcept;
 };
 
 struct SunAngles {

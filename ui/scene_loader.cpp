@@ -8,15 +8,15 @@ SceneLoader::~SceneLoader() {
     if (future_.valid()) future_.wait(); // the worker uses this object's progress fields
 }
 
-SceneLoadResult SceneLoader::loadNow(const std::string& nameOrPath, const geometry::Progress& progress) {
+SceneLoadResult SceneLoader::loadNow(const std::string& nameOrPath, const geometry::io::Progress& progress) {
     try {
         LoadedScene loaded;
         loaded.source = nameOrPath;
-        loaded.file = geometry::resolveScene(nameOrPath, [&](float f, std::string_view stage) {
+        loaded.file = geometry::io::resolveScene(nameOrPath, [&](float f, std::string_view stage) {
             if (progress) progress(0.9f * f, stage);
         });
         if (progress) progress(0.9f, "building the ray-tracing BVH");
-        loaded.truth = std::make_unique<geometry::GroundTruth>(loaded.file.scene);
+        loaded.truth = std::make_unique<geometry::analysis::GroundTruth>(loaded.file.scene);
         if (progress) progress(1.f, "done");
         return loaded;
     } catch (const std::exception& e) {

@@ -2,8 +2,8 @@
 // Loads a scene (built-in name, scene file or model file) on a worker thread so the dashboard
 // keeps drawing, with the loader's progress to show; builds the ray-tracing BVH there too. On
 // failure the caller keeps its current scene and shows the one-line reason.
-#include "geometry/ground_truth.h"
-#include "geometry/scene_file.h"
+#include "geometry/analysis/ground_truth.h"
+#include "geometry/io/scene_file.h"
 
 #include <atomic>
 #include <future>
@@ -17,8 +17,8 @@ namespace ui {
 
 struct LoadedScene {
     std::string source; // what was asked for
-    geometry::SceneFile file;
-    std::unique_ptr<geometry::GroundTruth> truth;
+    geometry::io::SceneFile file;
+    std::unique_ptr<geometry::analysis::GroundTruth> truth;
 };
 
 /// The outcome of one load: the scene, or the error message.
@@ -43,7 +43,7 @@ public:
 
     /// Loads on the calling thread (start-up, headless): same steps, same result.
     [[nodiscard]] static SceneLoadResult loadNow(const std::string& nameOrPath,
-                                                 const geometry::Progress& progress = {});
+                                                 const geometry::io::Progress& progress = {});
 
 private:
     std::future<SceneLoadResult> future_;

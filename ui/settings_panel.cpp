@@ -12,11 +12,11 @@
 
 namespace ui {
 
-bool drawSettingsWidgets(geometry::ShadowSettings& settings, bool (*inGroup)(std::string_view, const void*),
+bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGroup)(std::string_view, const void*),
                          const void* ctx, std::string* error) {
-    using Kind = geometry::SettingInfo::Kind;
+    using Kind = geometry::shadow::SettingInfo::Kind;
     bool changed = false;
-    for (const auto& info : geometry::settingsDeclaration()) {
+    for (const auto& info : geometry::shadow::settingsDeclaration()) {
         if (inGroup && !inGroup(info.key, ctx)) continue;
         const std::string label(info.key);
         double value = info.get(settings);
@@ -92,6 +92,6 @@ bool drawSettingsWidgets(geometry::ShadowSettings& settings, bool (*inGroup)(std
     return changed;
 }
 
-bool drawSettingsWidgets(geometry::ShadowSettings& settings) { return drawSettingsWidgets(settings, nullptr, nullptr, nullptr); }
+bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings) { return drawSettingsWidgets(settings, nullptr, nullptr, nullptr); }
 
 } // namespace ui

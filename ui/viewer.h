@@ -2,7 +2,7 @@
 // The interactive window: the dashboard in a GLFW window, with the config file (last settings
 // and layout) read at start and written when they change and at exit.
 #include "dashboard.h"
-#include "geometry/settings.h"
+#include "geometry/shadow/settings.h"
 
 #include <filesystem>
 #include <optional>
@@ -12,7 +12,7 @@
 namespace ui {
 
 struct ViewerOptions {
-    std::optional<geometry::ShadowSettings> settings; // from the command line; else the config's last settings
+    std::optional<geometry::shadow::ShadowSettings> settings; // from the command line; else the config's last settings
     std::filesystem::path screenshotDir = "screenshots";
     std::filesystem::path configPath;                 // empty: configDirectory()/dashboard.json
     bool persist = true;                              // read and write the config file

@@ -1,6 +1,6 @@
 // Fuzzes OBJ / STL / OFF / PLY loading and cleanup: the first byte picks the format.
 #include "fuzz_input.h"
-#include "geometry/model_loader.h"
+#include "geometry/io/model_loader.h"
 
 #include <exception>
 
@@ -9,7 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     static const char* const kExtensions[] = {".obj", ".stl", ".off", ".ply"};
     const std::string path = fuzz::writeTemp(data + 1, size - 1, kExtensions[data[0] % 4]);
     try {
-        (void)geometry::loadModel(path);
+        (void)geometry::io::loadModel(path);
     } catch (const std::exception&) {
         // A clear error is the expected outcome for bad input; crashes and hangs are the bugs.
     }

@@ -1,0 +1,394 @@
+#include "geometry/analysis/ground_truth.h"
+
+#include <embree3/rtcore.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace geometry::analysis {
+namespace {
+
+// ---- Tuning ---------------------------------------------------------------------------------
+
+constexpr int kLanes = 16;               // rtcOccluded16 / rtcIntersect16: AVX-512 width
+constexpr int kTileSide = 4;             // 4×4 pixel tiles for primary rays
+constexpr size_t kPacketsPerTask = 16;   // 256 rays per grab from the shared work counter
+constexpr float kRelativeEpsilon = 1e-5f;
+constexpr float kMinEpsilon = 1e-6f;
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr size_t kNoPoint = std::numeric_limits<size_t>::max();
+
+// ---- Small helpers --------------------------------------------------------------------------
+
+bool finite(const glm::vec3& v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+float maxAbs(const glm::vec3& v) noexcept { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+int resolveThreads(int threads) noexcept {
+    if (threads > 0) return threads;
+    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+const char* errorName(RTCError code) noexcept {
+    switch (code) {
+    case RTC_ERROR_NONE: return "no error";
+    case RTC_ERROR_UNKNOWN: return "unknown error";
+    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
+    case RTC_ERROR_CANCELLED: return "cancelled";
+    }
+    return "unrecognized error";
+}
+
+/// Runs fn(task) for task in [0, tasks) on `threads` threads (the caller is one of them). Tasks
+/// are handed out through an atomic counter, so the sky-heavy and geometry-heavy parts of an
+/// image balance themselves; results are independent of who runs what.
+template <class Fn>
+void parallelFor(size_t tasks, int threads, const Fn& fn) {
+    std::atomic<size_t> next{0};
+    const auto worker = [&] {
+        for (size_t t = next.fetch_add(1, std::memory_order_relaxed); t < tasks;
+             t = next.fetch_add(1, std::memory_order_relaxed))
+            fn(t);
+    };
+    const size_t helpers = std::min(tasks, static_cast<size_t>(threads)) - (tasks > 0 ? 1 : 0);
+    std::vector<std::jthread> pool;
+    pool.reserve(helpers);
+    for (size_t i = 0; i < helpers; ++i) pool.emplace_back(worker);
+    worker();
+}
+
+// ---- Packet layouts: which point each lane of packet k traces -------------------------------
+
+using Lanes = std::array<size_t, kLanes>;
+
+/// Packet k holds points [16k, 16k + 16): the order the caller gave. For shadow rays of an image
+/// these 1×16 strips traced as fast as 4×4, 8×2 or 2×8 tiles (within 5 %), so occluded() needs
+/// no image width.
+struct RunLayout {
+    size_t count;
+    [[nodiscard]] size_t packets() const noexcept { return (count + kLanes - 1) / kLanes; }
+    [[nodiscard]] Lanes lanes(size_t k) const noexcept {
+        Lanes out;
+        for (size_t i = 0; i < kLanes; ++i) {
+            const size_t p = k * kLanes + i;
+            out[i] = p < count ? p : kNoPoint;
+        }
+        return out;
+    }
+};
+
+/// Packet k holds a 4×4 tile of a row-major image `width` wide; tiles go row by row. For primary
+/// rays, which share their origin, a square tile keeps the directions of a packet closest.
+struct TileLayout {
+    size_t count;
+    size_t width;
+    [[nodiscard]] size_t tilesX() const noexcept { return (width + kTileSide - 1) / kTileSide; }
+    [[nodiscard]] size_t tilesY() const noexcept {
+        const size_t rows = (count + width - 1) / width;
+        return (rows + kTileSide - 1) / kTileSide;
+    }
+    [[nodiscard]] size_t packets() const noexcept { return tilesX() * tilesY(); }
+    [[nodiscard]] Lanes lanes(size_t k) const noexcept {
+        const size_t x0 = (k % tilesX()) * kTileSide, y0 = (k / tilesX()) * kTileSide;
+        Lanes out;
+        for (size_t i = 0; i < kLanes; ++i) {
+            const size_t x = x0 + i % kTileSide, y = y0 + i / kTileSide;
+            const size_t p = y * width + x;
+            out[i] = x < width && p < count ? p : kNoPoint;
+        }
+        return out;
+    }
+};
+
+/// Calls fn(packetLanes) for every packet of `layout`, in parallel.
+template <class Layout, class Fn>
+void forEachPacket(const Layout& layout, int threads, const Fn& fn) {
+    const size_t packets = layout.packets();
+    const size_t tasks = (packets + kPacketsPerTask - 1) / kPacketsPerTask;
+    parallelFor(tasks, resolveThreads(threads), [&](size_t task) {
+        const size_t end = std::min(packets, (task + 1) * kPacketsPerTask);
+        for (size_t k = task * kPacketsPerTask; k < end; ++k) fn(layout.lanes(k));
+    });
+}
+
+RTCIntersectContext coherentContext() noexcept {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT; // packets hold neighbouring pixels: ~20 % faster
+    return ctx;
+}
+
+/// A lane Embree ignores; filled anyway so no uninitialized or NaN data reaches its SIMD loads.
+template <class Packet>
+void setIdleLane(Packet& ray, int lane) noexcept {
+    ray.org_x[lane] = ray.org_y[lane] = ray.org_z[lane] = 0.f;
+    ray.dir_x[lane] = ray.dir_z[lane] = 0.f;
+    ray.dir_y[lane] = 1.f;
+    ray.tnear[lane] = 0.f;
+    ray.tfar[lane] = 0.f;
+    ray.time[lane] = 0.f;
+    ray.mask[lane] = ~0u;
+    ray.id[lane] = 0;
+    ray.flags[lane] = 0;
+}
+
+template <class Packet>
+void setLane(Packet& ray, int lane, const glm::vec3& org, const glm::vec3& dir, float tnear, float tfar) noexcept {
+    ray.org_x[lane] = org.x;
+    ray.org_y[lane] = org.y;
+    ray.org_z[lane] = org.z;
+    ray.dir_x[lane] = dir.x;
+    ray.dir_y[lane] = dir.y;
+    ray.dir_z[lane] = dir.z;
+    ray.tnear[lane] = tnear;
+    ray.tfar[lane] = tfar;
+    ray.time[lane] = 0.f;
+    ray.mask[lane] = ~0u; // the device supports ray masks: a zero mask would hit nothing
+    ray.id[lane] = static_cast<unsigned>(lane);
+    ray.flags[lane] = 0;
+}
+
+void checkInputs(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, const glm::vec3& l) {
+    if (points.size() != normals.size())
+        throw std::invalid_argument("GroundTruth::occluded: " + std::to_string(points.size()) + " points but " +
+                                    std::to_string(normals.size()) + " normals");
+    if (!finite(l) || !(glm::length(l) > 0.f))
+        throw std::invalid_argument("GroundTruth::occluded: light direction must be finite and non-zero");
+}
+
+} // namespace
+
+// ---- Impl: device, scene and the error channel ----------------------------------------------
+
+struct GroundTruth::Impl {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    size_t triangles = 0;
+    float epsilonScale = 0.f; // 0.01 · scene diagonal: the floor of ‖p‖∞ in epsilon()
+
+    std::mutex errorMutex;
+    std::string error; // first Embree error since the last check
+
+    Impl() = default;
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
+    ~Impl() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    /// Embree calls this instead of aborting; it must not throw through Embree's C API, so the
+    /// message is kept and throwIfError() raises it on our side.
+    static void onError(void* user, RTCError code, const char* message) {
+        auto* self = static_cast<Impl*>(user);
+        const std::lock_guard lock(self->errorMutex);
+        if (!self->error.empty()) return;
+        self->error = std::string(errorName(code)) + (message && *message ? std::string(": ") + message : "");
+        std::replace(self->error.begin(), self->error.end(), '\n', ' ');
+    }
+
+    void throwIfError(const char* during) {
+        std::string message;
+        {
+            const std::lock_guard lock(errorMutex);
+            message.swap(error);
+        }
+        const RTCError code = rtcGetDeviceError(device); // also clears Embree's own error state
+        if (message.empty() && code != RTC_ERROR_NONE) message = errorName(code);
+        if (!message.empty()) throw std::runtime_error(std::string("Embree error ") + during + ": " + message);
+    }
+
+    void createDevice() {
+        device = rtcNewDevice(nullptr);
+        if (!device)
+            throw std::runtime_error(std::string("Embree error creating the device: ") +
+                                     errorName(rtcGetDeviceError(nullptr)));
+        rtcSetDeviceErrorFunction(device, &Impl::onError, this);
+    }
+
+    /// One Embree triangle geometry per mesh, vertices transformed to world space. Embree owns
+    /// the buffers (rtcSetNewGeometryBuffer pads them as its SIMD loads require), so the Scene
+    /// need not outlive us.
+    void addMesh(const scene::Mesh& mesh, scene::Aabb& bounds) {
+        const size_t tris = mesh.triangleCount();
+        if (tris == 0 || mesh.positions.empty()) return;
+        for (size_t i = 0; i < tris * 3; ++i)
+            if (mesh.indices[i] >= mesh.positions.size())
+                throw std::runtime_error("GroundTruth: mesh '" + mesh.name + "' has index " +
+                                         std::to_string(mesh.indices[i]) + " out of range (" +
+                                         std::to_string(mesh.positions.size()) + " vertices)");
+
+        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        throwIfError("creating a triangle geometry");
+        struct Release {
+            RTCGeometry g;
+            ~Release() { rtcReleaseGeometry(g); } // the scene keeps its own reference
+        } release{geom};
+
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                     3 * sizeof(float), mesh.positions.size()));
+        auto* indices = static_cast<uint32_t*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), tris));
+        throwIfError(("allocating buffers for mesh '" + mesh.name + "'").c_str());
+        if (!vertices || !indices) throw std::runtime_error("Embree error: no buffers for mesh '" + mesh.name + "'");
+
+        for (size_t i = 0; i < mesh.positions.size(); ++i) {
+            const glm::vec3 w(mesh.transform * glm::vec4(mesh.positions[i], 1.f));
+            vertices[3 * i] = w.x;
+            vertices[3 * i + 1] = w.y;
+            vertices[3 * i + 2] = w.z;
+            if (finite(w)) bounds.add(w);
+        }
+        std::copy_n(mesh.indices.data(), tris * 3, indices);
+        rtcCommitGeometry(geom);
+        rtcAttachGeometry(scene, geom);
+        throwIfError(("adding mesh '" + mesh.name + "'").c_str());
+        triangles += tris;
+    }
+
+    void build(const scene::Scene& input) {
+        createDevice();
+        scene = rtcNewScene(device);
+        throwIfError("creating the scene");
+        // Measured on the 250k platform, 1280×720, 2 cores: HIGH (spatial splits) doubles the
+        // one-off build (100 ms vs 50) and traces shadow rays no faster, but primary rays 1.5×
+        // faster (22 ms vs 33). ROBUST traces ~40 % slower and changed no pixel of that view.
+        rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+        rtcSetSceneFlags(scene, RTC_SCENE_FLAG_NONE);
+        scene::Aabb bounds;
+        for (const scene::Mesh& mesh : input.meshes) addMesh(mesh, bounds);
+        rtcCommitScene(scene);
+        throwIfError("building the BVH");
+        epsilonScale = 0.01f * glm::length(bounds.extent());
+    }
+};
+
+// ---- GroundTruth ----------------------------------------------------------------------------
+
+size_t PrimaryHits::hitCount() const noexcept {
+    return static_cast<size_t>(std::count_if(points.begin(), points.end(), [](const glm::vec3& p) { return finite(p); }));
+}
+
+GroundTruth::GroundTruth(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) { impl_->build(scene); }
+GroundTruth::~GroundTruth() = default;
+GroundTruth::GroundTruth(GroundTruth&&) noexcept = default;
+GroundTruth& GroundTruth::operator=(GroundTruth&&) noexcept = default;
+
+size_t GroundTruth::triangleCount() const noexcept { return impl_ ? impl_->triangles : 0; }
+
+float GroundTruth::epsilon(const glm::vec3& p) const noexcept {
+    const float scale = impl_ ? impl_->epsilonScale : 0.f;
+    return std::max(kMinEpsilon, kRelativeEpsilon * std::max(maxAbs(p), scale));
+}
+
+namespace {
+
+/// One rtcOccluded16 per packet: 2.6× faster than rtcOccluded1 ray by ray on AVX-512.
+std::vector<uint8_t> traceOccluded(const GroundTruth& truth, RTCScene scene, const RunLayout& layout,
+                                   const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
+                                   const glm::vec3& l, int threads) {
+    std::vector<uint8_t> result(points.size(), 0);
+    const glm::vec3 toLight = -glm::normalize(l);
+    forEachPacket(layout, threads, [&](const Lanes& lanes) {
+        RTCRay16 ray;
+        alignas(64) std::array<int, kLanes> valid{};
+        bool any = false;
+        for (int i = 0; i < kLanes; ++i) {
+            const size_t idx = lanes[i];
+            const glm::vec3 p = idx != kNoPoint ? points[idx] : glm::vec3(0.f);
+            const glm::vec3 n = idx != kNoPoint ? normals[idx] : glm::vec3(0.f);
+            const float len = glm::length(n);
+            if (!finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len)) {
+                setIdleLane(ray, i);
+                continue;
+            }
+            const float eps = truth.epsilon(p);
+            const glm::vec3 side = glm::dot(n, toLight) > 0.f ? n : -n; // the light's side of the surface
+            setLane(ray, i, p + side * (eps / len), toLight, eps, kInf);
+            valid[i] = -1;
+            any = true;
+        }
+        if (!any) return;
+        RTCIntersectContext ctx = coherentContext();
+        rtcOccluded16(valid.data(), scene, &ctx, &ray);
+        for (int i = 0; i < kLanes; ++i)
+            if (valid[i] && ray.tfar[i] < 0.f) result[lanes[i]] = 1; // Embree sets tfar = −inf on a hit
+    });
+    return result;
+}
+
+} // namespace
+
+std::vector<uint8_t> GroundTruth::occluded(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
+                                           const glm::vec3& l, int threads) const {
+    checkInputs(points, normals, l);
+    if (!impl_) throw std::logic_error("GroundTruth::occluded on a moved-from object");
+    auto result = traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads);
+    impl_->throwIfError("tracing shadow rays");
+    return result;
+}
+
+PrimaryHits GroundTruth::primaryHits(const scene::Camera& camera, int width, int height, int threads) const {
+    if (width < 1 || height < 1) throw std::invalid_argument("GroundTruth::primaryHits: image size must be positive");
+    if (!impl_) throw std::logic_error("GroundTruth::primaryHits on a moved-from object");
+    PrimaryHits hits;
+    hits.width = width;
+    hits.height = height;
+    const size_t count = static_cast<size_t>(width) * static_cast<size_t>(height);
+    hits.points.assign(count, glm::vec3(std::numeric_limits<float>::quiet_NaN()));
+    hits.normals.assign(count, glm::vec3(0.f));
+
+    // Camera basis from the same view matrix the renderer uses. The direction has a unit
+    // forward component, so the ray parameter t is the view depth and [near, far] clips as GL.
+    const glm::mat4 toWorld = glm::inverse(camera.view());
+    const glm::vec3 right(toWorld[0]), up(toWorld[1]), forward(-glm::vec3(toWorld[2]));
+    const glm::vec3 eye(toWorld[3]);
+    const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const auto direction = [&](size_t pixel) {
+        const float x = (static_cast<float>(pixel % width) + 0.5f) / static_cast<float>(width) * 2.f - 1.f;
+        const float y = 1.f - (static_cast<float>(pixel / width) + 0.5f) / static_cast<float>(height) * 2.f;
+        return forward + (x * tanHalf * aspect) * right + (y * tanHalf) * up;
+    };
+
+    forEachPacket(TileLayout{count, static_cast<size_t>(width)}, threads, [&](const Lanes& lanes) {
+        RTCRayHit16 rh;
+        alignas(64) std::array<int, kLanes> valid{};
+        for (int i = 0; i < kLanes; ++i) {
+            if (lanes[i] == kNoPoint) {
+                setIdleLane(rh.ray, i);
+                continue;
+            }
+            setLane(rh.ray, i, eye, direction(lanes[i]), camera.near, camera.far);
+            rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID; // as Embree requires
+            valid[i] = -1;
+        }
+        RTCIntersectContext ctx = coherentContext();
+        rtcIntersect16(valid.data(), impl_->scene, &ctx, &rh);
+        for (int i = 0; i < kLanes; ++i) {
+            if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+            const glm::vec3 dir = direction(lanes[i]);
+            glm::vec3 n(rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]);
+            const float len = glm::length(n);
+            if (!(len > 0.f) || !std::isfinite(len)) continue; // degenerate triangle: treat as unseen
+            n /= len;
+            hits.points[lanes[i]] = eye + rh.ray.tfar[i] * dir;
+            hits.normals[lanes[i]] = glm::dot(n, dir) > 0.f ? -n : n; // face the camera
+        }
+    });
+    impl_->throwIfError("tracing primary rays");
+    return hits;
+}
+
+} // namespace geometry::analysis

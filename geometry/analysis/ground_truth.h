@@ -1,0 +1,77 @@
+#pragma once
+// Ground truth for shadow inspection (DESIGN §4): for each visible receiver point, does a ray
+// from it towards the directional light hit any triangle of the scene? Traced with Embree 3 on
+// the CPU, so it is independent of the GL renderer whose shadows it judges. No GL, no ImGui.
+#include "geometry/scene/scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace geometry::analysis {
+
+/// What a camera sees: one entry per pixel, row-major, top row first (image order).
+struct PrimaryHits {
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec3> points;  // world space; NaN where the pixel sees nothing (sky)
+    std::vector<glm::vec3> normals; // unit geometric normal facing the camera; (0,0,0) on a miss
+
+    [[nodiscard]] size_t hitCount() const noexcept;
+};
+
+class GroundTruth {
+public:
+    /// Builds a BVH over all meshes' triangles in world space (Mesh::transform applied).
+    /// Throws std::runtime_error (one line) on Embree errors or out-of-range indices. An empty
+    /// scene is valid: nothing occludes.
+    explicit GroundTruth(const scene::Scene& scene);
+    ~GroundTruth();
+    GroundTruth(GroundTruth&&) noexcept;
+    GroundTruth& operator=(GroundTruth&&) noexcept;
+    GroundTruth(const GroundTruth&) = delete;
+    GroundTruth& operator=(const GroundTruth&) = delete;
+
+    /// For each receiver point p (world space) with its unit geometric normal n (facing the
+    /// viewer; it may face away from the light), 1 if the ray from p towards the light
+    /// (direction −l, to infinity) hits any triangle, else 0.
+    ///
+    /// Self-intersection: the origin moves by epsilon(p) along the side of the surface that faces
+    /// the light (n if n·(−l) > 0, else −n) and hits closer than epsilon(p) are ignored. So a
+    /// surface facing away from the light is judged by what lies behind it: the far side of a
+    /// solid pole is occluded by the pole itself, the back of an open quad is not.
+    ///
+    /// Points or normals with NaN/Inf, or a zero normal, give 0 and are never traced. Throws
+    /// std::invalid_argument if points.size() != normals.size() or l is zero or not finite.
+    /// threads = 0 means std::thread::hardware_concurrency(); the result does not depend on it.
+    ///
+    /// Rays go in packets of 16 consecutive points, so keep neighbours together: image order
+    /// (row-major) is good, a shuffled order is slower but gives the same result.
+    [[nodiscard]] std::vector<uint8_t> occluded(const std::vector<glm::vec3>& points,
+                                                const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                int threads = 0) const;
+
+    /// Casts one ray per pixel centre of a width × height image from `camera` (aspect
+    /// width/height, as Camera::projection) and returns the nearest hits between the near and far
+    /// planes (view depth, as GL clips). Throws std::invalid_argument for a non-positive size.
+    [[nodiscard]] PrimaryHits primaryHits(const scene::Camera& camera, int width, int height, int threads = 0) const;
+
+    /// The self-intersection offset used for a receiver at p, in scene units:
+    /// max(1e-6, 1e-5 · max(‖p‖∞, 0.01 · scene diagonal)). Why relative to ‖p‖∞ rather than to
+    /// the diagonal alone: the float error of a point (from rasterization or ray casting) grows
+    /// with its coordinates, ~1e-7·‖p‖∞ per rounding, so 1e-5·‖p‖∞ leaves a ~100× margin. A pure
+    /// 1e-5 · diagonal would be 3.4 cm on the platform (its 2.4 km sea sets the diagonal): more
+    /// than a 2.4 cm grating bar, letting rays from a bar's shaded side tunnel through it, and
+    /// hiding contact shadows. The 0.01 · diagonal floor covers points near the origin seen from
+    /// far away (their error follows the camera's coordinates, not their own).
+    [[nodiscard]] float epsilon(const glm::vec3& p) const noexcept;
+
+    [[nodiscard]] size_t triangleCount() const noexcept;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace geometry::analysis

@@ -1,0 +1,50 @@
+#pragma once
+// Everything the inspection views and metrics need from one rendered frame: per-pixel shadow
+// factor, map coordinates, aliasing error, receivers, optional ray-traced truth, and the
+// statistics over them. Built from the renderer's read-backs (renderer/inspection.h).
+#include "geometry/analysis/metrics.h"
+#include "geometry/shadow/shadow_plan.h"
+
+#include <glm/glm.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace geometry::analysis {
+
+class GroundTruth;
+
+struct Inspection {
+    int width = 0, height = 0;
+    std::vector<float> shadow;          // s per pixel
+    std::vector<float> m;               // aliasing error per pixel (DESIGN §4)
+    std::vector<glm::vec4> aux;         // map texel u, v, split, map depth
+    std::vector<glm::vec3> positions;   // world
+    std::vector<glm::vec3> normals;     // facing normal
+    std::vector<uint8_t> receiver;      // visible and facing the light (N·L > 0)
+    std::optional<std::vector<uint8_t>> occluded; // ground truth, 1 = shadowed
+
+    AliasingStats aliasing;
+    std::optional<TruthStats> truth;
+    std::vector<double> utilization;    // per split
+};
+
+/// The eye pass's per-pixel outputs, read back once (all top row first, width·height values).
+struct FrameReadback {
+    int width = 0;
+    std::vector<float> shadow;         // s
+    std::vector<glm::vec4> aux;        // map texel u, v, split (−1 sky), map depth
+    std::vector<glm::vec4> positions;  // world position, m
+    std::vector<glm::vec4> normals;    // facing normal, N·L
+    std::vector<int> resolutions;      // per split, the map resolution actually drawn
+};
+
+/// Splits the read-back into per-pixel fields and computes the statistics; `truth` adds the
+/// ground-truth verdicts (light direction l).
+[[nodiscard]] Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundTruth* truth);
+
+/// metrics.json fields: aliasing{mean,p50,p95,max,undersampled}, truth{false_shadow,false_lit,mean_abs}.
+void addInspectionMetrics(nlohmann::json& j, const Inspection& in);
+
+} // namespace geometry::analysis

@@ -1,0 +1,30 @@
+#pragma once
+// The inspection views as images: split colouring, texel grid, aliasing and truth heatmaps.
+#include "geometry/analysis/image.h"
+#include "geometry/analysis/inspection.h"
+
+#include <string>
+#include <vector>
+
+namespace geometry::analysis {
+
+/// The eye image tinted by the split each pixel uses, with a legend of the splits' ranges.
+[[nodiscard]] Image splitsView(const Image& eye, const Inspection& in,
+                                         const geometry::shadow::ShadowPlan& plan);
+/// The shadow map's texel grid (every `every` texels) drawn over the receivers of the eye image.
+[[nodiscard]] Image texelsView(const Image& eye, const Inspection& in, int every = 1);
+/// log2 m heatmap with a legend (DESIGN §4); `blend` > 0 mixes the eye image in (0 heatmap alone).
+[[nodiscard]] Image aliasingView(const Inspection& in, const Image& eye, float blend = 0.f);
+/// False shadow red, false lit blue, over the grey scene; needs in.occluded.
+[[nodiscard]] Image truthView(const Inspection& in, const Image& eye, float blend = 0.f);
+
+/// A/B comparison (Barroso Fig 8): log2(m_A / m_B) on the diverging scale where both frames see a
+/// receiver (red: A undersamples more than B; blue: A is finer), grey elsewhere, with a legend.
+/// Throws std::invalid_argument when the two inspections differ in size.
+[[nodiscard]] Image differenceView(const Inspection& a, const Inspection& b);
+
+/// Tints, in a light-view image of split `split` (resolution `res` texels), every texel that some
+/// visible receiver pixel samples (DESIGN §4 texel utilization, shown).
+void tintSampledTexels(Image& light, const Inspection& in, int split, int res);
+
+} // namespace geometry::analysis

@@ -1,0 +1,733 @@
+// glTF 2.0 loading (see gltf_loader.h). tinygltf parses the JSON / GLB container and resolves
+// buffers; everything it leaves unchecked (accessor ranges, component types, index values, the
+// shape of the node graph) is validated here before any element is read.
+#include "geometry/io/gltf_loader.h"
+
+#include "geometry/scene/chunking.h"
+
+#include <tiny_gltf.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <new>
+#include <optional>
+#include <stdexcept>
+
+namespace geometry::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Real CAD assemblies nest a few levels; 64 leaves headroom and bounds the recursion.
+constexpr int kMaxNodeDepth = 64;
+// A node may have several parents (instancing), so a tiny acyclic file can still describe
+// 2^depth instances: cap the instances visited and the triangles they expand to.
+constexpr size_t kMaxNodeInstances = size_t{1} << 18;
+constexpr size_t kMaxInstancedTriangles = size_t{1} << 27;
+// tinygltf's LoadBinaryFromMemory / LoadASCIIFromString take 32-bit sizes.
+constexpr uintmax_t kMaxFileBytes = std::numeric_limits<uint32_t>::max();
+// tinygltf quotes whole data URIs in some messages; keep ours readable.
+constexpr size_t kMaxMessageChars = 400;
+constexpr glm::vec3 kDefaultColor{0.8f};
+
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "positions are copied as packed floats");
+
+/// A problem with the file's content; loadGltf() prefixes the path.
+struct GltfError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// tinygltf's messages span lines; the loader's contract is one line.
+std::string oneLine(std::string_view text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '\n' || c == '\r') {
+            if (!out.empty() && !out.ends_with("; ")) out += "; ";
+        } else {
+            out += c;
+        }
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    if (out.size() > kMaxMessageChars) out = out.substr(0, kMaxMessageChars) + "...";
+    return out;
+}
+
+std::string str(size_t n) { return std::to_string(n); }
+
+// ---------------------------------------------------------------------------------------------
+// Files
+
+/// Reads a regular file whole. Devices, FIFOs and directories are refused, so a buffer URI
+/// naming /dev/zero or a pipe cannot hang the loader or grow without bound.
+bool readRegularFile(const std::string& path, std::vector<unsigned char>& out, std::string& problem) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) {
+        problem = fs::exists(path, ec) ? "not a regular file" : "file not found";
+        return false;
+    }
+    const uintmax_t size = fs::file_size(path, ec);
+    if (ec) {
+        problem = "cannot determine the file size";
+        return false;
+    }
+    if (size > kMaxFileBytes) {
+        problem = "file larger than 4 GiB";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out.resize(static_cast<size_t>(size));
+    if (!in || !in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(size))) {
+        problem = "cannot read the file";
+        return false;
+    }
+    return true;
+}
+
+bool fsFileExists(const std::string& path, void*) {
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+
+// URIs come from the file: never expand them (no ~, no environment variables, no shell).
+std::string fsExpandPath(const std::string& path, void*) { return path; }
+
+bool fsReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void*) {
+    std::string problem;
+    if (readRegularFile(path, *out, problem)) return true;
+    if (err) *err += "'" + path + "': " + problem + "\n";
+    return false;
+}
+
+bool fsWriteWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&,
+                      void*) {
+    if (err) *err += "writing is disabled\n";
+    return false;
+}
+
+// Textures are irrelevant to shadows; accepting them undecoded keeps stb_image (and its attack
+// surface, and its memory) out of the loader.
+bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                 const unsigned char*, int, void*) {
+    return true;
+}
+
+/// JSON glTF starts with '{' after an optional BOM and whitespace; anything else is not glTF,
+/// and saying so beats relaying a JSON parser's column number.
+bool looksLikeJson(const std::vector<unsigned char>& bytes) {
+    size_t i = 0;
+    if (bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF) i = 3;
+    while (i < bytes.size() && std::isspace(bytes[i])) ++i;
+    return i < bytes.size() && bytes[i] == '{';
+}
+
+/// nlohmann's tree and tinygltf's Value conversion recurse once per nesting level, so a file of
+/// nested brackets would overflow the stack; real glTF nests about ten levels deep.
+constexpr int kMaxJsonNesting = 256;
+
+bool nestingWithinLimit(std::string_view json) {
+    int depth = 0;
+    bool inString = false, escaped = false;
+    for (char c : json) {
+        if (inString) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonNesting) return false;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return true;
+}
+
+/// The JSON text: the whole file, or a GLB's first chunk (clamped to the file; tinygltf rejects
+/// inconsistent GLB headers itself).
+std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary) {
+    const auto* chars = reinterpret_cast<const char*>(bytes.data());
+    if (!binary) return {chars, bytes.size()};
+    if (bytes.size() < 20) return {};
+    uint32_t length = 0;
+    for (int i = 3; i >= 0; --i) length = length << 8 | bytes[size_t(12 + i)];
+    return {chars + 20, std::min<size_t>(length, bytes.size() - 20)};
+}
+
+struct Parsed {
+    tinygltf::Model model;
+    bool binary = false;
+    std::vector<std::string> notes; // tinygltf's warnings on a successful load
+};
+
+Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
+    Parsed parsed;
+    // The GLB magic decides, not the extension: misnamed files are common.
+    parsed.binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    if (!parsed.binary && !looksLikeJson(bytes))
+        throw GltfError("neither glTF JSON nor GLB (expected '{' or the 'glTF' magic)");
+    if (!nestingWithinLimit(jsonText(bytes, parsed.binary)))
+        throw GltfError("JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");
+
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(ignoreImage, nullptr);
+    loader.SetFsCallbacks({fsFileExists, fsExpandPath, fsReadWholeFile, fsWriteWholeFile, nullptr});
+    const std::string baseDir = fs::path(path).parent_path().string();
+    const auto size = static_cast<unsigned int>(bytes.size());
+    std::string err, warn;
+    bool ok = false;
+    try {
+        ok = parsed.binary
+                 ? loader.LoadBinaryFromMemory(&parsed.model, &err, &warn, bytes.data(), size, baseDir)
+                 : loader.LoadASCIIFromString(&parsed.model, &err, &warn,
+                                              reinterpret_cast<const char*>(bytes.data()), size,
+                                              baseDir);
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw GltfError(std::string("glTF parser: ") + e.what());
+    }
+    if (!ok) {
+        const std::string message = oneLine(err + "\n" + warn);
+        throw GltfError(message.empty() ? "tinygltf could not load the file" : message);
+    }
+    for (const std::string* text : {&err, &warn})
+        if (const std::string line = oneLine(*text); !line.empty()) parsed.notes.push_back(line);
+    return parsed;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Node hierarchy
+
+void requireFinite(const std::vector<double>& values, const std::string& what) {
+    for (double v : values)
+        if (!std::isfinite(v)) throw GltfError(what + " has a non-finite value");
+}
+
+/// The node's local matrix: `matrix` if present, else T * R * S (glTF's order).
+glm::mat4 localMatrix(const tinygltf::Node& node, int index) {
+    const std::string name = "node " + std::to_string(index);
+    auto requireSize = [&](const std::vector<double>& v, size_t n, const char* field) {
+        if (!v.empty() && v.size() != n)
+            throw GltfError(name + ": " + field + " needs " + str(n) + " numbers, has " + str(v.size()));
+        requireFinite(v, name + " " + field);
+    };
+    requireSize(node.matrix, 16, "matrix");
+    requireSize(node.translation, 3, "translation");
+    requireSize(node.rotation, 4, "rotation");
+    requireSize(node.scale, 3, "scale");
+
+    glm::dmat4 m(1.0);
+    if (!node.matrix.empty()) {
+        // glTF stores matrices column-major, as glm indexes them.
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) m[c][r] = node.matrix[size_t(c * 4 + r)];
+        return glm::mat4(m);
+    }
+    if (!node.translation.empty())
+        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+    if (!node.rotation.empty()) {
+        // glTF orders quaternions (x, y, z, w); glm's constructor takes w first.
+        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        m *= glm::mat4_cast(glm::normalize(q));
+    }
+    if (!node.scale.empty()) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    return glm::mat4(m);
+}
+
+bool isFinite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+struct Instance {
+    int mesh = -1;
+    glm::mat4 world{1.f};
+};
+
+/// Depth-first walk composing world matrices. `onPath` marks the current ancestors, so a node
+/// that is its own ancestor is reported instead of recursing forever. Local matrices are
+/// validated once per node and cached: instancing may visit a node many times.
+class NodeWalker {
+public:
+    explicit NodeWalker(const tinygltf::Model& model)
+        : model_(model), onPath_(model.nodes.size(), 0), local_(model.nodes.size()) {}
+
+    void walk(int node, const glm::mat4& parent, int depth) {
+        if (node < 0 || size_t(node) >= model_.nodes.size()) throw GltfError(nodeName(node) + " does not exist");
+        if (onPath_[size_t(node)])
+            throw GltfError(nodeName(node) + " is its own ancestor (cycle in the node hierarchy)");
+        if (depth >= kMaxNodeDepth)
+            throw GltfError("node hierarchy deeper than " + std::to_string(kMaxNodeDepth) + " levels");
+        if (++visits_ > kMaxNodeInstances)
+            throw GltfError("node hierarchy expands to more than " + str(kMaxNodeInstances) + " node instances");
+
+        const tinygltf::Node& n = model_.nodes[size_t(node)];
+        const glm::mat4 world = parent * local(node);
+        if (!isFinite(world)) throw GltfError(nodeName(node) + ": world transform is not finite");
+        if (n.mesh != -1) {
+            if (n.mesh < 0 || size_t(n.mesh) >= model_.meshes.size())
+                throw GltfError(nodeName(node) + " references missing mesh " + std::to_string(n.mesh));
+            instances_.push_back({n.mesh, world});
+        }
+        onPath_[size_t(node)] = 1;
+        for (int child : n.children) walk(child, world, depth + 1);
+        onPath_[size_t(node)] = 0;
+    }
+
+    [[nodiscard]] std::vector<Instance> take() { return std::move(instances_); }
+
+private:
+    static std::string nodeName(int node) { return "node " + std::to_string(node); }
+
+    const glm::mat4& local(int node) {
+        std::optional<glm::mat4>& m = local_[size_t(node)];
+        if (!m) m = localMatrix(model_.nodes[size_t(node)], node);
+        return *m;
+    }
+
+    const tinygltf::Model& model_;
+    std::vector<char> onPath_;
+    std::vector<std::optional<glm::mat4>> local_;
+    size_t visits_ = 0;
+    std::vector<Instance> instances_;
+};
+
+/// Root nodes: the default scene's, else every node no other node lists as a child.
+std::vector<int> rootNodes(const tinygltf::Model& model) {
+    if (model.defaultScene >= 0) {
+        if (size_t(model.defaultScene) >= model.scenes.size())
+            throw GltfError("default scene " + std::to_string(model.defaultScene) + " does not exist");
+        return model.scenes[size_t(model.defaultScene)].nodes;
+    }
+    std::vector<char> isChild(model.nodes.size(), 0);
+    for (const auto& node : model.nodes)
+        for (int child : node.children)
+            if (child >= 0 && size_t(child) < model.nodes.size()) isChild[size_t(child)] = 1;
+    std::vector<int> roots;
+    for (size_t i = 0; i < model.nodes.size(); ++i)
+        if (!isChild[i]) roots.push_back(int(i));
+    if (roots.empty() && !model.nodes.empty())
+        throw GltfError("every node has a parent (cycle in the node hierarchy)");
+    return roots;
+}
+
+std::vector<Instance> collectInstances(const tinygltf::Model& model, std::vector<std::string>& notes) {
+    if (model.nodes.empty()) {
+        // Some exporters write bare meshes without nodes; place each once at the origin.
+        std::vector<Instance> all;
+        for (size_t i = 0; i < model.meshes.size(); ++i) all.push_back({int(i), glm::mat4(1.f)});
+        if (!all.empty()) notes.push_back("no nodes: meshes placed untransformed");
+        return all;
+    }
+    NodeWalker walker(model);
+    for (int root : rootNodes(model)) walker.walk(root, glm::mat4(1.f), 0);
+    return walker.take();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Accessors
+
+/// A bounds-checked window on an accessor's elements: element(i) is valid for i < count.
+struct AccessorView {
+    const unsigned char* data = nullptr;
+    size_t count = 0;
+    size_t stride = 0;
+    int componentType = 0;
+    int type = 0;
+    [[nodiscard]] const unsigned char* element(size_t i) const { return data + i * stride; }
+};
+
+const tinygltf::Buffer& viewedBuffer(const tinygltf::Model& model, int viewIndex) {
+    const std::string name = "buffer view " + std::to_string(viewIndex);
+    if (viewIndex < 0 || size_t(viewIndex) >= model.bufferViews.size()) throw GltfError(name + " does not exist");
+    const tinygltf::BufferView& view = model.bufferViews[size_t(viewIndex)];
+    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+        throw GltfError(name + " references missing buffer " + std::to_string(view.buffer));
+    const tinygltf::Buffer& buffer = model.buffers[size_t(view.buffer)];
+    const size_t size = buffer.data.size();
+    if (view.byteOffset > size || view.byteLength > size - view.byteOffset)
+        throw GltfError(name + " (offset " + str(view.byteOffset) + ", length " + str(view.byteLength) +
+                        ") exceeds buffer " + std::to_string(view.buffer) + " (" + str(size) + " bytes)");
+    return buffer;
+}
+
+/// Checks everything an accessor claims against the bytes that really exist, overflow-safely,
+/// so neither a read nor an allocation can follow an absurd count or offset.
+AccessorView viewAccessor(const tinygltf::Model& model, int index) {
+    const std::string name = "accessor " + std::to_string(index);
+    if (index < 0 || size_t(index) >= model.accessors.size()) throw GltfError(name + " does not exist");
+    const tinygltf::Accessor& acc = model.accessors[size_t(index)];
+    if (acc.sparse.isSparse) throw GltfError(name + " is sparse (not supported)");
+    if (acc.bufferView < 0) throw GltfError(name + " has no buffer view");
+    const tinygltf::Buffer& buffer = viewedBuffer(model, acc.bufferView);
+    const tinygltf::BufferView& view = model.bufferViews[size_t(acc.bufferView)];
+
+    const int componentSize = tinygltf::GetComponentSizeInBytes(uint32_t(acc.componentType));
+    const int components = tinygltf::GetNumComponentsInType(uint32_t(acc.type));
+    if (componentSize <= 0 || components <= 0) throw GltfError(name + " has an invalid componentType or type");
+    const size_t elementSize = size_t(componentSize) * size_t(components);
+    const size_t stride = view.byteStride ? view.byteStride : elementSize;
+    if (stride < elementSize)
+        throw GltfError(name + ": byteStride " + str(stride) + " is smaller than an element (" + str(elementSize) + " bytes)");
+
+    if (acc.count > 0) {
+        // byteOffset + (count - 1) * stride + elementSize <= byteLength, without overflow.
+        const size_t length = view.byteLength;
+        bool fits = acc.byteOffset <= length && elementSize <= length - acc.byteOffset;
+        if (fits) fits = acc.count - 1 <= (length - acc.byteOffset - elementSize) / stride;
+        if (!fits)
+            throw GltfError(name + ": " + str(acc.count) + " elements (stride " + str(stride) + ", offset " +
+                            str(acc.byteOffset) + ") exceed buffer view " + std::to_string(acc.bufferView) +
+                            " (" + str(length) + " bytes)");
+    }
+    return {buffer.data.data() + view.byteOffset + acc.byteOffset, acc.count, stride, acc.componentType, acc.type};
+}
+
+std::string componentName(int componentType) {
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_INT: return "INT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
+    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return "DOUBLE";
+    default: return "componentType " + std::to_string(componentType);
+    }
+}
+
+std::string typeName(int type) {
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    default: return "type " + std::to_string(type);
+    }
+}
+
+bool isFloatVec3(const AccessorView& v) {
+    return v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT && v.type == TINYGLTF_TYPE_VEC3;
+}
+
+/// The elements listed in `which` (each < v.count), in that order.
+std::vector<glm::vec3> readVec3(const AccessorView& v, const std::vector<uint32_t>& which) {
+    std::vector<glm::vec3> out(which.size());
+    for (size_t i = 0; i < which.size(); ++i) std::memcpy(&out[i], v.element(which[i]), sizeof(glm::vec3));
+    return out;
+}
+
+template <typename T>
+uint32_t readIndex(const AccessorView& v, size_t i) {
+    T value;
+    std::memcpy(&value, v.element(i), sizeof(T));
+    return uint32_t(value);
+}
+
+/// Index values as stored (before triangle assembly), each checked against the vertex count.
+std::vector<uint32_t> readIndices(const AccessorView& v, size_t vertexCount, const std::string& where) {
+    if (v.type != TINYGLTF_TYPE_SCALAR)
+        throw GltfError(where + ": indices must be SCALAR, not " + typeName(v.type));
+    uint32_t (*read)(const AccessorView&, size_t) = nullptr;
+    switch (v.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: read = readIndex<uint8_t>; break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: read = readIndex<uint16_t>; break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: read = readIndex<uint32_t>; break;
+    default: throw GltfError(where + ": indices must be unsigned integers, not " + componentName(v.componentType));
+    }
+    std::vector<uint32_t> out(v.count);
+    for (size_t i = 0; i < v.count; ++i) {
+        out[i] = read(v, i);
+        if (out[i] >= vertexCount)
+            throw GltfError(where + ": index " + std::to_string(out[i]) + " out of range (" + str(vertexCount) +
+                            " vertices)");
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Primitives
+
+std::string modeName(int mode) {
+    switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "POINTS";
+    case TINYGLTF_MODE_LINE: return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
+    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+    default: return std::to_string(mode);
+    }
+}
+
+bool isTriangleMode(int mode) {
+    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+           mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
+/// A triangle list from the primitive's vertex sequence; strips and fans are unrolled with
+/// glTF's winding rules so orientation survives.
+std::vector<uint32_t> toTriangleList(std::vector<uint32_t> seq, int mode) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        seq.resize(seq.size() / 3 * 3);
+        return seq;
+    }
+    std::vector<uint32_t> out;
+    if (seq.size() < 3) return out;
+    out.reserve((seq.size() - 2) * 3);
+    for (size_t i = 0; i + 2 < seq.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
+            out.insert(out.end(), {seq[0], seq[i + 1], seq[i + 2]});
+        else if (i % 2 == 0)
+            out.insert(out.end(), {seq[i], seq[i + 1], seq[i + 2]});
+        else
+            out.insert(out.end(), {seq[i], seq[i + 2], seq[i + 1]});
+    }
+    return out;
+}
+
+glm::vec3 baseColor(const tinygltf::Model& model, int material, const std::string& where,
+                    std::vector<std::string>& notes) {
+    if (material < 0) return kDefaultColor;
+    if (size_t(material) >= model.materials.size()) {
+        notes.push_back(where + ": missing material " + std::to_string(material) + ", default colour used");
+        return kDefaultColor;
+    }
+    const std::vector<double>& f = model.materials[size_t(material)].pbrMetallicRoughness.baseColorFactor;
+    if (f.size() < 3 || !std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2])) return kDefaultColor;
+    return glm::clamp(glm::vec3(float(f[0]), float(f[1]), float(f[2])), glm::vec3(0.f), glm::vec3(1.f));
+}
+
+/// NORMAL is optional and recomputable, so a malformed one is dropped with a note rather than
+/// rejecting the file; an out-of-range one is still an error (the file is corrupt).
+void readNormals(const tinygltf::Model& model, const tinygltf::Primitive& prim, scene::Mesh& mesh,
+                 size_t accessorCount, const std::vector<uint32_t>& vertices,
+                 const std::string& where, std::vector<std::string>& notes) {
+    const auto it = prim.attributes.find("NORMAL");
+    if (it == prim.attributes.end()) return;
+    const AccessorView v = viewAccessor(model, it->second);
+    if (!isFloatVec3(v)) {
+        notes.push_back(where + ": NORMAL is " + componentName(v.componentType) + " " + typeName(v.type) +
+                        ", not FLOAT VEC3; normals recomputed");
+    } else if (v.count != accessorCount) {
+        notes.push_back(where + ": NORMAL count differs from POSITION; normals recomputed");
+    } else {
+        mesh.normals = readVec3(v, vertices);
+    }
+}
+
+/// One primitive as an object-space Mesh, or nothing (with a note) when it holds no triangles.
+std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t meshIndex, size_t primIndex,
+                                    std::vector<std::string>& notes) {
+    const tinygltf::Mesh& gltfMesh = model.meshes[meshIndex];
+    const tinygltf::Primitive& prim = gltfMesh.primitives[primIndex];
+    const std::string where = "mesh " + str(meshIndex) + " primitive " + str(primIndex);
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (!isTriangleMode(mode)) {
+        notes.push_back(where + ": mode " + modeName(mode) + " skipped");
+        return std::nullopt;
+    }
+    const auto position = prim.attributes.find("POSITION");
+    if (position == prim.attributes.end()) {
+        // The spec lets clients skip primitives without positions.
+        notes.push_back(where + ": no POSITION attribute, skipped");
+        return std::nullopt;
+    }
+    const AccessorView positions = viewAccessor(model, position->second);
+    if (!isFloatVec3(positions))
+        throw GltfError(where + ": POSITION must be FLOAT VEC3, not " + componentName(positions.componentType) +
+                        " " + typeName(positions.type));
+
+    std::vector<uint32_t> sequence; // vertex sequence, as indices into `vertices` once remapped
+    std::vector<uint32_t> vertices; // accessor elements this primitive uses, ascending
+    if (prim.indices >= 0) {
+        const AccessorView indices = viewAccessor(model, prim.indices);
+        sequence = readIndices(indices, positions.count, where);
+        // Read only the vertices referenced: primitives often share one large vertex accessor,
+        // and copying it whole per primitive would multiply memory by the primitive count.
+        vertices = sequence;
+        std::sort(vertices.begin(), vertices.end());
+        vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+        for (uint32_t& i : sequence)
+            i = uint32_t(std::lower_bound(vertices.begin(), vertices.end(), i) - vertices.begin());
+    } else {
+        // positions.count is bounded by the buffer (>= 12 bytes a vertex), so it fits uint32.
+        vertices.resize(positions.count);
+        for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = uint32_t(i);
+        sequence = vertices;
+    }
+
+    scene::Mesh mesh;
+    mesh.name = (gltfMesh.name.empty() ? "mesh " + str(meshIndex) : gltfMesh.name) +
+                (gltfMesh.primitives.size() > 1 ? " #" + str(primIndex) : "");
+    mesh.positions = readVec3(positions, vertices);
+    readNormals(model, prim, mesh, positions.count, vertices, where, notes);
+    if (mode == TINYGLTF_MODE_TRIANGLES && sequence.size() % 3 != 0)
+        notes.push_back(where + ": " + str(sequence.size() % 3) + " trailing indices ignored");
+    mesh.indices = toTriangleList(std::move(sequence), mode);
+
+    mesh.color = baseColor(model, prim.material, where, notes);
+    // Always two-sided: glTF's doubleSided=false is a shading hint, not a promise that the
+    // surface is a closed solid, and one-sided casting would drop shadows of open CAD sheets.
+    mesh.twoSided = true;
+    return mesh;
+}
+
+/// A primitive decoded and cleaned once, however many nodes instance it.
+struct CleanPrimitive {
+    scene::Mesh mesh;
+    CleanupReport report;
+    bool reported = false; // its notes go into the summed report once, not per instance
+};
+
+/// glTF mesh index → its cleaned triangle primitives, for the meshes some node uses.
+using CleanedMeshes = std::map<int, std::vector<CleanPrimitive>>;
+
+/// Upper bound of what decodePrimitive() allocates, from (validated) accessor counts alone.
+size_t decodeCost(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    const auto position = prim.attributes.find("POSITION");
+    if (!isTriangleMode(mode) || position == prim.attributes.end()) return 0;
+    const size_t vertices = viewAccessor(model, position->second).count;
+    const size_t sequence = prim.indices >= 0 ? viewAccessor(model, prim.indices).count : vertices;
+    // Index sequence, its sorted copy and the unrolled triangle list (strips triple); positions
+    // and normals of at most min(vertices, sequence) vertices.
+    return sequence * 5 * sizeof(uint32_t) + std::min(vertices, sequence) * 2 * sizeof(glm::vec3);
+}
+
+/// Every accessor fits its buffer, but any number of primitives may reference the same large
+/// accessor, so a small JSON could demand terabytes. Honest files decode to a few times their
+/// buffers' size; the margin is generous, the bound is what matters. Checked before decoding,
+/// so a hostile file fails fast.
+void checkDecodeBudget(const tinygltf::Model& model, const CleanedMeshes& used, size_t fileBytes) {
+    size_t available = fileBytes;
+    for (const tinygltf::Buffer& buffer : model.buffers) available += buffer.data.size();
+    const size_t budget = 16 * available + (size_t{64} << 20);
+    size_t cost = 0;
+    for (const auto& entry : used)
+        for (const tinygltf::Primitive& prim : model.meshes[size_t(entry.first)].primitives) {
+            cost += decodeCost(model, prim); // each term < 2^40: no overflow before the check
+            if (cost > budget)
+                throw GltfError("primitives would decode to more than " + str(budget >> 20) +
+                                " MiB (accessors shared by too many primitives)");
+        }
+}
+
+void notify(const Progress& progress, float fraction, std::string_view stage) {
+    if (progress) progress(fraction, stage);
+}
+
+/// Decodes and cleans each used mesh once; primitives that cleanup empties are noted and their
+/// reports go to `emptied`.
+CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, const std::vector<Instance>& instances,
+                              size_t fileBytes, const CleanupOptions& options, const Progress& progress,
+                              CleanupReport& emptied, std::vector<std::string>& notes) {
+    CleanedMeshes cleaned;
+    size_t total = 0, done = 0;
+    for (const Instance& inst : instances)
+        if (cleaned.try_emplace(inst.mesh).second) total += model.meshes[size_t(inst.mesh)].primitives.size();
+    checkDecodeBudget(model, cleaned, fileBytes);
+    for (auto& [meshIndex, primitives] : cleaned) {
+        for (size_t p = 0; p < model.meshes[size_t(meshIndex)].primitives.size(); ++p) {
+            notify(progress, float(done++) / float(total), "cleaning");
+            std::optional<scene::Mesh> mesh = decodePrimitive(model, size_t(meshIndex), p, notes);
+            if (!mesh) continue;
+            CleanupReport report = cleanMesh(*mesh, options);
+            if (mesh->indices.empty()) {
+                notes.push_back("mesh " + std::to_string(meshIndex) + " primitive " + str(p) +
+                                ": no triangles left after cleanup");
+                emptied += report;
+                continue;
+            }
+            primitives.push_back({std::move(*mesh), std::move(report)});
+        }
+    }
+    return cleaned;
+}
+
+/// One chunked Mesh per (instance, cleaned primitive), reports summed per emitted mesh.
+void emitInstances(const std::vector<Instance>& instances, CleanedMeshes& cleaned, const Progress& progress,
+                   LoadedModel& result) {
+    size_t triangles = 0;
+    for (const Instance& inst : instances)
+        for (const CleanPrimitive& prim : cleaned[inst.mesh]) triangles += prim.mesh.triangleCount();
+    if (triangles > kMaxInstancedTriangles)
+        throw GltfError("instancing expands to " + str(triangles) + " triangles (limit " +
+                        str(kMaxInstancedTriangles) + ")");
+
+    for (size_t i = 0; i < instances.size(); ++i) {
+        notify(progress, float(i) / float(instances.size()), "chunking");
+        for (CleanPrimitive& prim : cleaned[instances[i].mesh]) {
+            scene::Mesh mesh = prim.mesh;
+            mesh.transform = instances[i].world;
+            scene::chunkMesh(mesh);
+            CleanupReport report = prim.report;
+            if (prim.reported) report.notes.clear();
+            prim.reported = true;
+            result.report += report;
+            result.meshes.push_back(std::move(mesh));
+        }
+    }
+    notify(progress, 1.f, "chunking");
+}
+
+LoadedModel loadChecked(const std::string& path, const CleanupOptions& options, const Progress& progress) {
+    notify(progress, 0.f, "reading");
+    Parsed parsed;
+    size_t fileBytes = 0;
+    {
+        std::vector<unsigned char> bytes;
+        std::string problem;
+        if (!readRegularFile(path, bytes, problem)) throw GltfError(problem);
+        fileBytes = bytes.size();
+        parsed = parse(path, bytes);
+    } // the raw file is no longer needed: tinygltf copied the buffers
+    const tinygltf::Model& model = parsed.model;
+    std::vector<std::string> notes = std::move(parsed.notes);
+    const std::vector<Instance> instances = collectInstances(model, notes);
+    notify(progress, 1.f, "reading");
+
+    LoadedModel result;
+    result.format = parsed.binary ? "glb" : "gltf";
+    CleanedMeshes cleaned = cleanUsedMeshes(model, instances, fileBytes, options, progress, result.report, notes);
+    emitInstances(instances, cleaned, progress, result);
+    if (result.meshes.empty()) {
+        std::string why;
+        for (const std::string& note : notes) why += (why.empty() ? " (" : "; ") + note;
+        throw GltfError("no triangles" + (why.empty() ? "" : why + ")"));
+    }
+    result.report.notes.insert(result.report.notes.end(), notes.begin(), notes.end());
+    return result;
+}
+
+} // namespace
+
+LoadedModel loadGltf(const std::string& path, const CleanupOptions& options, const Progress& progress) {
+    try {
+        return loadChecked(path, options, progress);
+    } catch (const GltfError& e) {
+        throw std::runtime_error(path + ": " + oneLine(e.what()));
+    } catch (const std::bad_alloc&) {
+        throw std::runtime_error(path + ": out of memory");
+    }
+}
+
+} // namespace geometry::io

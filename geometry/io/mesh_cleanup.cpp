@@ -1,0 +1,381 @@
+// Mesh cleanup on flat arrays (positions/indices). A halfedge structure cannot hold the
+// non-manifold edges CAD exports are full of, and flat arrays keep every step O(n).
+#include "geometry/io/model_loader.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+#include <tuple>
+
+namespace geometry::io {
+
+CleanupReport& CleanupReport::operator+=(const CleanupReport& o) {
+    inputVertices += o.inputVertices;
+    inputFaces += o.inputFaces;
+    nonFiniteVertices += o.nonFiniteVertices;
+    nonFiniteFaces += o.nonFiniteFaces;
+    degenerateFaces += o.degenerateFaces;
+    mergedVertices += o.mergedVertices;
+    duplicateFaces += o.duplicateFaces;
+    isolatedVertices += o.isolatedVertices;
+    flippedFaces += o.flippedFaces;
+    outputVertices += o.outputVertices;
+    outputFaces += o.outputFaces;
+    notes.insert(notes.end(), o.notes.begin(), o.notes.end());
+    return *this;
+}
+
+namespace {
+
+constexpr uint32_t kNone = ~0u;
+using Tri = std::array<uint32_t, 3>;
+
+uint64_t mix(uint64_t x) { // splitmix64 finaliser: cheap, good enough spread for probing
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ull;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+size_t tableSize(size_t n) {
+    size_t cap = 16;
+    while (cap < 2 * n) cap <<= 1;
+    return cap;
+}
+
+std::vector<Tri> triangles(const scene::Mesh& mesh) {
+    std::vector<Tri> tris(mesh.triangleCount());
+    for (size_t t = 0; t < tris.size(); ++t)
+        tris[t] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+    return tris;
+}
+
+bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+/// Drops faces with an index out of range or touching a NaN/Inf vertex. Returns the
+/// finite-vertex mask.
+std::vector<char> dropNonFinite(const scene::Mesh& mesh, std::vector<Tri>& tris, CleanupReport& r) {
+    std::vector<char> ok(mesh.positions.size());
+    for (size_t i = 0; i < ok.size(); ++i) ok[i] = finite(mesh.positions[i]);
+    r.nonFiniteVertices = static_cast<size_t>(std::count(ok.begin(), ok.end(), 0));
+    const size_t n = ok.size();
+    std::erase_if(tris, [&](const Tri& t) {
+        for (uint32_t v : t)
+            if (v >= n) { ++r.degenerateFaces; return true; } // not a face at all
+        const bool bad = !ok[t[0]] || !ok[t[1]] || !ok[t[2]];
+        r.nonFiniteFaces += bad;
+        return bad;
+    });
+    return ok;
+}
+
+/// Maps every vertex to the first vertex within `tol` of it (spatial hash, O(n)); non-finite
+/// vertices map to themselves and are dropped later as unused.
+std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const std::vector<char>& ok, double tol,
+                                      CleanupReport& r) {
+    const size_t n = pos.size();
+    std::vector<uint32_t> rep(n);
+    std::iota(rep.begin(), rep.end(), 0u);
+    // Cells four tolerances wide: most points are far enough from every cell face that only
+    // their own cell needs looking at.
+    // A zero tolerance merges bit-equal points only: hash the coordinates themselves, so that
+    // many distinct points close together never share one long cell list.
+    const bool exact = !(tol > 0);
+    const double cell = exact ? 1.0 : 4 * tol;
+    const double reach = exact ? 0.0 : tol / cell;
+    const double tol2 = tol * tol;
+    auto cellOf = [&](const glm::vec3& p, int axis) -> int64_t {
+        if (exact) {
+            const float x = p[axis] == 0.f ? 0.f : p[axis]; // -0 equals +0
+            uint32_t bits;
+            std::memcpy(&bits, &x, sizeof bits);
+            return bits;
+        }
+        return static_cast<int64_t>(std::clamp(std::floor(p[axis] / cell), -1e15, 1e15));
+    };
+    auto hashOf = [](int64_t x, int64_t y, int64_t z) {
+        return mix(static_cast<uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ mix(static_cast<uint64_t>(y)) * 31 ^
+                   mix(static_cast<uint64_t>(z) + 0x632BE59BD9B4E019ull));
+    };
+    const size_t cap = tableSize(n);
+    std::vector<uint32_t> heads(cap, kNone), next(n, kNone);
+    // Slot holding the list head of cell (x, y, z), or the empty slot where it would go.
+    auto find = [&](int64_t x, int64_t y, int64_t z) -> size_t {
+        for (size_t s = hashOf(x, y, z) & (cap - 1);; s = (s + 1) & (cap - 1)) {
+            const uint32_t h = heads[s];
+            if (h == kNone) return s;
+            const glm::vec3& q = pos[h];
+            if (cellOf(q, 0) == x && cellOf(q, 1) == y && cellOf(q, 2) == z) return s;
+        }
+    };
+    for (uint32_t i = 0; i < n; ++i) {
+        if (!ok[i]) continue;
+        const glm::vec3& p = pos[i];
+        const int64_t c[3] = {cellOf(p, 0), cellOf(p, 1), cellOf(p, 2)};
+        int lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            const double f = exact ? 0.5 : p[a] / cell - std::floor(p[a] / cell);
+            lo[a] = f < reach ? -1 : 0;
+            hi[a] = f > 1 - reach ? 1 : 0;
+        }
+        uint32_t found = kNone;
+        for (int dx = lo[0]; dx <= hi[0] && found == kNone; ++dx)
+            for (int dy = lo[1]; dy <= hi[1] && found == kNone; ++dy)
+                for (int dz = lo[2]; dz <= hi[2] && found == kNone; ++dz)
+                    for (uint32_t q = heads[find(c[0] + dx, c[1] + dy, c[2] + dz)]; q != kNone; q = next[q]) {
+                        const glm::dvec3 d = glm::dvec3(pos[q]) - glm::dvec3(p);
+                        if (glm::dot(d, d) <= tol2) { found = q; break; }
+                    }
+        if (found != kNone) {
+            rep[i] = found;
+            ++r.mergedVertices;
+            continue;
+        }
+        const size_t s = find(c[0], c[1], c[2]);
+        if (heads[s] == kNone) heads[s] = i;
+        else { next[i] = next[heads[s]]; next[heads[s]] = i; }
+    }
+    return rep;
+}
+
+/// Removes faces with a repeated index or an area below the merge resolution.
+void dropDegenerate(const std::vector<glm::vec3>& pos, std::vector<Tri>& tris, double tol, CleanupReport& r) {
+    const double minCross2 = tol * tol * tol * tol; // |cross| = 2·area ≤ tol²
+    std::erase_if(tris, [&](const Tri& t) {
+        bool bad = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+        if (!bad) {
+            const glm::dvec3 a(pos[t[0]]), b(pos[t[1]]), c(pos[t[2]]);
+            const glm::dvec3 n = glm::cross(b - a, c - a);
+            bad = glm::dot(n, n) <= minCross2;
+        }
+        r.degenerateFaces += bad;
+        return bad;
+    });
+}
+
+/// Keeps the first of every set of faces on the same three vertices, whatever their winding.
+/// Duplicates share their smallest vertex, so faces are bucketed by it (counting sort: cache
+/// friendly, unlike a hash table over all faces) and compared within a bucket only.
+void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupReport& r) {
+    std::vector<Tri> keys(tris.size());
+    std::vector<uint32_t> start(vertexCount + 1, 0);
+    for (size_t f = 0; f < tris.size(); ++f) {
+        keys[f] = tris[f];
+        std::sort(keys[f].begin(), keys[f].end());
+        ++start[keys[f][0] + 1];
+    }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<uint32_t> order(tris.size()), fill(start.begin(), start.end() - 1);
+    for (uint32_t f = 0; f < tris.size(); ++f) order[fill[keys[f][0]]++] = f;
+    std::vector<char> dup(tris.size(), 0);
+    for (size_t v = 0; v < vertexCount; ++v) {
+        const auto begin = order.begin() + start[v], end = order.begin() + start[v + 1];
+        if (end - begin < 2) continue;
+        // Equal keys end up adjacent, the earliest face first (it is the one kept).
+        std::sort(begin, end, [&](uint32_t a, uint32_t b) {
+            return std::tie(keys[a][1], keys[a][2], a) < std::tie(keys[b][1], keys[b][2], b);
+        });
+        for (auto it = begin + 1; it != end; ++it)
+            if (keys[*it] == keys[*(it - 1)]) { dup[*it] = 1; ++r.duplicateFaces; }
+    }
+    size_t out = 0;
+    for (size_t f = 0; f < tris.size(); ++f)
+        if (!dup[f]) tris[out++] = tris[f];
+    tris.resize(out);
+}
+
+/// Vertex → incident faces, compressed (counting sort).
+struct VertexFaces {
+    std::vector<uint32_t> offset, faces;
+    VertexFaces(size_t vertexCount, const std::vector<Tri>& tris) : offset(vertexCount + 1, 0), faces(3 * tris.size()) {
+        for (const Tri& t : tris)
+            for (uint32_t v : t) ++offset[v + 1];
+        std::partial_sum(offset.begin(), offset.end(), offset.begin());
+        std::vector<uint32_t> fill(offset.begin(), offset.end() - 1);
+        for (uint32_t f = 0; f < tris.size(); ++f)
+            for (uint32_t v : tris[f]) faces[fill[v]++] = f;
+    }
+    [[nodiscard]] std::pair<const uint32_t*, const uint32_t*> of(uint32_t v) const {
+        return {faces.data() + offset[v], faces.data() + offset[v + 1]};
+    }
+};
+
+int cornerOf(const Tri& t, uint32_t v) { return t[0] == v ? 0 : (t[1] == v ? 1 : (t[2] == v ? 2 : -1)); }
+
+/// Makes winding consistent across edge-adjacent faces, per connected component, keeping the
+/// majority orientation of each component (so a few flipped faces are the ones turned).
+void fixOrientation(size_t vertexCount, std::vector<Tri>& tris, CleanupReport& r) {
+    const VertexFaces vf(vertexCount, tris);
+    std::vector<char> seen(tris.size(), 0), flip(tris.size(), 0);
+    std::vector<uint32_t> component, queue;
+    for (uint32_t seed = 0; seed < tris.size(); ++seed) {
+        if (seen[seed]) continue;
+        component.clear();
+        queue.assign(1, seed);
+        seen[seed] = 1;
+        while (!queue.empty()) {
+            const uint32_t f = queue.back();
+            queue.pop_back();
+            component.push_back(f);
+            const Tri& t = tris[f];
+            for (int e = 0; e < 3; ++e) {
+                // Directed edge a→b of f as it will be drawn (after its own flip).
+                uint32_t a = t[e], b = t[(e + 1) % 3];
+                if (flip[f]) std::swap(a, b);
+                const auto [begin, end] = vf.of(a);
+                for (const uint32_t* g = begin; g != end; ++g) {
+                    if (*g == f || seen[*g]) continue;
+                    const Tri& u = tris[*g];
+                    const int ca = cornerOf(u, a);
+                    if (u[(ca + 1) % 3] == b) { flip[*g] = 1; } // same direction: g is inverted
+                    else if (u[(ca + 2) % 3] != b) continue;     // shares only the vertex
+                    seen[*g] = 1;
+                    queue.push_back(*g);
+                }
+            }
+        }
+        size_t flips = 0;
+        for (uint32_t f : component) flips += flip[f];
+        if (2 * flips > component.size()) {
+            for (uint32_t f : component) flip[f] = !flip[f];
+            flips = component.size() - flips;
+        }
+        r.flippedFaces += flips;
+    }
+    for (size_t f = 0; f < tris.size(); ++f)
+        if (flip[f]) std::swap(tris[f][1], tris[f][2]);
+}
+
+/// Above this many faces around one vertex (fans of huge cones, hostile input) per-corner
+/// averaging is quadratic; faces are grouped instead.
+constexpr size_t kExactCornerDegree = 256;
+
+/// Groups the faces around a vertex greedily by normal (a face joins the first group whose seed
+/// is within the crease angle) and gives every corner its group's average. O(faces × groups);
+/// groups stay few because their seeds are more than the crease angle apart.
+void clusterCornerNormals(const uint32_t* begin, const uint32_t* end, const std::vector<glm::vec3>& faceN,
+                          const std::vector<glm::vec3>& faceU, float cosCrease, std::vector<glm::vec3>& cornerN) {
+    // Below ~5° the seeds could be as many as the faces: keep the grouping coarse enough.
+    const float cosGroup = std::min(cosCrease, 0.996f);
+    std::vector<uint32_t> seed, group(static_cast<size_t>(end - begin));
+    std::vector<glm::vec3> sum;
+    for (size_t i = 0; i < group.size(); ++i) {
+        const glm::vec3& n = faceU[begin[i]];
+        size_t g = 0;
+        while (g < seed.size() && glm::dot(faceU[seed[g]], n) < cosGroup) ++g;
+        if (g == seed.size()) { seed.push_back(begin[i]); sum.emplace_back(0.f); }
+        group[i] = static_cast<uint32_t>(g);
+        sum[g] += faceN[begin[i]];
+    }
+    for (size_t i = 0; i < group.size(); ++i) {
+        const float len = glm::length(sum[group[i]]);
+        cornerN[i] = len > 0 ? sum[group[i]] / len : faceU[begin[i]];
+    }
+}
+
+/// Crease-angle normals: each corner averages the (area-weighted) normals of the faces around
+/// its vertex that lie within the crease angle of its own face; corners of one vertex with
+/// different results become separate vertices, so sharp CAD edges stay sharp.
+void computeNormals(scene::Mesh& mesh, const std::vector<glm::vec3>& pos, std::vector<Tri>& tris, double creaseDeg) {
+    std::vector<glm::vec3> faceN(tris.size()), faceU(tris.size());
+    for (size_t f = 0; f < tris.size(); ++f) {
+        const Tri& t = tris[f];
+        faceN[f] = glm::cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]]);
+        const float len = glm::length(faceN[f]);
+        faceU[f] = len > 0 ? faceN[f] / len : glm::vec3(0.f);
+    }
+    const float cosCrease = static_cast<float>(std::cos(glm::radians(std::clamp(creaseDeg, 0.0, 180.0))));
+    const VertexFaces vf(pos.size(), tris);
+    mesh.positions.clear();
+    mesh.normals.clear();
+    mesh.positions.reserve(pos.size());
+    mesh.normals.reserve(pos.size());
+    std::vector<glm::vec3> cornerN;
+    std::vector<uint32_t> firstOut;
+    for (uint32_t v = 0; v < pos.size(); ++v) {
+        const auto [begin, end] = vf.of(v);
+        const size_t deg = static_cast<size_t>(end - begin);
+        cornerN.resize(deg);
+        if (deg <= kExactCornerDegree) {
+            for (size_t i = 0; i < deg; ++i) {
+                glm::vec3 sum(0.f);
+                const glm::vec3& own = faceU[begin[i]];
+                for (const uint32_t* g = begin; g != end; ++g)
+                    if (*g == begin[i] || glm::dot(own, faceU[*g]) >= cosCrease) sum += faceN[*g];
+                const float len = glm::length(sum);
+                cornerN[i] = len > 0 ? sum / len : own;
+            }
+        } else {
+            clusterCornerNormals(begin, end, faceN, faceU, cosCrease, cornerN);
+        }
+        // One output vertex per distinct corner normal at this vertex.
+        const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
+        for (size_t i = 0; i < deg; ++i) {
+            // A face too small for float cross products has no direction: any unit normal will do.
+            if (!(glm::dot(cornerN[i], cornerN[i]) > 0.f)) cornerN[i] = glm::vec3(0.f, 0.f, 1.f);
+            uint32_t out = kNone;
+            for (uint32_t k = base; k < mesh.positions.size(); ++k)
+                if (glm::dot(mesh.normals[k], cornerN[i]) > 0.99999f) { out = k; break; }
+            if (out == kNone) {
+                out = static_cast<uint32_t>(mesh.positions.size());
+                mesh.positions.push_back(pos[v]);
+                mesh.normals.push_back(cornerN[i]);
+            }
+            Tri& t = tris[begin[i]];
+            t[cornerOf(t, v)] = out | 0x80000000u; // marked as remapped; unmarked below
+        }
+    }
+    mesh.indices.resize(3 * tris.size());
+    for (size_t f = 0; f < tris.size(); ++f)
+        for (int k = 0; k < 3; ++k) mesh.indices[3 * f + k] = tris[f][k] & 0x7fffffffu;
+}
+
+} // namespace
+
+CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options) {
+    CleanupReport r;
+    r.inputVertices = mesh.positions.size();
+    r.inputFaces = mesh.triangleCount();
+    std::vector<Tri> tris = triangles(mesh);
+
+    const std::vector<char> ok = dropNonFinite(mesh, tris, r);
+    scene::Aabb box;
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+        if (ok[i]) box.add(mesh.positions[i]);
+    const double diag = box.empty() ? 0.0 : glm::length(glm::dvec3(box.extent()));
+    const double tol = std::max(0.0, options.mergeTolerance) * diag;
+
+    const std::vector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, r);
+    for (Tri& t : tris)
+        for (uint32_t& v : t) v = rep[v];
+    dropDegenerate(mesh.positions, tris, tol, r);
+    dropDuplicateFaces(mesh.positions.size(), tris, r);
+
+    // Compact: keep referenced vertices, in their original order.
+    std::vector<uint32_t> newIndex(mesh.positions.size(), kNone);
+    for (const Tri& t : tris)
+        for (uint32_t v : t) newIndex[v] = 0;
+    std::vector<glm::vec3> pos;
+    pos.reserve(mesh.positions.size());
+    for (size_t i = 0; i < newIndex.size(); ++i) {
+        if (newIndex[i] == kNone) continue;
+        newIndex[i] = static_cast<uint32_t>(pos.size());
+        pos.push_back(mesh.positions[i]);
+    }
+    // Every finite vertex is either merged away, kept, or isolated.
+    r.isolatedVertices = r.inputVertices - r.nonFiniteVertices - r.mergedVertices - pos.size();
+    for (Tri& t : tris)
+        for (uint32_t& v : t) v = newIndex[v];
+
+    if (options.fixOrientation) fixOrientation(pos.size(), tris, r);
+    computeNormals(mesh, pos, tris, options.creaseAngleDeg);
+    mesh.chunks.clear(); // indices changed: chunk again (loadModel does)
+    r.outputVertices = mesh.positions.size();
+    r.outputFaces = mesh.triangleCount();
+    return r;
+}
+
+} // namespace geometry::io

@@ -1,0 +1,73 @@
+// loadModel(): picks the reader by extension, then cleans and chunks.
+#include "geometry/io/model_loader.h"
+
+#include "geometry/scene/chunking.h"
+#include "geometry/io/gltf_loader.h"
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <stdexcept>
+
+namespace geometry::io {
+
+namespace detail {
+// Defined in openmesh_io.cpp (no header of its own: loadModel() is its only caller).
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext);
+} // namespace detail
+
+namespace {
+
+constexpr std::array<std::string_view, 6> kExtensions{"obj", "stl", "off", "ply", "gltf", "glb"};
+constexpr glm::vec3 kDefaultGrey{0.7f, 0.7f, 0.72f};
+
+std::string lowerExtension(std::string_view path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    if (!ext.empty()) ext.erase(0, 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+void report(const Progress& progress, float fraction, std::string_view stage) {
+    if (progress) progress(fraction, stage);
+}
+
+} // namespace
+
+bool isModelFile(std::string_view path) noexcept {
+    try {
+        return std::find(kExtensions.begin(), kExtensions.end(), lowerExtension(path)) != kExtensions.end();
+    } catch (...) { // allocation failure: not worth propagating from a predicate
+        return false;
+    }
+}
+
+LoadedModel loadModel(const std::string& path, const CleanupOptions& options, const Progress& progress) {
+    const std::string ext = lowerExtension(path);
+    if (ext == "gltf" || ext == "glb") return loadGltf(path, options, progress);
+    if (!isModelFile(path))
+        throw std::runtime_error(path + ": unknown model extension '" + ext +
+                                 "' (supported: .obj, .stl, .off, .ply, .gltf, .glb)");
+
+    report(progress, 0.f, "reading");
+    scene::Mesh mesh = detail::readOpenMeshFile(path, ext);
+    report(progress, 1.f, "reading");
+
+    report(progress, 0.f, "cleaning");
+    LoadedModel model;
+    model.format = ext;
+    model.report = cleanMesh(mesh, options);
+    report(progress, 1.f, "cleaning");
+    if (mesh.triangleCount() == 0) throw std::runtime_error(path + ": no triangles left after cleanup");
+
+    report(progress, 0.f, "chunking");
+    mesh.name = std::filesystem::path(path).stem().string();
+    mesh.twoSided = true; // CAD files: open surfaces are common and must cast from both faces
+    mesh.color = kDefaultGrey;
+    scene::chunkMesh(mesh);
+    report(progress, 1.f, "chunking");
+    model.meshes.push_back(std::move(mesh));
+    return model;
+}
+
+} // namespace geometry::io

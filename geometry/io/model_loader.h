@@ -1,0 +1,63 @@
+#pragma once
+// CAD meshes in: OBJ, STL (ASCII and binary), OFF, PLY through OpenMesh; glTF 2.0 (.gltf, .glb)
+// through tinygltf. Every mesh is cleaned (cleanup counted in a report) and chunked after
+// cleanup. Bad input gives a std::runtime_error whose one-line message names the file and the
+// problem; memory stays bounded by the file's real size, never by counts a header claims.
+#include "geometry/scene/scene.h"
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace geometry::io {
+
+struct CleanupOptions {
+    double mergeTolerance = 1e-6;  // duplicate vertices closer than this × the bounds' diagonal merge
+    double creaseAngleDeg = 30.0;  // normals: faces meeting at more than this keep a sharp edge
+    bool fixOrientation = false;   // make face winding consistent per connected component
+};
+
+/// What cleanup did, step by step (each counter is what that step removed or changed).
+struct CleanupReport {
+    size_t inputVertices = 0, inputFaces = 0;
+    size_t nonFiniteVertices = 0;   // NaN/Inf vertices dropped
+    size_t nonFiniteFaces = 0;      // faces dropped with them
+    size_t degenerateFaces = 0;     // repeated indices or zero area
+    size_t mergedVertices = 0;      // duplicates within the tolerance
+    size_t duplicateFaces = 0;      // same three vertices, any order or winding
+    size_t isolatedVertices = 0;    // referenced by no face
+    size_t flippedFaces = 0;        // orientation fix
+    size_t outputVertices = 0, outputFaces = 0;
+    std::vector<std::string> notes; // e.g. skipped glTF primitive modes
+    CleanupReport& operator+=(const CleanupReport& other);
+};
+
+/// Called with a fraction in [0, 1] and the stage name ("reading", "cleaning", "chunking").
+using Progress = std::function<void(float fraction, std::string_view stage)>;
+
+struct LoadedModel {
+    std::vector<scene::Mesh> meshes; // world transforms applied into Mesh::transform; chunked
+    CleanupReport report;
+    std::string format;       // "obj", "stl", "off", "ply", "gltf", "glb"
+};
+
+/// Loads a mesh or glTF file by extension (case-insensitive). Throws std::runtime_error
+/// "FILE: problem" for a missing file, an unknown extension, truncated/corrupt data, indices
+/// out of range, absurd sizes, an empty result, recursive glTF nodes or missing buffers.
+[[nodiscard]] LoadedModel loadModel(const std::string& path, const CleanupOptions& options = {},
+                                    const Progress& progress = {});
+
+/// True for extensions loadModel() reads.
+[[nodiscard]] bool isModelFile(std::string_view path) noexcept;
+
+/// Cleans one triangle mesh in place (DESIGN: drop NaN/Inf vertices and their faces, degenerate
+/// faces, merge duplicates, remove duplicate faces and isolated vertices, crease-angle normals,
+/// optional orientation fix) and returns what it did. Does not chunk.
+CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {});
+
+/// Writes a mesh file (format from the extension: obj, stl, off, ply) through OpenMesh; throws
+/// std::runtime_error naming the file on failure.
+void saveMesh(const std::string& path, const scene::Mesh& mesh);
+
+} // namespace geometry::io

@@ -1,0 +1,623 @@
+// OBJ, STL, OFF and PLY through OpenMesh's readers and writers.
+//
+// Reading goes through OpenMesh's IOManager with our own importer that collects flat arrays,
+// not through a TriMesh: a halfedge mesh drops non-manifold faces ("complex edge"), which CAD
+// exports are full of, and building the connectivity is the slow part of read_mesh anyway.
+//
+// OpenMesh's readers trust their input (they reserve and loop by header counts and per-face
+// valences), so every file is validated here first, against its real size, before a reader sees
+// it (OBJ in obj_validate.cpp). Every error is a std::runtime_error "PATH: problem" on one line.
+#include "geometry/io/model_loader.h"
+#include "geometry/io/obj_validate.h"
+
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace geometry::io::detail {
+
+/// Reads an OBJ/STL/OFF/PLY file (ext: lower case, no dot) into one uncleaned mesh.
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext);
+
+namespace {
+
+// Hard caps, far above any real CAD part, so a header can never make us plan for more.
+constexpr uint64_t kMaxVertices = 50'000'000;
+constexpr uint64_t kMaxFaces = 50'000'000;
+constexpr uint64_t kMaxFaceValence = 1'000'000;
+
+[[noreturn]] void fail(const std::string& path, const std::string& problem) {
+    throw std::runtime_error(path + ": " + problem);
+}
+
+uint64_t checkedFileSize(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (ec || !fs::exists(st)) fail(path, "file not found");
+    if (!fs::is_regular_file(st)) fail(path, "not a regular file");
+    const uint64_t size = fs::file_size(path, ec);
+    if (ec) fail(path, "cannot read file size");
+    if (size == 0) fail(path, "file is empty");
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) fail(path, "cannot open file for reading");
+    return size;
+}
+
+/// The whole file; the caller has checked that its size is sane (it is the real size on disk).
+std::string readAll(const std::string& path, uint64_t size) {
+    std::string data(size, '\0');
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(data.data(), static_cast<std::streamsize>(size))) fail(path, "cannot read file");
+    return data;
+}
+
+std::string readHead(const std::string& path, uint64_t size, size_t n) {
+    return readAll(path, std::min<uint64_t>(size, n)); // reads the first n bytes only
+}
+
+// ---- importer --------------------------------------------------------------------------------
+
+using namespace OpenMesh;
+
+/// Collects vertices and (fan-triangulated) faces into flat arrays. Out-of-range indices are
+/// recorded, not trusted: some readers pass them through unchecked.
+class FlatImporter final : public IO::BaseImporter {
+public:
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> indices;
+    size_t faces = 0;
+    size_t badFaces = 0;       // faces with an index out of range
+    int64_t firstBadIndex = 0; // for the message
+    size_t firstBadFace = 0;
+
+    explicit FlatImporter(uint64_t fileSize) : fileSize_(fileSize) {}
+
+    VertexHandle add_vertex(const Vec3f& p) override {
+        positions.emplace_back(p[0], p[1], p[2]);
+        return VertexHandle(static_cast<int>(positions.size() - 1));
+    }
+    VertexHandle add_vertex() override { return add_vertex(Vec3f(0.f, 0.f, 0.f)); }
+    FaceHandle add_face(const VHandles& vh) override {
+        const size_t face = faces++;
+        for (const VertexHandle& h : vh) {
+            if (h.idx() < 0 || static_cast<size_t>(h.idx()) >= positions.size()) {
+                if (badFaces++ == 0) { firstBadIndex = h.idx(); firstBadFace = face; }
+                return FaceHandle(static_cast<int>(face));
+            }
+        }
+        for (size_t i = 2; i < vh.size(); ++i) // fan: CAD polygons are planar and convex enough
+            for (const VertexHandle& h : {vh[0], vh[i - 1], vh[i]}) indices.push_back(static_cast<uint32_t>(h.idx()));
+        return FaceHandle(static_cast<int>(face));
+    }
+    // Header counts are hints only: never reserve more than the file could hold.
+    void reserve(unsigned int nV, unsigned int, unsigned int nF) override {
+        positions.reserve(std::min<uint64_t>(nV, fileSize_ / 6));
+        indices.reserve(3 * std::min<uint64_t>(nF, fileSize_ / 8));
+    }
+    size_t n_vertices() const override { return positions.size(); }
+    size_t n_faces() const override { return faces; }
+    size_t n_edges() const override { return 0; }
+
+    // Halfedge-level input (OpenMesh's own .om format) and attributes we do not keep.
+    HalfedgeHandle add_edge(VertexHandle, VertexHandle) override { return HalfedgeHandle(); }
+    FaceHandle add_face(HalfedgeHandle) override { return FaceHandle(); }
+    void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<Vec2f>&) override {}
+    void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<Vec3f>&) override {}
+    void set_face_texindex(FaceHandle, int) override {}
+    void set_point(VertexHandle vh, const Vec3f& p) override {
+        if (vh.idx() >= 0 && static_cast<size_t>(vh.idx()) < positions.size())
+            positions[vh.idx()] = {p[0], p[1], p[2]};
+    }
+    void set_halfedge(VertexHandle, HalfedgeHandle) override {}
+    void set_normal(VertexHandle, const Vec3f&) override {}
+    void set_normal(VertexHandle, const Vec3d&) override {}
+    void set_color(VertexHandle, const Vec3uc&) override {}
+    void set_color(VertexHandle, const Vec4uc&) override {}
+    void set_color(VertexHandle, const Vec3f&) override {}
+    void set_color(VertexHandle, const Vec4f&) override {}
+    void set_texcoord(VertexHandle, const Vec2f&) override {}
+    void set_status(VertexHandle, const Attributes::StatusInfo&) override {}
+    void set_next(HalfedgeHandle, HalfedgeHandle) override {}
+    void set_face(HalfedgeHandle, FaceHandle) override {}
+    void request_face_texcoords2D() override {}
+    void set_texcoord(HalfedgeHandle, const Vec2f&) override {}
+    void set_texcoord(VertexHandle, const Vec3f&) override {}
+    void set_texcoord(HalfedgeHandle, const Vec3f&) override {}
+    void set_status(HalfedgeHandle, const Attributes::StatusInfo&) override {}
+    void set_color(EdgeHandle, const Vec3uc&) override {}
+    void set_color(EdgeHandle, const Vec4uc&) override {}
+    void set_color(EdgeHandle, const Vec3f&) override {}
+    void set_color(EdgeHandle, const Vec4f&) override {}
+    void set_status(EdgeHandle, const Attributes::StatusInfo&) override {}
+    void set_normal(FaceHandle, const Vec3f&) override {}
+    void set_normal(FaceHandle, const Vec3d&) override {}
+    void set_color(FaceHandle, const Vec3uc&) override {}
+    void set_color(FaceHandle, const Vec4uc&) override {}
+    void set_color(FaceHandle, const Vec3f&) override {}
+    void set_color(FaceHandle, const Vec4f&) override {}
+    void set_status(FaceHandle, const Attributes::StatusInfo&) override {}
+    void add_texture_information(int, std::string) override {}
+
+private:
+    uint64_t fileSize_;
+};
+
+// ---- text scanning ---------------------------------------------------------------------------
+
+/// Splits text into lines and lines into whitespace-separated tokens without copying.
+struct LineScanner {
+    std::string_view text;
+    size_t pos = 0;
+
+    bool nextLine(std::string_view& line) {
+        if (pos >= text.size()) return false;
+        size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        line = text.substr(pos, end - pos);
+        pos = std::min(end + 1, text.size()); // never past the end: callers use size - pos
+        return true;
+    }
+    /// Next line with at least one token, skipping blank lines and '#' comments when asked.
+    bool nextDataLine(std::string_view& line, bool skipComments) {
+        while (nextLine(line)) {
+            const size_t first = line.find_first_not_of(" \t\r");
+            if (first == std::string_view::npos) continue;
+            if (skipComments && line[first] == '#') continue;
+            return true;
+        }
+        return false;
+    }
+};
+
+void tokenize(std::string_view line, std::vector<std::string_view>& out) {
+    out.clear();
+    size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        const size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+        if (i > start) out.push_back(line.substr(start, i - start));
+    }
+}
+
+bool parseInt(std::string_view s, int64_t& value) {
+    const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+    return ec == std::errc() && p == s.data() + s.size();
+}
+
+/// Checks one text face record "k i0 … ik-1 [colour…]" against the vertex count. OpenMesh
+/// reads faces token by token, so where it does not skip the rest of the line (`trailing`
+/// false) an extra value would be read as the next face's vertex count: refused.
+void checkTextFace(const std::string& path, const std::vector<std::string_view>& tok, uint64_t face,
+                   uint64_t vertexCount, bool trailing) {
+    int64_t k = 0;
+    if (tok.empty() || !parseInt(tok[0], k) || k < 0)
+        fail(path, "face " + std::to_string(face) + " has no valid vertex count (corrupt file)");
+    if (static_cast<uint64_t>(k) > kMaxFaceValence || static_cast<uint64_t>(k) + 1 > tok.size())
+        fail(path, "face " + std::to_string(face) + " claims " + std::to_string(k) +
+                       " vertices but lists fewer (corrupt or truncated file)");
+    if (!trailing && static_cast<uint64_t>(k) + 1 != tok.size())
+        fail(path, "face " + std::to_string(face) + " has values after its " + std::to_string(k) +
+                       " vertex indices (face colours need a COFF header)");
+    for (int64_t j = 1; j <= k; ++j) {
+        int64_t idx = 0;
+        if (!parseInt(tok[j], idx))
+            fail(path, "face " + std::to_string(face) + " has a non-integer vertex index");
+        if (idx < 0 || static_cast<uint64_t>(idx) >= vertexCount)
+            fail(path, "face " + std::to_string(face) + " references vertex " + std::to_string(idx) +
+                           " but the file has only " + std::to_string(vertexCount) + " vertices");
+    }
+}
+
+void checkCounts(const std::string& path, uint64_t vertices, uint64_t faces, uint64_t minBytes,
+                 uint64_t available) {
+    if (vertices > kMaxVertices || faces > kMaxFaces)
+        fail(path, "header claims " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
+                       " faces, over the limit of " + std::to_string(kMaxFaces));
+    if (minBytes > available)
+        fail(path, "header claims " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
+                       " faces, which cannot fit in " + std::to_string(available) +
+                       " bytes (truncated or corrupt file)");
+}
+
+// ---- STL -------------------------------------------------------------------------------------
+
+enum class StlKind { Ascii, Binary };
+
+uint32_t readLe32(const char* p) {
+    uint32_t v = 0;
+    for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(p[i]);
+    return v;
+}
+
+/// Same rule as OpenMesh (size = 84 + 50·n means binary), but a file that is neither a
+/// consistent binary STL nor text starting with "solid" is refused instead of parsed as text.
+StlKind validateStl(const std::string& path, uint64_t size) {
+    const std::string head = readHead(path, size, 512);
+    if (size >= 84) {
+        const uint64_t n = readLe32(head.data() + 80);
+        if (84 + 50 * n == size) return StlKind::Binary;
+    }
+    const size_t first = head.find_first_not_of(" \t\r\n");
+    const bool solid = first != std::string::npos && head.size() - first >= 5 &&
+                       strncasecmp(head.c_str() + first, "solid", 5) == 0;
+    const bool text = head.find('\0') == std::string::npos;
+    if (solid && text) return StlKind::Ascii;
+    if (size < 84) fail(path, "too small for a binary STL (" + std::to_string(size) + " bytes) and not ASCII STL");
+    const uint64_t n = readLe32(head.data() + 80);
+    fail(path, "binary STL header claims " + std::to_string(n) + " triangles (" + std::to_string(84 + 50 * n) +
+                   " bytes) but the file has " + std::to_string(size) + " bytes (truncated or corrupt)");
+}
+
+/// OpenMesh merges STL vertices through a std::map whose comparator is not a strict weak order
+/// once NaN appears (NaN compares "equal" to every point, so later vertices collapse onto it).
+/// Such files are read here directly, and cleanup drops the non-finite vertices.
+bool binaryStlHasNonFinite(const std::string& data) {
+    const size_t n = (data.size() - 84) / 50;
+    for (size_t t = 0; t < n; ++t) {
+        const char* rec = data.data() + 84 + 50 * t + 12; // skip the facet normal
+        for (int k = 0; k < 9; ++k) {
+            float f;
+            std::memcpy(&f, rec + 4 * k, 4);
+            if (!std::isfinite(f)) return true;
+        }
+    }
+    return false;
+}
+
+scene::Mesh readBinaryStlDirect(const std::string& data) {
+    scene::Mesh mesh;
+    const size_t n = (data.size() - 84) / 50;
+    mesh.positions.resize(3 * n);
+    mesh.indices.resize(3 * n);
+    for (size_t t = 0; t < n; ++t) {
+        std::memcpy(&mesh.positions[3 * t], data.data() + 84 + 50 * t + 12, 36);
+        for (uint32_t k = 0; k < 3; ++k) mesh.indices[3 * t + k] = static_cast<uint32_t>(3 * t + k);
+    }
+    return mesh;
+}
+
+// ---- OFF -------------------------------------------------------------------------------------
+
+void validateOff(const std::string& path, uint64_t size) {
+    const std::string data = readAll(path, size);
+    LineScanner lines{data};
+    std::string_view line;
+    std::vector<std::string_view> tok;
+    // OpenMesh reads the header line, then the counts with operator>> (no comments in between).
+    if (!lines.nextLine(line)) fail(path, "empty OFF file");
+    tokenize(line, tok);
+    if (tok.empty() || tok[0].size() < 3 || tok[0].substr(tok[0].size() - 3) != "OFF")
+        fail(path, "missing OFF header (corrupt file)");
+    const std::string_view kind = tok[0].substr(0, tok[0].size() - 3);
+    if (kind.find_first_not_of("STCN") != std::string_view::npos)
+        fail(path, "unsupported OFF variant '" + std::string(tok[0]) + "' (only 3D OFF, COFF, NOFF, STOFF)");
+    if (tok.size() > 1 && tok[1] == "BINARY") fail(path, "binary OFF is not supported; save it as ASCII OFF");
+    if (tok.size() > 1) fail(path, "counts on the OFF header line are not supported; put them on the next line");
+    // OpenMesh reads the counts and every value with operator>> across lines, then skips the
+    // rest of a vertex line (and of a face line in COFF only). Lines are held to exactly that
+    // layout, so what is checked here is what OpenMesh will read.
+    if (!lines.nextDataLine(line, false)) fail(path, "OFF header has no vertex/face counts (truncated file)");
+    tokenize(line, tok);
+    int64_t nv = -1, nf = -1, ne = -1;
+    if (tok.size() != 3 || !parseInt(tok[0], nv) || !parseInt(tok[1], nf) || !parseInt(tok[2], ne) || nv < 0 ||
+        nf < 0)
+        fail(path, "OFF counts line is not 'vertices faces edges' (corrupt file)");
+    // A vertex needs at least "0 0 0\n", a face at least "3 0 1 2\n".
+    checkCounts(path, nv, nf, 6 * uint64_t(nv) + 8 * uint64_t(nf), size - lines.pos);
+    const size_t vertexValues = kind.find('N') != std::string_view::npos ? 6 : 3;
+    for (int64_t v = 0; v < nv; ++v) {
+        if (!lines.nextDataLine(line, false))
+            fail(path, "has " + std::to_string(v) + " of " + std::to_string(nv) + " vertices (truncated file)");
+        tokenize(line, tok);
+        if (tok.size() < vertexValues)
+            fail(path, "vertex " + std::to_string(v) + " has fewer than " + std::to_string(vertexValues) + " values");
+    }
+    const bool faceColours = kind.find('C') != std::string_view::npos;
+    for (int64_t f = 0; f < nf; ++f) {
+        if (!lines.nextDataLine(line, false))
+            fail(path, "has " + std::to_string(f) + " of " + std::to_string(nf) + " faces (truncated file)");
+        tokenize(line, tok);
+        checkTextFace(path, tok, f, nv, faceColours);
+    }
+}
+
+// ---- PLY -------------------------------------------------------------------------------------
+
+struct PlyProperty {
+    std::string name;
+    int size = 0;          // scalar size in bytes, or the list's item size
+    int countSize = 0;     // list count size in bytes; 0 for a scalar
+    bool countSigned = false, itemSigned = false;
+};
+struct PlyElement {
+    std::string name;
+    uint64_t count = 0;
+    std::vector<PlyProperty> props;
+};
+
+int plyTypeSize(std::string_view t, bool& isSigned) {
+    isSigned = !(t.starts_with("u"));
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+    if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32") return 4;
+    if (t == "double" || t == "float64") return 8;
+    return 0;
+}
+
+uint64_t readBinaryUint(const char* p, int size, bool bigEndian, bool isSigned, int64_t& asSigned) {
+    uint64_t v = 0;
+    for (int i = 0; i < size; ++i) {
+        const int b = bigEndian ? i : size - 1 - i;
+        v = (v << 8) | static_cast<unsigned char>(p[b]);
+    }
+    asSigned = static_cast<int64_t>(v);
+    if (isSigned && size < 8 && (v >> (8 * size - 1)) & 1) asSigned = static_cast<int64_t>(v) - (int64_t(1) << (8 * size));
+    return v;
+}
+
+/// One ASCII PLY record must hold exactly its properties' values (OpenMesh reads token by
+/// token: a stray value would shift every later record, and could become a list count).
+void checkPlyTextRecord(const std::string& path, const PlyElement& e, const std::vector<std::string_view>& tok,
+                        uint64_t record, uint64_t vertexCount) {
+    const std::string where = "element '" + e.name + "' record " + std::to_string(record);
+    size_t at = 0;
+    for (const PlyProperty& prop : e.props) {
+        if (!prop.countSize) {
+            if (at++ >= tok.size()) fail(path, where + " has too few values (corrupt file)");
+            continue;
+        }
+        int64_t k = 0;
+        if (at >= tok.size() || !parseInt(tok[at], k) || k < 0 || static_cast<uint64_t>(k) > kMaxFaceValence ||
+            at + 1 + static_cast<uint64_t>(k) > tok.size())
+            fail(path, where + " has a bad list count (corrupt file)");
+        if (e.name == "face" && (prop.name == "vertex_indices" || prop.name == "vertex_index")) {
+            std::vector<std::string_view> face(tok.begin() + at, tok.begin() + at + 1 + k);
+            checkTextFace(path, face, record, vertexCount, false);
+        }
+        at += 1 + k;
+    }
+    if (at != tok.size()) fail(path, where + " has more values than its properties (corrupt file)");
+}
+
+void validatePly(const std::string& path, uint64_t size) {
+    const std::string data = readAll(path, size);
+    LineScanner lines{data};
+    std::string_view line;
+    std::vector<std::string_view> tok;
+    if (!lines.nextLine(line) || !line.starts_with("ply")) fail(path, "missing 'ply' magic (corrupt file)");
+    std::string format;
+    std::vector<PlyElement> elements;
+    bool ended = false;
+    while (!ended && lines.nextLine(line)) {
+        for (const char c : line)
+            if ((c < 32 || c > 126) && c != '\t' && c != '\r') fail(path, "PLY header is not plain text (corrupt file)");
+        tokenize(line, tok);
+        if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
+        if (tok[0] == "end_header") { ended = true; break; }
+        if (tok[0] == "format") {
+            // OpenMesh's header reader loops for ever on a version it cannot parse: accept only
+            // the one version PLY has, exactly.
+            if (tok.size() != 3 || tok[2] != "1.0" ||
+                (tok[1] != "ascii" && tok[1] != "binary_little_endian" && tok[1] != "binary_big_endian"))
+                fail(path, "bad PLY format line (expected 'format ascii|binary_little_endian|binary_big_endian 1.0')");
+            format = tok[1];
+        }
+        else if (tok[0] == "element" && tok.size() >= 3) {
+            // OpenMesh's PLY header reader misbehaves (copies without end) on elements it does not
+            // know; CAD meshes need only vertices and faces.
+            if (tok.size() != 3 || (tok[1] != "vertex" && tok[1] != "face"))
+                fail(path, "unsupported PLY element line (only 'element vertex N' and 'element face N')");
+            int64_t n = 0;
+            if (!parseInt(tok[2], n) || n < 0) fail(path, "bad element count in PLY header");
+            elements.push_back({std::string(tok[1]), static_cast<uint64_t>(n), {}});
+        } else if (tok[0] == "property" && !elements.empty()) {
+            PlyProperty p;
+            if (tok.size() >= 5 && tok[1] == "list") {
+                p.countSize = plyTypeSize(tok[2], p.countSigned);
+                p.size = plyTypeSize(tok[3], p.itemSigned);
+                p.name = tok[4];
+                if (p.countSize == 0 || p.countSize > 4 || p.size == 0) fail(path, "bad list type in PLY header");
+            } else if (tok.size() >= 3) {
+                p.size = plyTypeSize(tok[1], p.itemSigned);
+                p.name = tok[2];
+                if (p.size == 0) fail(path, "unknown property type '" + std::string(tok[1]) + "' in PLY header");
+            } else fail(path, "bad property line in PLY header");
+            elements.back().props.push_back(p);
+        } else fail(path, "unexpected line in PLY header (corrupt file)");
+    }
+    if (!ended) fail(path, "PLY header has no end_header (truncated file)");
+    const bool ascii = format == "ascii";
+    const bool bigEndian = format == "binary_big_endian";
+    if (!ascii && !bigEndian && format != "binary_little_endian") fail(path, "unknown PLY format '" + format + "'");
+
+    uint64_t nv = 0, nf = 0, minBytes = 0;
+    for (const PlyElement& e : elements) {
+        if (e.name == "vertex") nv = e.count;
+        if (e.name == "face") nf = e.count;
+        uint64_t perRecord = 0; // smallest possible record: a token per scalar, a count per list
+        for (const PlyProperty& p : e.props) perRecord += ascii ? 2 : (p.countSize ? p.countSize : p.size);
+        if (e.count > kMaxVertices + kMaxFaces) fail(path, "element '" + e.name + "' count " + std::to_string(e.count) + " over the limit");
+        minBytes += std::max<uint64_t>(perRecord, 1) * e.count;
+    }
+    checkCounts(path, nv, nf, minBytes, size - lines.pos);
+
+    // Walk the body and check every face record (valence and indices) before OpenMesh sees it.
+    const char* p = data.data() + lines.pos;
+    const char* end = data.data() + data.size();
+    for (const PlyElement& e : elements) {
+        const bool isFace = e.name == "face";
+        for (uint64_t r = 0; r < e.count; ++r) {
+            if (ascii) {
+                if (!lines.nextDataLine(line, false))
+                    fail(path, "element '" + e.name + "' has " + std::to_string(r) + " of " + std::to_string(e.count) + " records (truncated file)");
+                tokenize(line, tok);
+                checkPlyTextRecord(path, e, tok, r, nv);
+                continue;
+            }
+            for (const PlyProperty& prop : e.props) {
+                uint64_t items = 1;
+                if (prop.countSize) {
+                    if (end - p < prop.countSize) fail(path, "truncated PLY body in element '" + e.name + "'");
+                    int64_t k = 0;
+                    readBinaryUint(p, prop.countSize, bigEndian, prop.countSigned, k);
+                    p += prop.countSize;
+                    if (k < 0 || static_cast<uint64_t>(k) > kMaxFaceValence)
+                        fail(path, "list of " + std::to_string(k) + " items in element '" + e.name + "' (corrupt file)");
+                    items = static_cast<uint64_t>(k);
+                }
+                if (static_cast<uint64_t>(end - p) < items * prop.size)
+                    fail(path, "truncated PLY body in element '" + e.name + "'");
+                if (isFace && prop.countSize && (prop.name == "vertex_indices" || prop.name == "vertex_index")) {
+                    for (uint64_t j = 0; j < items; ++j) {
+                        int64_t idx = 0;
+                        readBinaryUint(p + j * prop.size, prop.size, bigEndian, prop.itemSigned, idx);
+                        if (idx < 0 || static_cast<uint64_t>(idx) >= nv)
+                            fail(path, "face " + std::to_string(r) + " references vertex " + std::to_string(idx) +
+                                           " but the file has only " + std::to_string(nv) + " vertices");
+                    }
+                }
+                p += items * prop.size;
+            }
+        }
+    }
+}
+
+// ---- reading through OpenMesh ------------------------------------------------------------------
+
+} // namespace
+
+/// Silences OpenMesh's log and error streams for one call: our exceptions say what went wrong,
+/// and a CAD file can make it print one line per non-manifold face. (The streams are global;
+/// loading is not meant to run on several threads at once.)
+class QuietOpenMesh {
+public:
+    QuietOpenMesh() : err_(omerr().is_enabled()), log_(omlog().is_enabled()) {
+        omerr().disable();
+        omlog().disable();
+    }
+    ~QuietOpenMesh() {
+        if (err_) omerr().enable();
+        if (log_) omlog().enable();
+    }
+    QuietOpenMesh(const QuietOpenMesh&) = delete;
+    QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
+
+private:
+    bool err_, log_;
+};
+
+namespace {
+
+scene::Mesh readThroughOpenMesh(const std::string& path, uint64_t size) {
+    FlatImporter importer(size);
+    IO::Options options; // positions and faces only
+    const QuietOpenMesh quiet;
+    if (!IO::IOManager().read(path, importer, options))
+        fail(path, "OpenMesh could not parse the file (corrupt or truncated)");
+    if (importer.badFaces > 0)
+        fail(path, "face " + std::to_string(importer.firstBadFace) + " references vertex " +
+                       std::to_string(importer.firstBadIndex) + " but the file has only " +
+                       std::to_string(importer.positions.size()) + " vertices (" +
+                       std::to_string(importer.badFaces) + " bad faces)");
+    scene::Mesh mesh;
+    mesh.positions = std::move(importer.positions);
+    mesh.indices = std::move(importer.indices);
+    return mesh;
+}
+
+} // namespace
+
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext) {
+    const uint64_t size = checkedFileSize(path);
+    if (ext == "stl") {
+        if (validateStl(path, size) == StlKind::Binary) {
+            const std::string data = readAll(path, size);
+            if (binaryStlHasNonFinite(data)) return readBinaryStlDirect(data);
+        }
+    } else if (ext == "off") {
+        validateOff(path, size);
+    } else if (ext == "ply") {
+        validatePly(path, size);
+    } else if (ext == "obj") {
+        validateObjFile(path);
+    } else {
+        fail(path, "unsupported mesh extension '" + ext + "'");
+    }
+    return readThroughOpenMesh(path, size);
+}
+
+} // namespace geometry::io::detail
+
+namespace geometry::io {
+
+namespace {
+
+using OmMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+/// A TriMesh holding the mesh's triangles. Triangles the halfedge structure refuses
+/// (non-manifold edges, CAD's daily bread) get their own copies of their vertices, so nothing
+/// is lost; loading merges them again.
+OmMesh toOpenMesh(const scene::Mesh& mesh) {
+    OmMesh om;
+    om.reserve(mesh.positions.size(), mesh.indices.size(), mesh.triangleCount());
+    std::vector<OmMesh::VertexHandle> vh;
+    vh.reserve(mesh.positions.size());
+    for (const glm::vec3& p : mesh.positions) vh.push_back(om.add_vertex({p.x, p.y, p.z}));
+    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const uint32_t* tri = &mesh.indices[3 * t];
+        std::array<OmMesh::VertexHandle, 3> f{vh[tri[0]], vh[tri[1]], vh[tri[2]]};
+        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue; // degenerate: nothing to draw
+        if (om.add_face(f[0], f[1], f[2]).is_valid()) continue;
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3& p = mesh.positions[tri[k]];
+            f[k] = om.add_vertex({p.x, p.y, p.z});
+        }
+        om.add_face(f[0], f[1], f[2]);
+    }
+    return om;
+}
+
+} // namespace
+
+void saveMesh(const std::string& path, const scene::Mesh& mesh) {
+    const std::string ext = [&] {
+        std::string e = std::filesystem::path(path).extension().string();
+        if (!e.empty()) e.erase(0, 1);
+        std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        return e;
+    }();
+    if (ext != "obj" && ext != "stl" && ext != "off" && ext != "ply")
+        throw std::runtime_error(path + ": cannot save '." + ext + "' (supported: .obj, .stl, .off, .ply)");
+    for (uint32_t i : mesh.indices)
+        if (i >= mesh.positions.size()) throw std::runtime_error(path + ": mesh has an index out of range");
+    const detail::QuietOpenMesh quiet;
+    OmMesh om = toOpenMesh(mesh);
+    OpenMesh::IO::Options options;
+    if (ext == "stl") {
+        options += OpenMesh::IO::Options::Binary; // compact, and what CAD tools exchange
+        om.request_face_normals();
+        om.update_face_normals();
+        options += OpenMesh::IO::Options::FaceNormal;
+    }
+    if (!OpenMesh::IO::write_mesh(om, path, options))
+        throw std::runtime_error(path + ": cannot write file");
+}
+
+} // namespace geometry::io

@@ -1,0 +1,76 @@
+#pragma once
+// Scene files (resources/scenes/*.json): meshes from model files or built-in scenes, placed by
+// a transform each, an optional ground plane, camera, light, named canonical views and camera or
+// light paths. Also resolveScene(), which turns whatever --scene names (a built-in scene, a scene
+// file, a model file) into a scene.
+//
+// Layout (every key optional unless marked; unknown keys are errors so typos cannot pass):
+//   { "name": "...", "description": "...",
+//     "meshes": [ { "file": "model.stl" | "builtin": "platform" | "plane",        (one of the two)
+//                   "params": {"triangles": 250000, "seed": 1},                 (platform only)
+//                   "translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s | [sx,sy,sz],
+//                   "color": [r,g,b] } ],
+//     "ground": { "size": 200, "height": 0, "color": [r,g,b] },
+//     "camera": { "eye": [..], "target": [..], "up": [..], "fov_y": 60, "near": 0.5, "far": 1000 },
+//     "light": { "direction": [..] },
+//     "views": { "NAME": { "camera": {...}, "light": {...} } },
+//     "paths": { "NAME": { "camera": [ {"eye": [..], "target": [..]}, ... ], "light": [ [dx,dy,dz], ... ] } } }
+// File paths are relative to the scene file's folder. Camera and light objects may be partial:
+// missing members keep the scene's camera and light (for the top-level camera: the camera of the
+// first built-in entry, else one framed on the meshes). A file has the views it names, no more
+// (no implicit "default").
+#include "geometry/io/model_loader.h"
+#include "geometry/scene/scene.h"
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace geometry::io {
+
+/// Files above this size are refused before parsing (a scene file is a few hundred lines at most).
+inline constexpr std::size_t kMaxSceneFileBytes = 1u << 20;
+/// Objects and arrays may nest at most this deep (the deepest legal member uses 6 levels).
+inline constexpr int kMaxSceneFileDepth = 16;
+
+/// A named camera + light pair, for benchmarks and sweeps that must see the same thing every run.
+struct CanonicalView {
+    scene::Camera camera;
+    scene::DirectionalLight light;
+};
+
+/// A sequence of cameras or of light directions (or both), for animated sweeps.
+struct ScenePath {
+    std::vector<scene::Camera> cameras;
+    std::vector<glm::vec3> lights;
+};
+
+struct SceneFile {
+    scene::Scene scene;
+    std::map<std::string, CanonicalView> views;
+    std::map<std::string, ScenePath> paths;
+};
+
+/// Reads a scene file. Throws std::runtime_error with a one-line message "PATH: KEY.PATH: problem"
+/// (or "PATH: problem" for file-level problems): missing or unreadable file, larger than
+/// kMaxSceneFileBytes, nested deeper than kMaxSceneFileDepth, not JSON, not an object, unknown
+/// keys, wrong types, numbers out of range, a model file that does not load (loadModel's message),
+/// no meshes and no ground, eye == target, near <= 0, far <= near, fov_y outside (0, 180), a zero
+/// light direction. `progress` sees the model loads, scaled to the whole file.
+[[nodiscard]] SceneFile loadSceneFile(const std::string& path, const Progress& progress = {});
+
+/// What --scene names: a built-in scene name (one view, "default"), a scene file (*.json), or a
+/// model file (isModelFile): its meshes on a ground plane 4× their footprint at their lowest point,
+/// a framed camera, defaultLight(), one view "default". Throws std::runtime_error with a one-line
+/// message; for anything else it lists the built-in names and the accepted extensions.
+[[nodiscard]] SceneFile resolveScene(const std::string& nameOrPath, const Progress& progress = {});
+
+/// A 3/4 view from above looking at the centre of `bounds`, far enough that the bounds' sphere
+/// fits the vertical field of view; near = diagonal / 1000, far = diagonal · 3.
+[[nodiscard]] scene::Camera frameCamera(const scene::Aabb& bounds, float fovYDeg = 60.f);
+
+/// A sun at ~55° elevation shining across frameCamera()'s view (γ ≈ 75°), so shadows are seen.
+[[nodiscard]] scene::DirectionalLight defaultLight();
+
+} // namespace geometry::io

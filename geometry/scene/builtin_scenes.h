@@ -1,0 +1,34 @@
+#pragma once
+// Built-in scenes, seeded and deterministic.
+#include "geometry/scene/scene.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace geometry::scene {
+
+struct PlatformParams {
+    uint32_t targetTriangles = 250'000; // the paper's test model size (Barroso §4)
+    uint32_t seed = 1;
+};
+
+/// Offshore-platform-like CAD model: lattice legs and diagonal braces of thin bars, decks with
+/// grating, pipes, railings, a flare boom, on a large sea plane (depth range near 0.5, far ≥ 1000).
+[[nodiscard]] Scene makePlatformScene(const PlatformParams& params = {});
+
+/// Ground plane with a few thin vertical poles: checks with a known answer.
+struct Pole {
+    glm::vec3 base;
+    float height;
+    float radius;
+};
+[[nodiscard]] const std::vector<Pole>& planeScenePoles();
+inline constexpr float kPlaneSceneHalfSize = 40.f;
+[[nodiscard]] Scene makePlaneScene();
+
+[[nodiscard]] const std::vector<std::string>& builtinSceneNames();
+/// Throws std::invalid_argument naming the valid scenes for an unknown name.
+[[nodiscard]] Scene makeBuiltinScene(std::string_view name);
+
+} // namespace geometry::scene

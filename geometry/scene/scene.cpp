@@ -1,0 +1,70 @@
+#include "geometry/scene/scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <algorithm>
+#include <cmath>
+
+namespace geometry::scene {
+
+Aabb Mesh::worldBounds() const noexcept {
+    Aabb local;
+    for (const auto& p : positions) local.add(p);
+    return local.transformed(transform);
+}
+
+glm::vec3 Camera::viewDir() const noexcept {
+    const glm::vec3 d = target - eye;
+    const float len = glm::length(d);
+    return len > 0.f && std::isfinite(len) ? d / len : glm::vec3(0.f, 0.f, -1.f);
+}
+
+glm::mat4 Camera::view() const noexcept {
+    const glm::vec3 v = viewDir();
+    // Keep lookAt well defined when looking straight along `up`.
+    glm::vec3 u = up;
+    if (std::abs(glm::dot(glm::normalize(u), v)) > 0.999f) u = std::abs(v.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+    return glm::lookAt(eye, eye + v, u);
+}
+
+glm::mat4 Camera::projection(float aspect) const noexcept {
+    return glm::perspective(glm::radians(fovYDeg), aspect > 0.f ? aspect : 1.f, near, far);
+}
+
+glm::vec3 DirectionalLight::l() const noexcept {
+    const float len = glm::length(direction);
+    return len > 0.f && std::isfinite(len) ? direction / len : glm::vec3(0.f, -1.f, 0.f);
+}
+
+Aabb Scene::bounds() const noexcept {
+    Aabb b;
+    for (const auto& m : meshes) {
+        if (!m.chunks.empty())
+            for (const auto& c : m.chunks) b.add(c.bounds);
+        else
+            b.add(m.worldBounds());
+    }
+    return b;
+}
+
+size_t Scene::triangleCount() const noexcept {
+    size_t n = 0;
+    for (const auto& m : meshes) n += m.triangleCount();
+    return n;
+}
+
+static float acosDeg(float c) noexcept {
+    if (!std::isfinite(c)) return 0.f;
+    return glm::degrees(std::acos(std::clamp(c, -1.f, 1.f)));
+}
+
+float gammaDeg(const glm::vec3& v, const glm::vec3& l) noexcept {
+    const float d = glm::length(v) * glm::length(l);
+    return d > 0.f ? acosDeg(std::abs(glm::dot(v, l)) / d) : 0.f;
+}
+
+float lightViewAngleDeg(const glm::vec3& v, const glm::vec3& l) noexcept {
+    const float d = glm::length(v) * glm::length(l);
+    return d > 0.f ? acosDeg(glm::dot(v, l) / d) : 0.f;
+}
+
+} // namespace geometry::scene

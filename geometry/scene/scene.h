@@ -1,0 +1,72 @@
+#pragma once
+// The scene model: a flat list of meshes, one camera, one directional light. Nothing more
+// (DESIGN §2: "model no more of a scene than it needs").
+#include "geometry/scene/aabb.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace geometry::scene {
+
+/// A contiguous run of triangles in a mesh's index buffer, with world-space bounds, so that
+/// shadow and eye passes can cull casters per split (DESIGN §3.4).
+struct Chunk {
+    uint32_t firstTriangle = 0;
+    uint32_t triangleCount = 0;
+    Aabb bounds; // world space
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions; // object space
+    std::vector<glm::vec3> normals;   // object space, one per position
+    std::vector<uint32_t> indices;    // triangles
+    glm::vec3 color{0.7f};
+    glm::mat4 transform{1.f};         // object → world
+    std::vector<Chunk> chunks;        // filled by chunkMesh()
+    /// Holds open surfaces (quads, grids) that must cast from both faces. Solids cast from their
+    /// faces towards the light alone, which halves shadow-pass rasterization.
+    bool twoSided = true;
+
+    [[nodiscard]] size_t triangleCount() const noexcept { return indices.size() / 3; }
+    [[nodiscard]] Aabb worldBounds() const noexcept;
+};
+
+struct Camera {
+    glm::vec3 eye{0.f, 2.f, 10.f};
+    glm::vec3 target{0.f};
+    glm::vec3 up{0.f, 1.f, 0.f};
+    float fovYDeg = 60.f; // full vertical field of view (φ = fovY/2)
+    float near = 0.5f;    // n
+    float far = 1000.f;   // f
+
+    [[nodiscard]] glm::vec3 viewDir() const noexcept; // v, unit
+    [[nodiscard]] glm::mat4 view() const noexcept;
+    [[nodiscard]] glm::mat4 projection(float aspect) const noexcept;
+};
+
+/// Directional light; `direction` is l, pointing from the light into the scene.
+struct DirectionalLight {
+    glm::vec3 direction{-0.4f, -1.f, -0.3f};
+    [[nodiscard]] glm::vec3 l() const noexcept;
+};
+
+struct Scene {
+    std::string name;
+    std::vector<Mesh> meshes;
+    Camera camera;
+    DirectionalLight light;
+
+    [[nodiscard]] Aabb bounds() const noexcept; // S, world space
+    [[nodiscard]] size_t triangleCount() const noexcept;
+};
+
+/// γ (Barroso) = θ (Zhang): the smallest angle between light and view directions,
+/// acos(|v·l|) in degrees, in [0, 90]. NaN-safe: degenerate input gives 0.
+[[nodiscard]] float gammaDeg(const glm::vec3& v, const glm::vec3& l) noexcept;
+/// acos(v·l) in degrees, in [0, 180]: 0 when the light shines from behind the eye along the
+/// view, 90 perpendicular, 180 when it faces the camera (the dueling frusta).
+[[nodiscard]] float lightViewAngleDeg(const glm::vec3& v, const glm::vec3& l) noexcept;
+
+} // namespace geometry::scene

@@ -1,0 +1,23 @@
+#include "geometry/shadow/culling.h"
+
+namespace geometry::shadow {
+
+bool intersectsClipVolume(const scene::Aabb& box, const glm::mat4& viewProj) noexcept {
+    if (box.empty()) return false;
+    // Clip-space corners; a box is culled when all corners fail the same plane test.
+    int outside[6] = {};
+    for (const auto& c : box.corners()) {
+        const glm::vec4 p = viewProj * glm::vec4(c, 1.f);
+        outside[0] += p.x < -p.w;
+        outside[1] += p.x > p.w;
+        outside[2] += p.y < -p.w;
+        outside[3] += p.y > p.w;
+        outside[4] += p.z < -p.w;
+        outside[5] += p.z > p.w;
+    }
+    for (int k : outside)
+        if (k == 8) return false;
+    return true;
+}
+
+} // namespace geometry::shadow

@@ -1,0 +1,30 @@
+#pragma once
+// Line overlays for the light views: what the plan did, drawn in the map's own (warped) space
+// or in the unwarped light view. Segments are world space unless `inMapNdc`; colours are the
+// renderer's business, chosen by kind.
+#include "geometry/shadow/shadow_plan.h"
+
+#include <vector>
+
+namespace geometry::shadow {
+
+enum class OverlayKind { SceneBounds, ViewFrustum, SplitFrustum, FocusBody, WarpFrustum, Count };
+
+struct OverlaySegment {
+    glm::vec3 a{0.f}, b{0.f};
+    OverlayKind kind = OverlayKind::SceneBounds;
+    bool inMapNdc = false; // a, b are the split map's normalized device coordinates (x, y)
+};
+
+/// Overlays for split `split`'s warped map: S, V, V_i, the outline of B_i as the map sees it (2D
+/// convex hull of its points in map coordinates) and P (the map volume). World segments are to be
+/// drawn through the split's lightViewProj with depth clamping; GL clips what lies outside.
+[[nodiscard]] std::vector<OverlaySegment> warpedViewOverlays(const ShadowPlan& plan, int split);
+
+/// Overlays for the unwarped light view: S, V, and every split's V_i, B_i outline and P.
+[[nodiscard]] std::vector<OverlaySegment> unwarpedViewOverlays(const ShadowPlan& plan);
+
+/// 2D convex hull (counter-clockwise) of points; collinear points dropped.
+[[nodiscard]] std::vector<glm::vec2> convexHull2D(std::vector<glm::vec2> points);
+
+} // namespace geometry::shadow

@@ -1,0 +1,85 @@
+#pragma once
+// Shadow settings, declared once: each key's name, help and range live in settingsDeclaration(),
+// its default in the member initialiser below. Widgets, JSON presets, `--set key=value` and
+// validation are all derived from that one table.
+#include "geometry/shadow/splits.h"
+#include "geometry/shadow/warp.h"
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace geometry::shadow {
+
+/// Bias types (Barroso Table 1; Scherzer §4.2; DESIGN §3.5).
+enum class BiasType { None, Constant, Slope, SecondDepth, Midpoint, DualDepth, NormalOffset };
+
+struct BiasSettings {
+    BiasType type = BiasType::Constant;
+    float constant = 0.05f;    // bias.constant: z_offset, scene units along l
+    float slope = 1.5f;        // bias.slope: polygon-offset factor
+    float units = 4.f;         // bias.units: polygon-offset units
+    float zMax = 0.5f;         // bias.z_max: dual-depth cap, scene units
+    float normalOffset = 1.f;  // bias.normal_offset: × world-space texel size
+    bool linearZ = false;      // bias.linear_z: store linear light depth (Scherzer §4.2)
+    bool tangentPlane = false; // bias.tangent_plane: PCF reference depth on the receiver's plane
+};
+
+/// Filters (Barroso §2.2; Scherzer §4.3; DESIGN §3.6).
+enum class FilterType { None, Hw2x2, Pcf, Disk, Vsm };
+
+struct FilterSettings {
+    FilterType type = FilterType::Hw2x2;
+    int kernel = 3;              // filter.kernel: k×k PCF taps / VSM blur width, odd
+    int taps = 16;               // filter.taps: disk taps
+    float radius = 2.f;          // filter.radius: disk radius, texels
+    float bleedReduction = 0.2f; // filter.bleed_reduction: VSM light-bleeding cut
+    int eyeBlurIterations = 0;   // filter.eye_blur.iterations: Scherzer's eye-space blur, 0 = off
+    float eyeBlurFalloff = 0.05f; // filter.eye_blur.falloff: how fast the blur shrinks with view depth
+};
+
+struct ShadowSettings {
+    int resolution = 2048;      // shadow_map.resolution
+    BiasSettings bias;
+    FilterSettings filter;
+    WarpParams warp{WarpMethod::Uniform};
+    WarpDirection direction = WarpDirection::Standard;
+    SplitParams splits;
+};
+
+struct SettingInfo {
+    enum class Kind { Int, Float, Bool, Choice };
+    std::string_view key;
+    std::string_view help;
+    Kind kind = Kind::Float;
+    double min = 0, max = 0;                // Int, Float: valid range (inclusive)
+    bool odd = false;                       // Int: only odd values
+    std::vector<std::string_view> choices;  // Choice: names in enum order
+    bool logScale = false;                  // a hint for widgets
+    std::function<double(const ShadowSettings&)> get; // Choice: index; Bool: 0/1
+    std::function<void(ShadowSettings&, double)> set;
+
+    [[nodiscard]] std::string format(const ShadowSettings& s) const;
+    [[nodiscard]] std::string rangeText() const;
+};
+
+[[nodiscard]] const std::vector<SettingInfo>& settingsDeclaration();
+/// nullptr for an unknown key.
+[[nodiscard]] const SettingInfo* findSetting(std::string_view key) noexcept;
+
+/// Parses and applies one `key=value` / (key, value); throws std::invalid_argument naming the key
+/// and its valid range or choices.
+void applySetting(ShadowSettings& s, std::string_view key, std::string_view value);
+void applyAssignment(ShadowSettings& s, std::string_view keyEqualsValue);
+
+/// Every key whose value is outside its range (or NaN), as "key: value is outside range" lines.
+[[nodiscard]] std::vector<std::string> validate(const ShadowSettings& s);
+/// Throws std::invalid_argument with the first problem validate() finds.
+void validateOrThrow(const ShadowSettings& s);
+
+/// Camera frustum checks for the planner's formulas: n > 0, f > n, 0 < fov_y < 180, all finite.
+/// Throws std::invalid_argument naming the key.
+void validateFrustum(double near, double far, double fovYDeg);
+
+} // namespace geometry::shadow

@@ -1,0 +1,255 @@
+#include "geometry/shadow/shadow_plan.h"
+
+#include "geometry/shadow/focus.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <algorithm>
+#include <cmath>
+
+namespace geometry::shadow {
+
+namespace {
+
+using dvec3 = glm::dvec3;
+using dvec4 = glm::dvec4;
+using dmat4 = glm::dmat4;
+
+/// Beyond this n'/(d + n) a warp differs from uniform by less than float precision: use uniform.
+constexpr double kUniformRatio = 1e5;
+
+/// Any unit vector ⊥ l.
+dvec3 perpendicular(const dvec3& l) noexcept {
+    const dvec3 helper = std::abs(l.y) < 0.9 ? dvec3(0, 1, 0) : dvec3(1, 0, 0);
+    return glm::normalize(glm::cross(l, helper));
+}
+
+struct Box {
+    dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
+    void add(const dvec3& p) noexcept { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+};
+
+/// Maps `box` onto the cube [−1, 1]³, with a small margin so boundary points stay inside.
+dmat4 fitUnitCube(Box box) noexcept {
+    const dvec3 margin = glm::max((box.hi - box.lo) * 1e-5, dvec3(1e-7));
+    box.lo -= margin;
+    box.hi += margin;
+    dmat4 m(1.0);
+    for (int k = 0; k < 3; ++k) {
+        m[k][k] = 2.0 / (box.hi[k] - box.lo[k]);
+        m[3][k] = -(box.hi[k] + box.lo[k]) / (box.hi[k] - box.lo[k]);
+    }
+    return m;
+}
+
+dvec3 project(const dmat4& m, const dvec3& p) noexcept {
+    const dvec4 c = m * dvec4(p, 1.0);
+    return dvec3(c) / c.w;
+}
+
+/// Window depth [0, 1] of p under m.
+double depth01(const dmat4& m, const dvec3& p) noexcept { return project(m, p).z * 0.5 + 0.5; }
+
+glm::vec2 depthRangeInMap(const dmat4& m, const std::vector<glm::vec3>& points) noexcept {
+    glm::vec2 r{1.f, 0.f};
+    for (const auto& p : points) {
+        const float d = std::clamp(float(depth01(m, dvec3(p))), 0.f, 1.f);
+        r = {std::min(r.x, d), std::max(r.y, d)};
+    }
+    return r.x <= r.y ? r : glm::vec2(0.f, 1.f);
+}
+
+/// [lo, hi] of l·x: casters up to S's light-facing side, receivers down to B's far side.
+glm::vec2 linearDepthRange(const std::vector<glm::vec3>& body, const dvec3& l, const scene::Aabb& S) noexcept {
+    double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+    for (const auto& p : body) hi = std::max(hi, glm::dot(dvec3(p), l)), lo = std::min(lo, glm::dot(dvec3(p), l));
+    for (const auto& c : S.corners()) lo = std::min(lo, glm::dot(dvec3(c), l));
+    const double pad = std::max(1e-4 * (hi - lo), 1e-6);
+    return {float(lo - pad), float(hi + pad)};
+}
+
+/// World corners of clip space's unit cube under `viewProj` (bits x, y, z: −1 or +1).
+std::array<glm::vec3, 8> unitCubeInWorld(const dmat4& viewProj) noexcept {
+    const dmat4 inv = glm::inverse(viewProj);
+    std::array<glm::vec3, 8> out{};
+    for (int i = 0; i < 8; ++i) {
+        const dvec4 w = inv * dvec4((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0, 1.0);
+        out[i] = glm::vec3(std::abs(w.w) > 1e-300 ? dvec3(w) / w.w : dvec3(0.0));
+    }
+    return out;
+}
+
+/// Orthographic light view over every B_i, the eye and the warp centres, a little larger.
+glm::mat4 unwarpedView(const ShadowPlan& plan) noexcept {
+    const dmat4 view = glm::lookAt(dvec3(0.0), dvec3(plan.l), std::abs(plan.l.y) < 0.9f ? dvec3(0, 1, 0) : dvec3(1, 0, 0));
+    Box box;
+    const auto add = [&](const glm::vec3& p) { box.add(dvec3(view * dvec4(dvec3(p), 1.0))); };
+    add(plan.eye);
+    for (const auto& s : plan.splits) {
+        for (const auto& p : s.body) add(p);
+        if (s.warped()) add(s.warpCentre);
+    }
+    for (const auto& c : plan.sceneBounds.corners()) box.lo.z = std::min(box.lo.z, dvec3(view * dvec4(dvec3(c), 1.0)).z),
+                                                     box.hi.z = std::max(box.hi.z, dvec3(view * dvec4(dvec3(c), 1.0)).z);
+    // Square, centred, 10 % margin, so the picture is not stretched.
+    const glm::dvec2 centre = 0.5 * (glm::dvec2(box.lo) + glm::dvec2(box.hi));
+    const double half = 0.55 * std::max({box.hi.x - box.lo.x, box.hi.y - box.lo.y, 1e-3});
+    box.lo = dvec3(centre.x - half, centre.y - half, box.lo.z);
+    box.hi = dvec3(centre.x + half, centre.y + half, box.hi.z);
+    dmat4 flipZ(1.0);
+    flipZ[2][2] = -1.0;
+    std::swap(box.lo.z, box.hi.z);
+    box.lo.z = -box.lo.z;
+    box.hi.z = -box.hi.z;
+    return glm::mat4(fitUnitCube(box) * flipZ * view);
+}
+
+struct SplitFrame {
+    dmat4 lightView;   // world → light space L
+    dmat4 lightProj;   // L → shadow clip space
+    dvec3 warpCentre;  // world
+    double nPrime;
+    double d;
+};
+
+/// Builds L and the projection after it for B (Wimmer's LiSPSM construction, DESIGN §3.2).
+/// B's points pulled back to S's light-facing boundary are fitted too, so every caster between
+/// B and the light stays in the map.
+SplitFrame frameForSplit(const std::vector<glm::vec3>& body, const dvec3& l, const dvec3& vp, const dvec3& eye,
+                         const scene::Aabb& S, double nPrime) {
+    SplitFrame out{};
+    out.lightView = glm::lookAt(dvec3(0.0), l, vp); // −z along l, +y along V_P
+    std::vector<dvec3> pts;
+    pts.reserve(body.size() * 2);
+    double zTop = std::numeric_limits<double>::lowest(); // light space +z points towards the light
+    for (const auto& c : S.corners()) zTop = std::max(zTop, dvec3(out.lightView * dvec4(dvec3(c), 1.0)).z);
+    Box bodyBox;
+    for (const auto& p : body) {
+        const dvec3 q = dvec3(out.lightView * dvec4(dvec3(p), 1.0));
+        bodyBox.add(q);
+        pts.push_back(q);
+        pts.push_back({q.x, q.y, std::max(q.z, zTop)});
+    }
+    out.d = bodyBox.hi.y - bodyBox.lo.y; // extent of B along V_P
+    const dvec3 eyeL = dvec3(out.lightView * dvec4(eye, 1.0));
+    out.nPrime = nPrime;
+    if (!(nPrime < kUniformRatio * (out.d + 1.0))) {
+        out.nPrime = kUniform;
+        Box box;
+        for (const auto& q : pts) box.add({q.x, q.y, -q.z}); // depth grows away from the light
+        dmat4 flipZ(1.0);
+        flipZ[2][2] = -1.0;
+        out.lightProj = fitUnitCube(box) * flipZ;
+        out.warpCentre = eye;
+        return out;
+    }
+    // P looks along +y of L from c, which sits n' before B's near boundary along V_P.
+    const dvec3 c(eyeL.x, bodyBox.lo.y - nPrime, 0.5 * (bodyBox.lo.z + std::max(bodyBox.hi.z, zTop)));
+    dmat4 toP(0.0); // L → P's eye space: x = x_L, y = z_L (towards the light), z = −y_L (looks along +y_L)
+    toP[0][0] = 1.0;
+    toP[2][1] = 1.0;
+    toP[1][2] = -1.0;
+    toP[3] = dvec4(-c.x, -c.z, c.y, 1.0);
+    const dmat4 P = glm::frustum(-1.0, 1.0, -1.0, 1.0, nPrime, nPrime + std::max(out.d, 1e-9));
+    dmat4 swizzle(0.0); // (X, Y, Z) → (X, Z, −Y): image plane (lateral, warp axis), depth away from light
+    swizzle[0][0] = 1.0;
+    swizzle[2][1] = 1.0;
+    swizzle[1][2] = -1.0;
+    swizzle[3][3] = 1.0;
+    const dmat4 warp = swizzle * P * toP;
+    Box box;
+    for (const auto& q : pts) box.add(project(warp, q));
+    out.lightProj = fitUnitCube(box) * warp;
+    out.warpCentre = dvec3(glm::inverse(out.lightView) * dvec4(c, 1.0));
+    return out;
+}
+
+} // namespace
+
+dvec3 warpDirection(WarpDirection mode, const dvec3& l, const dvec3& v, const dvec3& eye,
+                    const std::vector<glm::vec3>& body) noexcept {
+    const auto projectOnPlane = [&](const dvec3& x) { return x - glm::dot(x, l) * l; };
+    if (mode == WarpDirection::Middle && !body.empty()) {
+        // Scherzer's middle vector: the sum of eye → B vectors, projected onto the light's plane.
+        dvec3 sum(0.0);
+        double scale = 0.0;
+        for (const auto& p : body) {
+            const dvec3 e = dvec3(p) - eye;
+            const double len = glm::length(e);
+            if (len > 0.0) sum += e / len, scale += 1.0;
+        }
+        const dvec3 m = projectOnPlane(sum);
+        if (scale > 0.0 && glm::length(m) > 1e-6 * scale) return glm::normalize(m);
+    }
+    const dvec3 s = projectOnPlane(v); // = (l × v) × l
+    return glm::length(s) > 1e-9 ? glm::normalize(s) : dvec3(0.0);
+}
+
+ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
+                       const scene::DirectionalLight& light, const Viewport& viewport) {
+    ShadowPlan plan;
+    plan.l = light.l();
+    plan.v = camera.viewDir();
+    plan.gammaDeg = scene::gammaDeg(plan.v, plan.l);
+    plan.lightViewAngleDeg = scene::lightViewAngleDeg(plan.v, plan.l);
+    plan.eyeView = camera.view();
+    plan.eyeProj = camera.projection(viewport.aspect());
+    plan.receiverOffset = settings.bias.type == BiasType::Constant ? settings.bias.constant : 0.f;
+    plan.bias = settings.bias;
+    plan.filter = settings.filter;
+
+    const dvec3 l(plan.l), v(plan.v), eye(camera.eye);
+    const double gamma = glm::radians(double(plan.gammaDeg));
+    const double phi = glm::radians(double(camera.fovYDeg)) * 0.5;
+    const std::vector<double> c = splitDistances(settings.splits, camera.near, camera.far, gamma);
+    plan.viewFrustum = frustumCorners(camera, viewport.aspect(), camera.near, camera.far);
+    plan.sceneBounds = S;
+    plan.eye = camera.eye;
+
+    for (int i = 0; i + 1 < int(c.size()); ++i) {
+        SplitPlan split;
+        split.near = float(c[i]);
+        split.far = float(c[i + 1]);
+        split.resolution = splitResolution(settings.splits, settings.resolution, i);
+        split.frustum = frustumCorners(camera, viewport.aspect(), split.near, split.far);
+        if (c[i + 1] > c[i]) split.body = focusBody(split.frustum, S, plan.l);
+        if (split.empty()) {
+            plan.splits.push_back(std::move(split));
+            continue;
+        }
+        dvec3 vp = warpDirection(settings.direction, l, v, eye, split.body);
+        const bool degenerate = glm::length(vp) == 0.0;
+        if (degenerate) vp = perpendicular(l); // light ∥ view: any orientation, and no warp
+        // d for the n' formulas is B's extent along V_P (LiSPSM); compute it before choosing n'.
+        double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+        for (const auto& p : split.body) {
+            const double t = glm::dot(dvec3(p), vp);
+            lo = std::min(lo, t);
+            hi = std::max(hi, t);
+        }
+        const double nPrime = degenerate ? kUniform
+                                         : warpNPrime(settings.warp, c[i], c[i + 1], phi, gamma, hi - lo);
+        const SplitFrame frame = frameForSplit(split.body, l, vp, eye, S, nPrime);
+        const dmat4 viewProj = frame.lightProj * frame.lightView;
+        split.lightView = glm::mat4(frame.lightView);
+        split.lightProj = glm::mat4(frame.lightProj);
+        split.lightViewProj = glm::mat4(viewProj);
+        split.nPrime = frame.nPrime;
+        split.lambda = lambdaFromNPrime(frame.nPrime, c[i], c[i + 1], phi, gamma);
+        split.warpDir = glm::vec3(vp);
+        split.warpCentre = glm::vec3(frame.warpCentre);
+        split.warpDepth = float(frame.d);
+        split.bodyDepthRange = depthRangeInMap(viewProj, split.body);
+        split.mapVolume = unitCubeInWorld(viewProj);
+        split.linearDepthRange = linearDepthRange(split.body, l, S);
+        dvec3 centre(0.0);
+        for (const auto& p : split.body) centre += dvec3(p);
+        centre /= double(split.body.size());
+        const double step = std::max(1e-3 * frame.d, 1e-3);
+        split.depthPerUnit = float(std::max(0.0, (depth01(viewProj, centre + step * l) - depth01(viewProj, centre)) / step));
+        plan.splits.push_back(std::move(split));
+    }
+    plan.unwarpedViewProj = unwarpedView(plan);
+    return plan;
+}
+
+} // namespace geometry::shadow

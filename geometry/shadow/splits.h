@@ -1,0 +1,29 @@
+#pragma once
+// Z-partitioning of [n, f] into k splits (DESIGN §3.4).
+#include <string_view>
+#include <vector>
+
+namespace geometry::shadow {
+
+enum class SplitScheme { Uniform, Log, Practical, Pssm, Adaptive };
+
+struct SplitParams {
+    int count = 1;                 // k, 1..8
+    SplitScheme scheme = SplitScheme::Practical;
+    double lambda = 0.5;           // practical: weight of the log scheme
+    double ratio = 2.0;            // pssm: each split this much longer than the one before
+    double alpha = 2.0;            // adaptive: f_i / n_i at γ = 0 (Barroso eq 19)
+    bool resolutionFalloff = false; // res_i = res_1 / 2^(i−1)
+};
+
+/// The k + 1 boundaries C_0 = n < C_1 < … < C_k = f. γ in radians (adaptive only).
+/// Boundaries never leave [n, f]; a scheme that would (adaptive with a large α at small γ) is
+/// clamped at n, which can leave leading splits empty (zero length).
+[[nodiscard]] std::vector<double> splitDistances(const SplitParams& p, double n, double f, double gamma);
+
+/// Resolution of split i (0-based) for a first-split resolution.
+[[nodiscard]] int splitResolution(const SplitParams& p, int resolution, int i) noexcept;
+
+[[nodiscard]] std::string_view splitSchemeName(SplitScheme s) noexcept;
+
+} // namespace geometry::shadow
