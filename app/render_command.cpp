@@ -81,7 +81,7 @@ void addExportOptions(CLI::App& cmd, ExportOptions& e) {
         ->capture_default_str();
     cmd.add_flag("--truth", e.truth, "Ray-trace ground truth (Embree) and report misclassified pixels");
     cmd.add_option("--texel-grid", e.texelGrid, "texels view: draw every N-th texel line")->check(CLI::Range(1, 4096));
-    cmd.add_option("--light-split", e.lightSplit, "light views: show this split's map")->check(CLI::Range(0, 7));
+    cmd.add_option("--light-split", e.lightSplit, "light views: show this split's map")->check(CLI::Range(0, geometry::shadow::kMaxSplits - 1));
     cmd.add_option_function<std::string>(
         "--depth-range",
         [&e](const std::string& text) {

@@ -6,8 +6,33 @@
 
 namespace renderer {
 
+namespace {
+
+/// The shader's source with each `#include "NAME"` line replaced by that built-in source (one level:
+/// included sources include nothing).
+std::string expandIncludes(std::string_view name) {
+    const std::string_view src = shaderSource(name);
+    std::string out;
+    size_t pos = 0;
+    while (pos < src.size()) {
+        size_t eol = src.find('\n', pos);
+        if (eol == std::string_view::npos) eol = src.size();
+        const std::string_view line = src.substr(pos, eol - pos);
+        constexpr std::string_view directive = "#include \"";
+        if (line.starts_with(directive) && line.ends_with('"'))
+            out += shaderSource(line.substr(directive.size(), line.size() - directive.size() - 1));
+        else
+            out += line;
+        out += '\n';
+        pos = eol + 1;
+    }
+    return out;
+}
+
+} // namespace
+
 static GLuint compile(GLenum stage, std::string_view name, std::string_view defines) {
-    std::string src(shaderSource(name));
+    std::string src = expandIncludes(name);
     if (!defines.empty()) {
         const size_t eol = src.find('\n');
         src.insert(eol == std::string::npos ? src.size() : eol + 1, defines);

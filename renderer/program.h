@@ -18,6 +18,7 @@ public:
     Program& operator=(const Program&) = delete;
 
     void use() const noexcept { glUseProgram(id_); }
+    [[nodiscard]] GLuint id() const noexcept { return id_; }
     [[nodiscard]] GLint location(const char* name);
     void set(const char* name, int v) { glUniform1i(location(name), v); }
     void set(const char* name, float v) { glUniform1f(location(name), v); }

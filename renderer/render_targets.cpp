@@ -47,7 +47,8 @@ void LayeredTarget::release() noexcept {
 
 void LayeredTarget::ensure(int resolution, int layers, GLenum colourFormat, bool depth) {
     if (resolution == resolution_ && layers == layers_ && colourFormat == colourFormat_ && depth == hasDepth_) return;
-    if (layers < 1 || layers > 8) throw std::runtime_error("shadow map layers must be 1..8");
+    if (layers < 1 || layers > geometry::shadow::kMaxSplits)
+        throw std::runtime_error("shadow map layers must be 1.." + std::to_string(geometry::shadow::kMaxSplits));
     release();
     if (depth) depth_ = makeTextureArray(GL_DEPTH_COMPONENT32F, resolution, layers, GL_NEAREST);
     if (colourFormat) colour_ = makeTextureArray(colourFormat, resolution, layers, GL_LINEAR);

@@ -1,6 +1,7 @@
 #pragma once
 // Off-screen targets: layered (texture array) targets for shadow maps and VSM moments, the eye
 // pass's buffers, and plain colour targets for the views.
+#include "geometry/shadow/splits.h"
 #include "gl/gl_api.h"
 
 namespace renderer {
@@ -25,7 +26,7 @@ public:
 private:
     void release() noexcept;
     GLuint depth_ = 0, colour_ = 0;
-    GLuint fbos_[8] = {};
+    GLuint fbos_[geometry::shadow::kMaxSplits] = {}; // one per layer
     int resolution_ = 0, layers_ = 0;
     GLenum colourFormat_ = 0;
     bool hasDepth_ = false;

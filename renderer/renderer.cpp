@@ -42,6 +42,10 @@ bool needsPeeling(const geometry::shadow::ShadowPlan& plan) {
 Renderer::Renderer(const geometry::scene::Scene& scene, RendererLimits limits)
     : scene_(std::make_unique<GpuScene>(scene)), limits_(limits) {
     glGenVertexArrays(1, &emptyVao_);
+    glGenBuffers(1, &shadowBlockBuffer_);
+    glBindBuffer(GL_UNIFORM_BUFFER, shadowBlockBuffer_);
+    glBufferData(GL_UNIFORM_BUFFER, sizeof(ShadowBlock), nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
     nearestSampler_ = makeSampler(GL_NEAREST, false);
     compareSampler_ = makeSampler(GL_LINEAR, true);
     linearSampler_ = makeSampler(GL_LINEAR, false);
@@ -50,6 +54,7 @@ Renderer::Renderer(const geometry::scene::Scene& scene, RendererLimits limits)
 
 Renderer::~Renderer() {
     glDeleteVertexArrays(1, &emptyVao_);
+    glDeleteBuffers(1, &shadowBlockBuffer_);
     const GLuint samplers[] = {nearestSampler_, compareSampler_, linearSampler_};
     glDeleteSamplers(3, samplers);
 }
@@ -76,8 +81,12 @@ int Renderer::splitResolution(const geometry::shadow::SplitPlan& split) const no
     return std::min(split.resolution, firstDepth_.resolution());
 }
 
-float Renderer::mapScale(const geometry::shadow::SplitPlan& split) const noexcept {
-    return firstDepth_.resolution() > 0 ? float(splitResolution(split)) / float(firstDepth_.resolution()) : 1.f;
+void Renderer::uploadShadowBlock(const geometry::shadow::ShadowPlan& plan) {
+    const ShadowBlock block = shadowBlock(plan, firstDepth_.resolution());
+    glBindBuffer(GL_UNIFORM_BUFFER, shadowBlockBuffer_);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlockBuffer_);
 }
 
 void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport, const ViewOptions& options) {
@@ -106,7 +115,7 @@ const PassTimes& Renderer::waitForTimings() noexcept {
 }
 
 void Renderer::drawCasters(const geometry::shadow::SplitPlan& split, Program& program, int index, bool backFacesOnly) {
-    program.set("uLightViewProj", split.lightViewProj);
+    program.set("uSplit", index);
     for (const auto& m : scene_->meshes()) {
         // Faces are wound counter-clockwise as seen from the light (the plan's maps never mirror).
         // second depth: back faces only; solids: faces towards the light only; open surfaces: both.
@@ -149,6 +158,7 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
     stats_.shadowResolution = resolution;
     stats_.shadowMemoryBytes = uint64_t(double(resolution) * resolution * layers * bytesPerTexel);
     firstDepth_.ensure(resolution, layers, 0, true);
+    uploadShadowBlock(plan);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -162,15 +172,11 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
     }
     Program& program = depthProgram(linear ? "#define LINEAR_Z\n" : "");
     program.use();
-    program.set("uLightDir", plan.l);
-    program.set("uSlopeBias", slope ? glm::vec2(plan.bias.slope, plan.bias.units) : glm::vec2(0.f));
     for (int i = 0; i < layers; ++i) {
         const auto& split = plan.splits[i];
         firstDepth_.bindLayer(i, splitResolution(split));
         glClear(GL_DEPTH_BUFFER_BIT);
         if (split.empty()) continue;
-        program.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
-                                              1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
         drawCasters(split, program, i, plan.bias.type == BiasType::SecondDepth);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
@@ -187,8 +193,6 @@ void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
     const bool linear = plan.bias.linearZ;
     Program& peel = depthProgram(linear ? "#define LINEAR_Z\n#define PEEL\n" : "#define PEEL\n");
     peel.use();
-    peel.set("uLightDir", plan.l);
-    peel.set("uSlopeBias", glm::vec2(0.f));
     bindTexture(0, GL_TEXTURE_2D_ARRAY, firstDepth_.depthTexture(), nearestSampler_);
     peel.set("uFirstLayer", 0);
     for (int i = 0; i < layers; ++i) {
@@ -196,9 +200,6 @@ void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
         secondDepth_.bindLayer(i, splitResolution(split));
         glClear(GL_DEPTH_BUFFER_BIT);
         if (split.empty()) continue;
-        peel.set("uLayer", i);
-        peel.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
-                                           1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
         drawCasters(split, peel, i, false);
     }
     combineProgram_.use();
@@ -206,15 +207,11 @@ void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
     bindTexture(1, GL_TEXTURE_2D_ARRAY, secondDepth_.depthTexture(), nearestSampler_);
     combineProgram_.set("uFirst", 0);
     combineProgram_.set("uSecond", 1);
-    combineProgram_.set("uDual", plan.bias.type == BiasType::DualDepth ? 1 : 0);
     glDepthFunc(GL_ALWAYS);
     for (int i = 0; i < layers; ++i) {
         const auto& split = plan.splits[i];
         combinedDepth_.bindLayer(i, splitResolution(split));
-        combineProgram_.set("uLayer", i);
-        const float perUnit = linear ? 1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)
-                                     : split.depthPerUnit;
-        combineProgram_.set("uZMax", plan.bias.zMax * perUnit);
+        combineProgram_.set("uSplit", i);
         fullscreen();
     }
     glDepthFunc(GL_LESS);
@@ -228,8 +225,6 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
     momentsTemp_.ensure(res, layers, GL_RG32F, false);
     Program& program = depthProgram("#define MOMENTS\n");
     program.use();
-    program.set("uLightDir", plan.l);
-    program.set("uSlopeBias", glm::vec2(0.f));
     const float far[4] = {1.f, 1.f, 1.f, 1.f}; // empty texels: at the far end, fully lit
     for (int i = 0; i < layers; ++i) {
         const auto& split = plan.splits[i];
@@ -237,8 +232,6 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
         glClearBufferfv(GL_COLOR, 0, far);
         glClear(GL_DEPTH_BUFFER_BIT);
         if (split.empty()) continue;
-        program.set("uLinearRange", glm::vec2(split.linearDepthRange.x,
-                                              1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
         drawCasters(split, program, i, false);
     }
     glDisable(GL_CULL_FACE);
@@ -247,11 +240,9 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
         glDisable(GL_DEPTH_TEST);
         vsmBlurProgram_.use();
         vsmBlurProgram_.set("uMoments", 0);
-        vsmBlurProgram_.set("uRadius", radius);
         for (int i = 0; i < layers; ++i) {
             const int size = splitResolution(plan.splits[i]);
-            vsmBlurProgram_.set("uLayer", i);
-            vsmBlurProgram_.set("uSize", glm::ivec2(size));
+            vsmBlurProgram_.set("uSplit", i);
             momentsTemp_.bindLayer(i, size);
             bindTexture(0, GL_TEXTURE_2D_ARRAY, moments_.colourTexture(), nearestSampler_);
             vsmBlurProgram_.set("uStep", glm::ivec2(1, 0));
@@ -294,9 +285,9 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan, const geometry:
     const auto inView = [&](const geometry::scene::Aabb& box) { return geometry::shadow::intersectsClipVolume(box, viewProj); };
     // Depth pre-pass: the heavy eye shader (filter taps, six targets) then runs once per pixel
     // instead of once per overlapping surface.
-    Program& depthOnly = depthProgram("");
+    Program& depthOnly = depthProgram("#define EYE_DEPTH\n");
     depthOnly.use();
-    depthOnly.set("uLightViewProj", viewProj);
+    depthOnly.set("uViewProj", viewProj);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     for (const auto& m : scene_->meshes()) {
         depthOnly.set("uModel", m.transform);
@@ -307,34 +298,7 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan, const geometry:
     glDepthMask(GL_FALSE);
     eyeProgram_.use();
     eyeProgram_.set("uViewProj", viewProj);
-    eyeProgram_.set("uLightDir", plan.l);
-    eyeProgram_.set("uEye", glm::vec3(glm::inverse(plan.eyeView)[3]));
-    eyeProgram_.set("uViewDir", plan.v);
-    const int count = static_cast<int>(plan.splits.size());
-    eyeProgram_.set("uSplitCount", count);
-    eyeProgram_.set("uArrayResolution", firstDepth_.resolution());
-    for (int i = 0; i < count; ++i) {
-        const auto& split = plan.splits[i];
-        const std::string idx = "[" + std::to_string(i) + "]";
-        eyeProgram_.set(("uLightViewProj" + idx).c_str(), split.lightViewProj);
-        eyeProgram_.set(("uSplitFar" + idx).c_str(), split.far);
-        eyeProgram_.set(("uMapScale" + idx).c_str(), mapScale(split));
-        eyeProgram_.set(("uLinearRange" + idx).c_str(),
-                        glm::vec2(split.linearDepthRange.x,
-                                  1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f)));
-    }
-    const auto& b = plan.bias;
     const auto& f = plan.filter;
-    eyeProgram_.set("uBiasType", static_cast<int>(b.type));
-    eyeProgram_.set("uReceiverOffset", plan.receiverOffset);
-    eyeProgram_.set("uNormalOffset", b.normalOffset);
-    eyeProgram_.set("uLinearZ", b.linearZ ? 1 : 0);
-    eyeProgram_.set("uTangentPlane", b.tangentPlane ? 1 : 0);
-    eyeProgram_.set("uFilter", static_cast<int>(f.type));
-    eyeProgram_.set("uKernel", f.kernel);
-    eyeProgram_.set("uTaps", f.taps);
-    eyeProgram_.set("uRadius", f.radius);
-    eyeProgram_.set("uBleedReduction", f.bleedReduction);
     bindTexture(0, GL_TEXTURE_2D_ARRAY, sampledDepth_, nearestSampler_);
     bindTexture(1, GL_TEXTURE_2D_ARRAY, sampledDepth_, compareSampler_);
     bindTexture(2, GL_TEXTURE_2D_ARRAY, f.type == FilterType::Vsm ? moments_.colourTexture() : 0, linearSampler_);
@@ -358,7 +322,6 @@ void Renderer::eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan) {
         eyeBlurProgram_.use();
         eyeBlurProgram_.set("uMask", 0);
         eyeBlurProgram_.set("uBase", 1);
-        eyeBlurProgram_.set("uFalloff", plan.filter.eyeBlurFalloff);
         bindTexture(1, GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Base), nearestSampler_);
         int target = 0;
         for (int it = 0; it < plan.filter.eyeBlurIterations; ++it)
@@ -393,12 +356,10 @@ void Renderer::lightViewPass(const geometry::shadow::ShadowPlan& plan, const Vie
     lightViewProgram_.use();
     bindTexture(0, GL_TEXTURE_2D_ARRAY, sampledDepth_, nearestSampler_);
     lightViewProgram_.set("uShadowMap", 0);
-    lightViewProgram_.set("uLayer", split);
-    lightViewProgram_.set("uMapScale", mapScale(plan.splits[split]));
+    lightViewProgram_.set("uSplit", split);
     const auto& s = plan.splits[split];
-    const bool linear = plan.bias.linearZ || plan.filter.type == FilterType::Vsm;
     glm::vec2 range = views.depthRange;
-    if (range.x < 0.f) range = linear ? glm::vec2(0.f, 1.f) : s.bodyDepthRange;
+    if (range.x < 0.f) range = plan.linearDepth ? glm::vec2(0.f, 1.f) : s.bodyDepthRange;
     lightViewProgram_.set("uDepthRange", range);
     fullscreen();
     if (views.overlays) lines_.draw(geometry::shadow::warpedViewOverlays(plan, split), s.lightViewProj);
@@ -415,7 +376,6 @@ void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const 
     glDisable(GL_CULL_FACE);
     unlitProgram_.use();
     unlitProgram_.set("uViewProj", plan.unwarpedViewProj);
-    unlitProgram_.set("uLightDir", plan.l);
     for (const auto& m : scene_->meshes()) {
         unlitProgram_.set("uModel", m.transform);
         unlitProgram_.set("uColor", m.color);

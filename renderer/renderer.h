@@ -8,6 +8,7 @@
 #include "line_renderer.h"
 #include "program.h"
 #include "render_targets.h"
+#include "shadow_block.h"
 #include "geometry/shadow/shadow_plan.h"
 
 #include <map>
@@ -94,7 +95,7 @@ private:
     [[nodiscard]] std::vector<glm::vec4> readFloat4(EyeBuffers::Attachment a) const;
     void fullscreen() const noexcept;
     [[nodiscard]] int splitResolution(const geometry::shadow::SplitPlan& split) const noexcept;
-    [[nodiscard]] float mapScale(const geometry::shadow::SplitPlan& split) const noexcept;
+    void uploadShadowBlock(const geometry::shadow::ShadowPlan& plan);
     Program& depthProgram(const std::string& defines);
     void warnOnce(const std::string& message);
 
@@ -109,6 +110,7 @@ private:
     Program unlitProgram_{"eye.vert", "unlit.frag"};
     LineRenderer lines_;
     GLuint emptyVao_ = 0;
+    GLuint shadowBlockBuffer_ = 0; // ShadowBlock (renderer/shadow_block.h), bound at kShadowBlockBinding
     GLuint nearestSampler_ = 0, compareSampler_ = 0, linearSampler_ = 0;
     GLint maxTextureSize_ = 0;
     RendererLimits limits_;

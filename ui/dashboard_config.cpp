@@ -130,7 +130,7 @@ void dashboardFromJson(const json& j, DashboardState& state, WindowGeometry& win
     }
     const json& v = object(j, "views", "views.");
     ViewSettings& vs = s.views;
-    vs.lightSplit = int(number(v, "light_split", "views.", 0, 7, vs.lightSplit));
+    vs.lightSplit = int(number(v, "light_split", "views.", 0, geometry::shadow::kMaxSplits - 1, vs.lightSplit));
     vs.overlays = boolean(v, "overlays", "views.", vs.overlays);
     vs.unwarped = boolean(v, "unwarped", "views.", vs.unwarped);
     vs.heatmap = choice(v, "heatmap", "views.", vs.heatmap, heatmapName);

@@ -143,7 +143,7 @@ const std::vector<SettingInfo>& settingsDeclaration() {
                Kind::Float, 1e-3, 1e3, [](ShadowSettings& s) -> auto& { return s.warp.multiplier; }, true),
         number("warp.visible_far", "lispsm: visible far depth capping n + dz (Scherzer); 0 = off", Kind::Float, 0, 1e7,
                [](ShadowSettings& s) -> auto& { return s.warp.visibleFar; }),
-        number("splits.count", "Number of z-partitions (split shadow maps)", Kind::Int, 1, 8,
+        number("splits.count", "Number of z-partitions (split shadow maps)", Kind::Int, 1, kMaxSplits,
                [](ShadowSettings& s) -> auto& { return s.splits.count; }),
         choice("splits.scheme", "Split scheme: uniform, log (Lloyd), practical (log/uniform blend), pssm "
                "(geometric lengths), adaptive (Barroso eq 19)",

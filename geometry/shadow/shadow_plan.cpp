@@ -248,6 +248,13 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         split.depthPerUnit = float(std::max(0.0, (depth01(viewProj, centre + step * l) - depth01(viewProj, centre)) / step));
         plan.splits.push_back(std::move(split));
     }
+    // Derived once here so that no pass recomputes them.
+    plan.linearDepth = settings.bias.linearZ || settings.filter.type == FilterType::Vsm;
+    for (auto& split : plan.splits) {
+        split.linearDepthScale = 1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f);
+        split.dualDepthCap =
+            settings.bias.zMax * (settings.bias.linearZ ? split.linearDepthScale : split.depthPerUnit);
+    }
     plan.unwarpedViewProj = unwarpedView(plan);
     return plan;
 }

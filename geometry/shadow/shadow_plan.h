@@ -31,7 +31,9 @@ struct SplitPlan {
     std::array<glm::vec3, 8> mapVolume{}; // world corners of the map's unit cube (the warp frustum P as fitted)
     glm::vec2 bodyDepthRange{0.f, 1.f}; // depth of B_i in this map, for display
     glm::vec2 linearDepthRange{0.f, 1.f}; // [lo, hi] of l·x over B_i and the casters up to S (linear z)
+    float linearDepthScale = 1.f;      // 1/(hi − lo): linear depth = (l·x − lo)·scale (Scherzer §4.2)
     float depthPerUnit = 0.f;          // map depth per scene unit along l, at B_i's centre
+    float dualDepthCap = 0.f;          // bias.z_max in this map's depth units (dual depth's cap)
     [[nodiscard]] bool empty() const noexcept { return body.empty(); }
     [[nodiscard]] bool warped() const noexcept { return nPrime < kUniform; }
 };
@@ -53,6 +55,9 @@ struct ShadowPlan {
     float receiverOffset = 0.f;
     BiasSettings bias;     // what the renderer applies, as chosen in the settings
     FilterSettings filter;
+    /// The maps the eye pass compares against hold linear light depth (bias.linear_z, or VSM's
+    /// moments, which are always of linear depth).
+    bool linearDepth = false;
     std::vector<SplitPlan> splits;
 };
 

@@ -7,8 +7,12 @@ namespace geometry::shadow {
 
 enum class SplitScheme { Uniform, Log, Practical, Pssm, Adaptive };
 
+/// The most splits a plan holds: the settings' range, the renderer's texture array and the
+/// shaders' split arrays (generated from this constant) all follow it.
+inline constexpr int kMaxSplits = 8;
+
 struct SplitParams {
-    int count = 1;                 // k, 1..8
+    int count = 1;                 // k, 1..kMaxSplits
     SplitScheme scheme = SplitScheme::Practical;
     double lambda = 0.5;           // practical: weight of the log scheme
     double ratio = 2.0;            // pssm: each split this much longer than the one before

@@ -1,34 +1,34 @@
 #version 430 core
 // Shadow pass fragment. Variants (defines): LINEAR_Z stores linear light depth (Scherzer §4.2),
 // PEEL keeps only surfaces behind the first layer (second depth for midpoint / dual depth),
-// MOMENTS writes VSM moments of linear depth.
+// MOMENTS writes VSM moments of linear depth; EYE_DEPTH is the eye pass's depth pre-pass.
+#include "shadow_block.glsl"
 #if defined(LINEAR_Z) || defined(MOMENTS)
 in vec3 vWorldPos;
 #endif
-uniform vec3 uLightDir;
-uniform vec2 uLinearRange;   // (lo, 1 / (hi − lo)) of l·x for this split
-uniform vec2 uSlopeBias;     // LINEAR_Z: (slope factor, units) applied by hand (polygon offset cannot)
+#ifndef EYE_DEPTH
+uniform int uSplit;
+#endif
 #ifdef PEEL
 uniform sampler2DArray uFirstLayer;
-uniform int uLayer;
 #endif
 #ifdef MOMENTS
 layout(location = 0) out vec2 oMoments;
 #endif
 
 #if defined(LINEAR_Z) || defined(MOMENTS)
-float linearDepth() { return (dot(vWorldPos, uLightDir) - uLinearRange.x) * uLinearRange.y; }
+float linearDepth() { return (dot(vWorldPos, shadow.lightDir) - shadow.splits[uSplit].linearLo) * shadow.splits[uSplit].linearScale; }
 #endif
 
 void main() {
 #ifdef LINEAR_Z
     float z = linearDepth();
-    z += uSlopeBias.x * max(abs(dFdx(z)), abs(dFdy(z))) + uSlopeBias.y * 1e-7;
+    z += shadow.slopeBias.x * max(abs(dFdx(z)), abs(dFdy(z))) + shadow.slopeBias.y * 1e-7; // by hand: polygon offset cannot
 #else
     float z = gl_FragCoord.z;
 #endif
 #ifdef PEEL
-    float first = texelFetch(uFirstLayer, ivec3(gl_FragCoord.xy, uLayer), 0).r;
+    float first = texelFetch(uFirstLayer, ivec3(gl_FragCoord.xy, uSplit), 0).r;
     if (z <= first + 1e-6) discard;
 #endif
 #ifdef MOMENTS

@@ -1,9 +1,15 @@
 #version 430 core
-// Shadow pass: world → shadow clip space of one split.
+// Depth only: the shadow passes draw into split uSplit's map (world → that split's shadow clip
+// space); EYE_DEPTH is the eye pass's depth pre-pass through the camera's uViewProj.
+#include "shadow_block.glsl"
 layout(location = 0) in vec3 aPosition;
 invariant gl_Position; // the eye pass's depth pre-pass (depth.vert) must match eye.vert bit for bit
 uniform mat4 uModel;
-uniform mat4 uLightViewProj;
+#ifdef EYE_DEPTH
+uniform mat4 uViewProj;
+#else
+uniform int uSplit;
+#endif
 #if defined(LINEAR_Z) || defined(MOMENTS)
 out vec3 vWorldPos; // only the variants that compute linear depth need it
 #endif
@@ -12,5 +18,9 @@ void main() {
 #if defined(LINEAR_Z) || defined(MOMENTS)
     vWorldPos = world.xyz;
 #endif
-    gl_Position = uLightViewProj * world;
+#ifdef EYE_DEPTH
+    gl_Position = uViewProj * world;
+#else
+    gl_Position = shadow.splits[uSplit].lightViewProj * world;
+#endif
 }

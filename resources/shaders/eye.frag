@@ -1,33 +1,15 @@
 #version 430 core
 // Eye pass: Lambert + ambient terms and the shadow factor, kept apart so the mask can be blurred
-// (Scherzer §4.3) and inspected. Every bias and filter of DESIGN §3.5–3.6 lives here.
+// (Scherzer §4.3) and inspected. Every bias and filter of docs/design.md §3.5–3.6 lives here; the
+// parameters come in the shadow block (renderer/shadow_block.inc).
+#include "shadow_block.glsl"
 in vec3 vWorldPos;
 in vec3 vNormal;
 uniform vec3 uColor;
-uniform vec3 uLightDir;            // l: from the light into the scene
-uniform vec3 uEye;
-uniform vec3 uViewDir;
 
 uniform sampler2DArray uShadowMap;          // depth, nearest, no compare
 uniform sampler2DArrayShadow uShadowMapCmp; // same texture, linear compare (hw2x2)
 uniform sampler2DArray uMoments;            // VSM moments, linear
-uniform mat4 uLightViewProj[8];
-uniform float uSplitFar[8];
-uniform float uMapScale[8];        // split resolution / array resolution
-uniform vec2 uLinearRange[8];      // (lo, 1/(hi−lo)) of l·x, for linear z and VSM
-uniform int uSplitCount;
-uniform int uArrayResolution;
-
-uniform int uBiasType;             // 0 none 1 constant 2 slope 3 second_depth 4 midpoint 5 dual_depth 6 normal_offset
-uniform float uReceiverOffset;     // constant: scene units towards the light
-uniform float uNormalOffset;       // normal_offset: world texels along the normal
-uniform int uLinearZ;
-uniform int uTangentPlane;
-uniform int uFilter;               // 0 none 1 hw2x2 2 pcf 3 disk 4 vsm
-uniform int uKernel;
-uniform int uTaps;
-uniform float uRadius;
-uniform float uBleedReduction;
 
 layout(location = 0) out vec4 oBase;   // rgb albedo·ambient, a view depth
 layout(location = 1) out vec4 oDirect; // rgb albedo·(1−ambient)·N·L
@@ -41,23 +23,23 @@ const float kGoldenAngle = 2.39996323;
 
 int splitOf(float viewDepth) {
     int split = 0;
-    while (split < uSplitCount - 1 && viewDepth > uSplitFar[split]) ++split;
+    while (split < shadow.splitCount - 1 && viewDepth > shadow.splits[split].splitFar) ++split;
     return split;
 }
 
 /// Map coordinates (u, v in [0,1]) and depth of a world point in a split, in the depth space the map stores.
 vec3 mapCoords(vec3 world, int split) {
-    vec4 clip = uLightViewProj[split] * vec4(world, 1.0);
+    vec4 clip = shadow.splits[split].lightViewProj * vec4(world, 1.0);
     vec3 p = clip.xyz / clip.w * 0.5 + 0.5;
-    if (uLinearZ == 1 || uFilter == 4) p.z = (dot(world, uLightDir) - uLinearRange[split].x) * uLinearRange[split].y;
+    if (shadow.linearDepth == 1) p.z = (dot(world, shadow.lightDir) - shadow.splits[split].linearLo) * shadow.splits[split].linearScale;
     return p;
 }
 
 /// World-space size of one texel at `world` (for normal offset): the map's local scale across l.
 float texelWorldSize(vec3 world, int split, float res) {
-    vec3 e1 = normalize(cross(uLightDir, abs(uLightDir.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
-    vec3 e2 = cross(uLightDir, e1);
-    float h = 0.01 * max(1.0, length(world - uEye));
+    vec3 e1 = normalize(cross(shadow.lightDir, abs(shadow.lightDir.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+    vec3 e2 = cross(shadow.lightDir, e1);
+    float h = 0.01 * max(1.0, length(world - shadow.eye));
     vec2 p0 = mapCoords(world, split).xy;
     float du = length(mapCoords(world + e1 * h, split).xy - p0);
     float dv = length(mapCoords(world + e2 * h, split).xy - p0);
@@ -69,23 +51,23 @@ float hardTest(vec2 texel, float z, int split, float res) {
     return z > texelFetch(uShadowMap, ivec3(t, split), 0).r ? 0.0 : 1.0;
 }
 
-/// k×k box PCF one texel apart (k = uKernel, odd), four texels per textureGather: the k×k block
+/// k×k box PCF one texel apart (k = shadow.kernel, odd), four texels per textureGather: the k×k block
 /// is covered by ⌈k/2⌉² gathers and the extra row and column are masked out.
 float pcfBox(vec2 texel, float z, int split, vec2 dzdt) {
-    vec2 first = floor(texel) - float(uKernel / 2); // lower-left texel of the block
+    vec2 first = floor(texel) - float(shadow.kernel / 2); // lower-left texel of the block
     float lit = 0.0;
-    for (int j = 0; j < uKernel; j += 2)
-        for (int i = 0; i < uKernel; i += 2) {
+    for (int j = 0; j < shadow.kernel; j += 2)
+        for (int i = 0; i < shadow.kernel; i += 2) {
             vec2 corner = first + vec2(i, j) + 1.0; // shared corner of texels (i, j)..(i+1, j+1)
-            vec4 d = textureGather(uShadowMap, vec3(corner / float(uArrayResolution), float(split)), 0);
+            vec4 d = textureGather(uShadowMap, vec3(corner / float(shadow.arrayResolution), float(split)), 0);
             // Gather order: x (i, j+1), y (i+1, j+1), z (i+1, j), w (i, j).
             vec2 o = first + vec2(i, j) + 0.5 - texel; // offset of texel (i, j) from the receiver
             vec4 ref = z + vec4(dot(dzdt, o + vec2(0, 1)), dot(dzdt, o + vec2(1, 1)), dot(dzdt, o + vec2(1, 0)), dot(dzdt, o));
-            vec4 inside = vec4(j + 1 < uKernel ? 1.0 : 0.0, (i + 1 < uKernel && j + 1 < uKernel) ? 1.0 : 0.0,
-                               i + 1 < uKernel ? 1.0 : 0.0, 1.0);
+            vec4 inside = vec4(j + 1 < shadow.kernel ? 1.0 : 0.0, (i + 1 < shadow.kernel && j + 1 < shadow.kernel) ? 1.0 : 0.0,
+                               i + 1 < shadow.kernel ? 1.0 : 0.0, 1.0);
             lit += dot(inside, step(ref, d)); // lit where ref ≤ stored
         }
-    return lit / float(uKernel * uKernel);
+    return lit / float(shadow.kernel * shadow.kernel);
 }
 
 float chebyshev(vec2 uv, float z, int split) {
@@ -94,23 +76,23 @@ float chebyshev(vec2 uv, float z, int split) {
     float variance = max(m.y - m.x * m.x, 1e-7);
     float d = z - m.x;
     float pMax = variance / (variance + d * d);
-    return clamp((pMax - uBleedReduction) / (1.0 - uBleedReduction), 0.0, 1.0);
+    return clamp((pMax - shadow.bleedReduction) / (1.0 - shadow.bleedReduction), 0.0, 1.0);
 }
 
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n; // CAD surfaces are seen from both sides
-    float ndotl = max(dot(n, -uLightDir), 0.0);
-    float viewDepth = dot(vWorldPos - uEye, uViewDir);
+    float ndotl = max(dot(n, -shadow.lightDir), 0.0);
+    float viewDepth = dot(vWorldPos - shadow.eye, shadow.viewDir);
     int split = splitOf(viewDepth);
-    float res = float(uArrayResolution) * uMapScale[split];
+    float res = float(shadow.arrayResolution) * shadow.splits[split].mapScale;
 
     vec3 receiver = vWorldPos;
-    if (uBiasType == 1) receiver -= uLightDir * uReceiverOffset;
-    if (uBiasType == 6) receiver += n * uNormalOffset * texelWorldSize(vWorldPos, split, res);
+    if (shadow.biasType == BIAS_CONSTANT) receiver -= shadow.lightDir * shadow.receiverOffset;
+    if (shadow.biasType == BIAS_NORMAL_OFFSET) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
     vec3 p = mapCoords(receiver, split);
     vec2 texel = p.xy * res;   // texel-space position within this split's map
-    vec2 uvArray = p.xy * uMapScale[split];
+    vec2 uvArray = p.xy * shadow.splits[split].mapScale;
 
     // Receiver plane (Barroso §2.2): depth gradient per texel from screen derivatives, taken in
     // uniform control flow.
@@ -118,28 +100,28 @@ void main() {
     float dzdx = dFdx(p.z), dzdy = dFdy(p.z);
     float det = dTdx.x * dTdy.y - dTdx.y * dTdy.x;
     vec2 dzdt = abs(det) > 1e-12 ? vec2(dzdx * dTdy.y - dzdy * dTdx.y, dzdy * dTdx.x - dzdx * dTdy.x) / det : vec2(0.0);
-    if (uTangentPlane == 0) dzdt = vec2(0.0);
+    if (shadow.tangentPlane == 0) dzdt = vec2(0.0);
 
     float s = 1.0;
     bool inside = all(greaterThanEqual(p, vec3(0.0))) && all(lessThanEqual(p.xy, vec2(1.0)));
     if (inside && ndotl > 0.0) {
-        if (uFilter == 0) {
+        if (shadow.filterType == FILTER_NONE) {
             s = hardTest(texel, p.z, split, res);
-        } else if (uFilter == 1) {
+        } else if (shadow.filterType == FILTER_HW2X2) {
             s = texture(uShadowMapCmp, vec4(uvArray, float(split), p.z));
-        } else if (uFilter == 2) {
+        } else if (shadow.filterType == FILTER_PCF) {
             s = pcfBox(texel, p.z, split, dzdt);
-        } else if (uFilter == 3) {
+        } else if (shadow.filterType == FILTER_DISK) {
             // Vogel disk, rotated per pixel (interleaved gradient noise) to trade banding for noise.
             float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
             float sum = 0.0;
-            for (int k = 0; k < uTaps; ++k) {
-                float radius = uRadius * sqrt((float(k) + 0.5) / float(uTaps));
+            for (int k = 0; k < shadow.taps; ++k) {
+                float radius = shadow.diskRadius * sqrt((float(k) + 0.5) / float(shadow.taps));
                 float a = float(k) * kGoldenAngle + angle;
                 vec2 offset = radius * vec2(cos(a), sin(a));
                 sum += hardTest(texel + offset, p.z + dot(dzdt, offset), split, res);
             }
-            s = sum / float(uTaps);
+            s = sum / float(shadow.taps);
         } else {
             s = chebyshev(uvArray, p.z, split);
         }

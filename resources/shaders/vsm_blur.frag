@@ -1,16 +1,17 @@
 #version 430 core
 // Separable box blur of one VSM moments layer (width = filter.kernel texels).
+#include "shadow_block.glsl"
 in vec2 vUv;
 uniform sampler2DArray uMoments;
-uniform int uLayer;
+uniform int uSplit;
 uniform ivec2 uStep;    // (1, 0) or (0, 1)
-uniform int uRadius;    // (kernel − 1) / 2
-uniform ivec2 uSize;    // texels of this split's map
 layout(location = 0) out vec2 oMoments;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
+    int radius = shadow.kernel / 2;
+    ivec2 size = ivec2(round(float(shadow.arrayResolution) * shadow.splits[uSplit].mapScale)); // this split's texels
     vec2 sum = vec2(0.0);
-    for (int i = -uRadius; i <= uRadius; ++i)
-        sum += texelFetch(uMoments, ivec3(clamp(p + i * uStep, ivec2(0), uSize - 1), uLayer), 0).rg;
-    oMoments = sum / float(2 * uRadius + 1);
+    for (int i = -radius; i <= radius; ++i)
+        sum += texelFetch(uMoments, ivec3(clamp(p + i * uStep, ivec2(0), size - 1), uSplit), 0).rg;
+    oMoments = sum / float(2 * radius + 1);
 }

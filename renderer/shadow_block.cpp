@@ -1,0 +1,43 @@
+#include "renderer/shadow_block.h"
+
+#include <algorithm>
+
+namespace renderer {
+
+ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResolution) noexcept {
+    ShadowBlock b;
+    const int count = std::min(int(plan.splits.size()), geometry::shadow::kMaxSplits);
+    for (int i = 0; i < count; ++i) {
+        const auto& split = plan.splits[i];
+        auto& s = b.splits[i];
+        s.lightViewProj = split.lightViewProj;
+        s.splitFar = split.far;
+        s.mapScale = arrayResolution > 0 ? float(std::min(split.resolution, arrayResolution)) / float(arrayResolution)
+                                         : 1.f;
+        s.linearLo = split.linearDepthRange.x;
+        s.linearScale = split.linearDepthScale;
+        s.dualDepthCap = split.dualDepthCap;
+    }
+    const auto& bias = plan.bias;
+    const auto& filter = plan.filter;
+    b.lightDir = plan.l;
+    b.splitCount = count;
+    b.eye = glm::vec3(glm::inverse(plan.eyeView)[3]); // where the eye matrices put the camera
+    b.arrayResolution = arrayResolution;
+    b.viewDir = plan.v;
+    b.biasType = static_cast<int>(bias.type);
+    b.receiverOffset = plan.receiverOffset;
+    b.normalOffset = bias.normalOffset;
+    b.diskRadius = filter.radius;
+    b.bleedReduction = filter.bleedReduction;
+    b.filterType = static_cast<int>(filter.type);
+    b.kernel = filter.kernel;
+    b.taps = filter.taps;
+    b.linearDepth = plan.linearDepth ? 1 : 0;
+    b.tangentPlane = bias.tangentPlane ? 1 : 0;
+    b.eyeBlurFalloff = filter.eyeBlurFalloff;
+    b.slopeBias = bias.type == geometry::shadow::BiasType::Slope ? glm::vec2(bias.slope, bias.units) : glm::vec2(0.f);
+    return b;
+}
+
+} // namespace renderer
