@@ -1,13 +1,11 @@
 #include "bench_command.h"
 
-#include "render_options.h"
-
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/io/preset.h"
 #include "geometry/io/scene_file.h"
 #include "geometry/shadow/shadow_plan.h"
 #include "renderer/context.h"
-#include "renderer/inspection.h"
+#include "renderer/measure.h"
 #include "renderer/renderer.h"
 #include "ui/charts/chart.h"
 #include "ui/chart_image.h"
@@ -16,7 +14,6 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -33,13 +30,6 @@ std::vector<std::string> splitList(const std::string& s, char sep) {
     std::stringstream in(s);
     for (std::string item; std::getline(in, item, sep);) out.push_back(item);
     return out;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return std::nan("");
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 struct Sweep {
@@ -74,8 +64,8 @@ std::vector<BenchConfiguration> benchConfigurations(const BenchOptions& o) {
         if (combinations > 4096) throw std::invalid_argument("--sweep: more than 4096 configurations");
     }
     std::vector<std::pair<std::string, geometry::shadow::ShadowSettings>> bases;
-    if (o.presets.empty()) bases.emplace_back("", geometry::shadow::ShadowSettings{});
-    for (const auto& p : o.presets) bases.emplace_back(p, geometry::io::loadPreset(p));
+    if (o.common.presets.empty()) bases.emplace_back("", geometry::shadow::ShadowSettings{});
+    for (const auto& p : o.common.presets) bases.emplace_back(p, geometry::io::loadPreset(p));
     if (bases.size() * combinations > 4096) throw std::invalid_argument("bench: more than 4096 configurations");
     std::vector<BenchConfiguration> out;
     for (const auto& [path, base] : bases) {
@@ -84,7 +74,7 @@ std::vector<BenchConfiguration> benchConfigurations(const BenchOptions& o) {
             BenchConfiguration cfg;
             cfg.preset = stem;
             cfg.settings = base;
-            for (const auto& a : o.assignments) geometry::shadow::applyAssignment(cfg.settings, a);
+            for (const auto& a : o.common.assignments) geometry::shadow::applyAssignment(cfg.settings, a);
             std::string label = stem.empty() ? "defaults" : stem;
             size_t rest = c;
             std::vector<std::string> parts(sweeps.size());
@@ -103,20 +93,11 @@ std::vector<BenchConfiguration> benchConfigurations(const BenchOptions& o) {
 }
 
 void addBenchCommand(CLI::App& cmd, BenchOptions& o) {
-    cmd.add_option("--scene", o.scene, "Scene file with canonical views (or a built-in name / mesh)")->capture_default_str();
-    cmd.add_option("--view", o.views, "Canonical view to measure (repeatable; default: every view of the scene)");
+    addRenderOptions(cmd, o.common, OptionUse::Bench);
     cmd.add_option("--sweep", o.sweeps, "key=v1,v2,...: one configuration per value (repeatable: all combinations)");
-    cmd.add_option("--preset", o.presets, "A configuration from a preset file (repeatable; default: the defaults)");
-    cmd.add_option("--set", o.assignments, "key=value applied to every configuration (repeatable)");
     cmd.add_option("--frames", o.frames, "Timed frames per configuration and view")->check(CLI::Range(1, 10000))->capture_default_str();
     // At least one: llvmpipe reports a bogus GL_TIME_ELAPSED (hours) for a new renderer's first frame.
     cmd.add_option("--warmup", o.warmup, "Untimed frames first (at least 1)")->check(CLI::Range(1, 1000))->capture_default_str();
-    cmd.add_option_function<std::string>(
-        "--size", [&o](const std::string& s) { o.size = parseSize(s); }, "Eye view size WxH (default 1280x720)");
-    cmd.add_option("--out", o.out, "Output folder")->capture_default_str();
-    cmd.add_option("--backend", o.backend, "auto (EGL on a GPU, else OSMesa), egl, osmesa")
-        ->check(CLI::IsMember({"auto", "egl", "osmesa"}))
-        ->capture_default_str();
     cmd.add_flag("--truth", o.truth, "Also measure misclassification against ray-traced truth (Embree)");
 }
 
@@ -151,19 +132,19 @@ ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, con
 
 int runBench(const BenchOptions& o) {
     const std::vector<BenchConfiguration> configs = benchConfigurations(o);
-    geometry::io::SceneFile file = geometry::io::resolveScene(o.scene);
+    geometry::io::SceneFile file = geometry::io::resolveScene(o.common.scene);
     std::vector<std::pair<std::string, geometry::io::CanonicalView>> views;
-    if (o.views.empty())
+    if (o.common.views.empty())
         for (const auto& v : file.views) views.emplace_back(v);
-    for (const auto& name : o.views) {
+    for (const auto& name : o.common.views) {
         const auto it = file.views.find(name);
         if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
         views.emplace_back(*it);
     }
     if (views.empty()) views.emplace_back("default", geometry::io::CanonicalView{file.scene.camera, file.scene.light});
-    std::filesystem::create_directories(o.out);
+    std::filesystem::create_directories(o.common.out);
 
-    auto context = renderer::createHeadlessContext(renderer::parseBackend(o.backend));
+    auto context = renderer::createHeadlessContext(renderer::parseBackend(o.common.backend));
     geometry::scene::Scene& scene = file.scene;
     renderer::Renderer r(scene);
     std::unique_ptr<geometry::analysis::GroundTruth> truth;
@@ -178,34 +159,20 @@ int runBench(const BenchOptions& o) {
         for (const auto& [viewName, view] : views) {
             scene.camera = view.camera;
             scene.light = view.light;
-            renderer::ViewOptions vo;
-            vo.lightViewSize = 16; // the light views are not what is measured
-            vo.overlays = false;
-            vo.unwarped = false;
-            std::vector<double> gpu, cpu;
-            geometry::shadow::ShadowPlan plan;
-            for (int i = 0; i < o.warmup + o.frames; ++i) {
-                const auto t0 = std::chrono::steady_clock::now();
-                plan = geometry::shadow::planShadows(cfg.settings, scene.bounds(), scene.camera, scene.light, o.size);
-                r.render(plan, o.size, vo);
-                glFinish();
-                const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-                const renderer::PassTimes& t = r.waitForTimings();
-                if (i < o.warmup) continue;
-                cpu.push_back(cpuMs);
-                if (t.valid) gpu.push_back(t.frame());
-            }
-            if (gpu.empty()) gpuTimes = false;
-            const geometry::analysis::Inspection in = renderer::inspect(r, plan, truth.get());
+            const renderer::Measurement m =
+                renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, scene.light, o.common.size,
+                                  {.warmup = o.warmup, .frames = o.frames}, truth.get());
+            if (m.gpuFrames == 0) gpuTimes = false;
+            const geometry::analysis::Inspection& in = m.inspection;
             Row row;
             row.config = cfg.label;
             row.preset = cfg.preset;
             row.view = viewName;
-            row.gamma = plan.gammaDeg;
-            row.gpuMs = median(gpu);
-            row.cpuMs = median(cpu);
+            row.gamma = m.plan.gammaDeg;
+            row.gpuMs = m.gpuMs;
+            row.cpuMs = m.cpuMs;
             row.p95 = in.aliasing.p95;
-            row.memoryMiB = double(r.stats().shadowMemoryBytes) / (1024.0 * 1024.0);
+            row.memoryMiB = double(m.shadowMemoryBytes) / (1024.0 * 1024.0);
             if (in.truth) {
                 row.truth = true;
                 row.falseLit = in.truth->falseLit;
@@ -218,7 +185,7 @@ int runBench(const BenchOptions& o) {
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
 
-    const std::filesystem::path dir(o.out);
+    const std::filesystem::path dir(o.common.out);
     {
         std::ofstream csv(dir / "results.csv");
         csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
@@ -228,7 +195,7 @@ int runBench(const BenchOptions& o) {
                 << w.cpuMs << ',' << w.p95 << ',';
             if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
             else csv << ",,";
-            csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.size.width << ',' << o.size.height << ",\""
+            csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.common.size.width << ',' << o.common.size.height << ",\""
                 << context->rendererString() << "\"\n";
         }
         if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());

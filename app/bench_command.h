@@ -1,9 +1,8 @@
 #pragma once
 // `shadowscope bench`: configurations (presets × --sweep values) × canonical views, N timed frames
 // each after warm-up; results.csv, and the speed/accuracy trade-off chart with its Pareto front.
+#include "app/render_options.h"
 #include "geometry/shadow/settings.h"
-#include "geometry/scene/scene.h"
-#include "geometry/shadow/shadow_plan.h"
 
 #include <string>
 #include <vector>
@@ -13,17 +12,21 @@ namespace CLI { class App; }
 namespace app {
 
 struct BenchOptions {
-    std::string scene = "resources/scenes/platform.json";
-    std::vector<std::string> views;        // canonical views; empty: all of the scene's
+    /// --scene --view --size --out --backend --preset --set, declared with every other command's
+    /// (OptionUse::Bench): `common.views` empty = all of the scene's views; each of `common.presets`
+    /// is a configuration (none: the defaults); `common.assignments` apply to every configuration.
+    RenderOptions common = benchDefaults();
     std::vector<std::string> sweeps;       // "key=v1,v2,..."
-    std::vector<std::string> presets;      // each preset is a configuration; none: the defaults
-    std::vector<std::string> assignments;  // --set key=value on every configuration
     int frames = 10;
     int warmup = 2;
-    geometry::shadow::Viewport size{1280, 720};
-    std::string out = "out/bench";
-    std::string backend = "auto";
     bool truth = false;
+
+    [[nodiscard]] static RenderOptions benchDefaults() {
+        RenderOptions o;
+        o.scene = "resources/scenes/platform.json";
+        o.out = "out/bench";
+        return o;
+    }
 };
 
 /// One configuration: a label ("paper", "ssm filter.kernel=5") and its settings.

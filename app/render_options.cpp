@@ -167,19 +167,36 @@ std::string unknownView(const RenderOptions& o, const geometry::io::SceneFile& f
 
 } // namespace
 
-void addRenderOptions(CLI::App& cmd, RenderOptions& o) {
+void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
+    const bool bench = use == OptionUse::Bench;
     cmd.add_option("--scene", o.scene,
                    "Scene: a built-in name (platform, plane), a scene file (resources/scenes/*.json) or a model "
                    "file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
         ->capture_default_str();
-    cmd.add_option("--view", o.view, "Canonical view (camera and light) named in the scene file, e.g. deck, overview "
-                                      "(default: the scene's camera and light)");
+    if (bench)
+        cmd.add_option("--view", o.views, "Canonical view (camera and light) named in the scene file to measure "
+                                          "(repeatable; default: every view of the scene)");
+    else
+        cmd.add_option("--view", o.view, "Canonical view (camera and light) named in the scene file, e.g. deck, "
+                                         "overview (default: the scene's camera and light)");
     cmd.add_option_function<std::string>(
-           "--size", [&o](const std::string& s) { o.size = parseSize(s); }, "Image size WxH (default 1280x720)");
+        "--size", [&o](const std::string& s) { o.size = parseSize(s); },
+        "Image size WxH (default " + std::to_string(o.size.width) + "x" + std::to_string(o.size.height) + ")");
     cmd.add_option("--out", o.out, "Output folder")->capture_default_str();
-    cmd.add_option("--backend", o.backend, "GL backend: auto (EGL on a GPU, else OSMesa), osmesa, egl, glfw")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"auto", "osmesa", "egl", "glfw"}));
+    if (bench)
+        cmd.add_option("--backend", o.backend, "GL backend: auto (EGL on a GPU, else OSMesa), osmesa, egl")
+            ->capture_default_str()
+            ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+    else
+        cmd.add_option("--backend", o.backend, "GL backend: auto (EGL on a GPU, else OSMesa), osmesa, egl, glfw")
+            ->capture_default_str()
+            ->check(CLI::IsMember({"auto", "osmesa", "egl", "glfw"}));
+    if (bench) {
+        cmd.add_option("--preset", o.presets, "A configuration from a JSON preset (repeatable; default: the defaults)")
+            ->type_name("FILE");
+        addSetOption(cmd, [&o](const std::vector<std::string>& a) { o.assignments = a; });
+        return;
+    }
     cmd.add_option_function<std::string>(
         "--camera",
         [&o](const std::string& s) {

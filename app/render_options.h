@@ -1,12 +1,13 @@
 #pragma once
-// Options shared by every command that renders (render, and later bench, sweep, the GUI's
-// start-up): declared once here.
+// Options shared by every command that renders (render, bench, sweep, the GUI's start-up):
+// declared once here.
 #include "geometry/scene/scene.h"
 #include "geometry/io/scene_file.h"
 #include "geometry/shadow/shadow_plan.h"
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI { class App; }
 
@@ -22,16 +23,31 @@ struct RenderOptions {
     std::optional<glm::vec3> light;                 // l overrides
     geometry::shadow::ShadowSettings settings;             // --preset FILE, --shadow-res, --set
     bool settingsGiven = false;                     // any of those three was on the command line key=value
+    // OptionUse::Bench only: every --view, every --preset (each one configuration), every --set.
+    std::vector<std::string> views, presets, assignments;
+};
+
+/// How a command uses the shared options.
+enum class OptionUse {
+    /// One --view; --preset files, --shadow-res and --set layer onto one `settings`; --camera and
+    /// --light override the view; every backend.
+    Render,
+    /// Configurations measured side by side: --view repeats (into `views`), each --preset is one
+    /// configuration (into `presets`), --set applies to all of them (into `assignments`); headless
+    /// backends only; no --camera, --light or --shadow-res.
+    Bench,
 };
 
 /// "WxH" with 1 ≤ W, H ≤ 16384; throws std::invalid_argument naming --size otherwise.
 [[nodiscard]] geometry::shadow::Viewport parseSize(const std::string& text);
 
-/// Adds --scene, --view, --size, --out, --backend, --camera, --light, --preset, --shadow-res, --set to `cmd`.
-/// After parsing, options.settings is: its value when this was called, then every --preset file
-/// (in command-line order), then --shadow-res, then every --set (in command-line order), whatever
-/// the order of those options on the command line. Untouched when none of the three is given.
-void addRenderOptions(CLI::App& cmd, RenderOptions& options);
+/// Adds --scene, --view, --size, --out, --backend, --camera, --light, --preset, --shadow-res, --set to `cmd`
+/// (for OptionUse::Bench the first five, --preset and --set, as that use describes). Defaults are the
+/// values `options` holds when this is called. For OptionUse::Render, after parsing, options.settings
+/// is: its value when this was called, then every --preset file (in command-line order), then
+/// --shadow-res, then every --set (in command-line order), whatever the order of those options on the
+/// command line; untouched when none of the three is given.
+void addRenderOptions(CLI::App& cmd, RenderOptions& options, OptionUse use = OptionUse::Render);
 
 /// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()),
 /// applied directly to `settings`; for commands without --preset.

@@ -33,13 +33,10 @@ SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& setting
                                  const geometry::scene::DirectionalLight& light, const geometry::shadow::Viewport& viewport) {
     context_->makeCurrent();
     SweepFrame f;
-    f.plan = geometry::shadow::planShadows(settings, scene_.bounds(), camera, light, viewport);
-    renderer::ViewOptions views;
-    views.lightViewSize = 16; // the light views are not looked at: keep their cost negligible
-    views.overlays = false;
-    views.unwarped = false;
-    renderer_->render(f.plan, viewport, views);
-    f.in = renderer::inspect(*renderer_, f.plan, nullptr);
+    renderer::Measurement m = renderer::measure(*renderer_, settings, scene_.bounds(), camera, light, viewport,
+                                                {.warmup = 0, .frames = 1, .timed = false});
+    f.plan = std::move(m.plan);
+    f.in = std::move(m.inspection);
     const bool same = f.plan.eyeView == truthView_ && f.plan.eyeProj == truthProj_ && f.plan.l == truthLight_ &&
                       truthOccluded_.size() == f.in.positions.size();
     if (!same) {

@@ -5,7 +5,7 @@
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/shadow/shadow_plan.h"
 #include "renderer/context.h"
-#include "renderer/inspection.h"
+#include "renderer/measure.h"
 #include "renderer/renderer.h"
 
 #include <memory>

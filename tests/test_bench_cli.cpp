@@ -87,7 +87,7 @@ TEST(Bench, WritesOneRowPerConfigurationAndViewAndTheTradeoffChart) {
 }
 
 TEST(Bench, BadSweepsAreOneLineErrors) {
-    for (const std::string& bad : {"--sweep filter.kernel", "--sweep nonsense=1,2", "--sweep filter.kernel=2",
+    for (const std::string bad : {"--sweep filter.kernel", "--sweep nonsense=1,2", "--sweep filter.kernel=2",
                                    "--sweep shadow_map.resolution=abc"}) {
         const auto r = runShadowscope("bench --backend osmesa --scene plane --frames 1 --out /tmp/unused " + bad);
         EXPECT_NE(r.exitCode, 0) << bad;
@@ -97,4 +97,42 @@ TEST(Bench, BadSweepsAreOneLineErrors) {
     const auto unknownView = runShadowscope("bench --backend osmesa --scene plane --view nowhere --frames 1 --out /tmp/unused");
     EXPECT_NE(unknownView.exitCode, 0);
     EXPECT_NE(unknownView.output.find("nowhere"), std::string::npos);
+}
+
+// bench takes --scene --size --out --preset --set from the declaration render uses: the same help
+// text (a copy of its own would drift), and nothing bench-specific in render.
+TEST(Bench, SharesTheRenderOptionsDeclaration) {
+    const auto bench = runShadowscope("bench --help");
+    const auto render = runShadowscope("render --help");
+    ASSERT_EQ(bench.exitCode, 0) << bench.output;
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    const auto lineOf = [](const std::string& help, const std::string& option) {
+        std::istringstream in(help);
+        for (std::string line; std::getline(in, line);)
+            if (line.find(option) != std::string::npos && line.find(option) < 8) return line;
+        return std::string();
+    };
+    for (const std::string option : {"--scene", "--out", "--size"}) {
+        const std::string r = lineOf(render.output, option);
+        // The description: after the option column (its default differs: bench measures the
+        // platform's views into out/bench).
+        const size_t gap = r.find("   ", r.find(option));
+        ASSERT_NE(gap, std::string::npos) << r;
+        std::string words = r.substr(r.find_first_not_of(' ', gap));
+        EXPECT_FALSE(lineOf(bench.output, option).empty()) << option << " missing from bench --help";
+        EXPECT_NE(bench.output.find(words), std::string::npos) << option << ": '" << words << "' not in\n" << bench.output;
+    }
+    EXPECT_NE(bench.output.find("--set KEY=VALUE"), std::string::npos) << bench.output;
+    EXPECT_NE(bench.output.find("--preset"), std::string::npos);
+    EXPECT_EQ(render.output.find("--sweep"), std::string::npos);
+    // Each --preset is one configuration and --set applies to all of them.
+    const auto dir = testutil::freshDir("bench_shared_options");
+    const auto r = runShadowscope("bench --backend osmesa --scene plane --frames 1 --warmup 1 --size 64x48 --out " +
+                                  dir.string() + " --preset " + SHADOWSCOPE_SOURCE_DIR "/resources/presets/ssm.json --preset " +
+                                  SHADOWSCOPE_SOURCE_DIR "/resources/presets/lispsm.json --set shadow_map.resolution=256");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto rows = readCsv(dir / "results.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[1][0], "ssm");
+    EXPECT_EQ(rows[2][0], "lispsm");
 }

@@ -1,4 +1,5 @@
 #include "geometry/analysis/metrics.h"
+#include "geometry/analysis/statistics.h"
 
 #include <gtest/gtest.h>
 
@@ -190,4 +191,21 @@ TEST(TexelUtilization, BadInputThrows) {
     EXPECT_THROW((void)texelUtilization(aux, allReceivers(1), 0, 0), std::invalid_argument);
     EXPECT_THROW((void)texelUtilization(aux, allReceivers(1), 0, 16385), std::invalid_argument);
     EXPECT_THROW((void)texelUsageMask(aux, allReceivers(1), 0, -4), std::invalid_argument);
+}
+
+// The one percentile and median of the project (geometry/analysis/statistics.h).
+TEST(Statistics, NearestRankPercentileAndMedian) {
+    std::vector<double> twenty(20);
+    for (int i = 0; i < 20; ++i) twenty[i] = 20 - i; // 20 … 1
+    // 0.95·20 is 19.000000000000004 in doubles; the 19th smallest is still the nearest rank.
+    EXPECT_EQ(percentile(std::span(twenty), 95), 19.0);
+    EXPECT_EQ(percentile(std::span(twenty), 50), 10.0);
+    EXPECT_EQ(percentile(std::span(twenty), 100), 20.0);
+    EXPECT_EQ(percentile(std::span(twenty), 0), 1.0);
+    std::vector<float> odd{3.f, 1.f, 2.f}, even{4.f, 1.f, 3.f, 2.f};
+    EXPECT_EQ(median(std::span(odd)), 2.0);
+    EXPECT_EQ(median(std::span(even)), 2.5);
+    std::vector<double> none;
+    EXPECT_TRUE(std::isnan(percentile(std::span(none), 50)));
+    EXPECT_TRUE(std::isnan(median(std::span(none))));
 }

@@ -4,6 +4,7 @@
 #include "dashboard.h"
 
 #include "ui/charts/analytic_charts.h"
+#include "renderer/measure.h"
 #include "ui/chart_image.h"
 #include "ui/charts/chart_imgui.h"
 #include "widget_map.h"
@@ -148,22 +149,10 @@ void Dashboard::stepTradeoffSweep() {
     }
     const auto& cfg = s.configs[s.next++];
     const geometry::shadow::Viewport size = sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360};
-    renderer::ViewOptions vo;
-    vo.lightViewSize = 16;
-    vo.overlays = false;
-    vo.unwarped = false;
     try {
-        std::vector<double> gpu;
-        geometry::shadow::ShadowPlan plan;
-        for (int i = 0; i < 4; ++i) { // one warm-up frame, three timed
-            plan = geometry::shadow::planShadows(cfg.settings, scene.bounds(), scene.camera, scene.light, size);
-            s.renderer->render(plan, size, vo);
-            const renderer::PassTimes& t = s.renderer->waitForTimings();
-            if (i > 0 && t.valid) gpu.push_back(t.frame());
-        }
-        std::sort(gpu.begin(), gpu.end());
-        const geometry::analysis::Inspection in = renderer::inspect(*s.renderer, plan, nullptr);
-        s.results.push_back({cfg.label, cfg.preset, gpu.empty() ? NAN : gpu[gpu.size() / 2], in.aliasing.p95});
+        const renderer::Measurement m = renderer::measure(*s.renderer, cfg.settings, scene.bounds(), scene.camera,
+                                                          scene.light, size, {.warmup = 1, .frames = 3});
+        s.results.push_back({cfg.label, cfg.preset, m.gpuMs, m.inspection.aliasing.p95});
     } catch (const std::exception& e) {
         status_ = "trade-off sweep: " + cfg.label + ": " + e.what();
     }

@@ -1,5 +1,7 @@
 #include "geometry/analysis/metrics.h"
 
+#include "geometry/analysis/statistics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -12,16 +14,6 @@ void requireSameSize(size_t a, size_t b, const char* what) {
     if (a != b)
         throw std::invalid_argument(std::string(what) + ": per-pixel inputs differ in size (" + std::to_string(a) +
                                     " vs " + std::to_string(b) + ")");
-}
-
-/// Nearest-rank percentile (see metrics.h): the ⌈pct·n/100⌉-th smallest value. Integer
-/// arithmetic, because 0.95·n in floating point can land just above an integer and pick the
-/// next rank. Reorders `v`; needs a non-empty `v`.
-double nearestRank(std::vector<float>& v, size_t pct) {
-    const size_t rank = std::max<size_t>(1, (pct * v.size() + 99) / 100);
-    const auto nth = v.begin() + std::ptrdiff_t(rank - 1);
-    std::nth_element(v.begin(), nth, v.end());
-    return *nth;
 }
 
 constexpr int kMaxMapResolution = 16384;
@@ -71,8 +63,8 @@ AliasingStats aliasingStats(std::span<const float> m, std::span<const uint8_t> r
     if (st.count == 0) return st;
     st.mean = sum / double(st.count);
     st.undersampled = double(under) / double(st.count);
-    st.p50 = nearestRank(values, 50);
-    st.p95 = nearestRank(values, 95);
+    st.p50 = percentile(std::span(values), 50);
+    st.p95 = percentile(std::span(values), 95);
     st.max = *std::max_element(values.begin(), values.end());
     return st;
 }

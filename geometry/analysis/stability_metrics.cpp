@@ -1,5 +1,7 @@
 #include "geometry/analysis/stability_metrics.h"
 
+#include "geometry/analysis/statistics.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -16,14 +18,8 @@ void requireSameSize(size_t expected, size_t got, const char* what) {
                                     std::to_string(expected));
 }
 
-/// Nearest-rank percentile (metrics.h): the ⌈p·n/100⌉-th smallest; sorts `v`. 0 when empty.
-double percentile(std::vector<double>& v, double p) {
-    if (v.empty()) return 0.0;
-    const size_t rank = std::max<size_t>(1, size_t(std::ceil(p / 100.0 * double(v.size()))));
-    const auto it = v.begin() + std::ptrdiff_t(std::min(rank, v.size()) - 1);
-    std::nth_element(v.begin(), it, v.end());
-    return *it;
-}
+/// percentile() of the values, 0 when there are none (no pairs: no seam).
+double percentileOrZero(std::vector<double>& v, unsigned pct) { return v.empty() ? 0.0 : percentile(std::span(v), pct); }
 
 } // namespace
 
@@ -97,10 +93,10 @@ SeamStats seamStats(std::span<const float> m, std::span<const glm::vec4> aux, st
     SeamStats out;
     out.pairs = across.size();
     out.baselinePairs = inside.size();
-    out.median = percentile(across, 50);
-    out.p95 = percentile(across, 95);
-    out.rawMedian = percentile(raw, 50);
-    out.baselineMedian = percentile(inside, 50);
+    out.median = percentileOrZero(across, 50);
+    out.p95 = percentileOrZero(across, 95);
+    out.rawMedian = percentileOrZero(raw, 50);
+    out.baselineMedian = percentileOrZero(inside, 50);
     return out;
 }
 

@@ -1,0 +1,42 @@
+#include "renderer/measure.h"
+
+#include "geometry/analysis/statistics.h"
+#include "renderer/inspection.h"
+
+#include <chrono>
+#include <vector>
+
+namespace renderer {
+
+Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
+                    const geometry::scene::Aabb& S, const geometry::scene::Camera& camera,
+                    const geometry::scene::DirectionalLight& light, const geometry::shadow::Viewport& viewport,
+                    const MeasureOptions& options, const geometry::analysis::GroundTruth* truth) {
+    ViewOptions views;
+    views.lightViewSize = 16;
+    views.overlays = false;
+    views.unwarped = false;
+    Measurement out;
+    std::vector<double> gpu, cpu;
+    const int total = std::max(options.warmup, 0) + std::max(options.frames, 1);
+    for (int i = 0; i < total; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        out.plan = geometry::shadow::planShadows(settings, S, camera, light, viewport);
+        renderer.render(out.plan, viewport, views);
+        if (!options.timed) continue;
+        glFinish();
+        const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const PassTimes& t = renderer.waitForTimings();
+        if (i < options.warmup) continue;
+        cpu.push_back(cpuMs);
+        if (t.valid) gpu.push_back(t.frame());
+    }
+    out.gpuMs = geometry::analysis::median(std::span(gpu));
+    out.cpuMs = geometry::analysis::median(std::span(cpu));
+    out.gpuFrames = int(gpu.size());
+    out.shadowMemoryBytes = renderer.stats().shadowMemoryBytes;
+    out.inspection = inspect(renderer, out.plan, truth);
+    return out;
+}
+
+} // namespace renderer

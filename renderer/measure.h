@@ -1,0 +1,37 @@
+#pragma once
+// Measuring one configuration, the one path that bench, the sweeps and the dashboard's trade-off
+// sweep share: plan and render warm-up frames, then timed frames (the GPU time of the shadow and
+// eye passes by timer queries, the CPU time of planning plus drawing up to glFinish), and read the
+// last frame back with its statistics. It decides nothing about shadows: the plan does.
+#include "geometry/analysis/inspection.h"
+#include "geometry/scene/scene.h"
+#include "geometry/shadow/shadow_plan.h"
+#include "renderer/renderer.h"
+
+#include <cstdint>
+
+namespace renderer {
+
+struct MeasureOptions {
+    int warmup = 1;     // untimed frames first (llvmpipe's first timer query of a new renderer is bogus)
+    int frames = 3;     // timed frames
+    bool timed = true;  // false: frames are rendered but not timed (no glFinish, no timer wait)
+};
+
+struct Measurement {
+    geometry::shadow::ShadowPlan plan;          // of the last frame
+    geometry::analysis::Inspection inspection;  // of the last frame; truth when a GroundTruth was given
+    double gpuMs = 0, cpuMs = 0;                // medians over the timed frames; NaN when none was valid
+    int gpuFrames = 0;                          // timed frames with a valid GPU timer
+    uint64_t shadowMemoryBytes = 0;
+};
+
+/// Measures `settings` on the scene with bounds `S`, seen by `camera` under `light`, at `viewport`.
+/// The light views are drawn at 16² without overlays: they are not what is measured.
+[[nodiscard]] Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
+                                  const geometry::scene::Aabb& S, const geometry::scene::Camera& camera,
+                                  const geometry::scene::DirectionalLight& light,
+                                  const geometry::shadow::Viewport& viewport, const MeasureOptions& options,
+                                  const geometry::analysis::GroundTruth* truth = nullptr);
+
+} // namespace renderer
