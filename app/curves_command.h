@@ -1,5 +1,5 @@
 #pragma once
-// `shadowscope curves`: the analytic curves of DESIGN §3 (warp parameter n'(γ), aliasing error
+// `shadowscope curves`: the analytic curves of docs/design.md §3 (warp parameter n'(γ), aliasing error
 // m_z(z), split boundaries against γ) as CSV tables and SVG charts, without rendering anything.
 #include "geometry/shadow/settings.h"
 

@@ -1,4 +1,4 @@
-// `shadowscope curves`: the CSV tables hold the DESIGN §3 reference values, the SVG charts have a
+// `shadowscope curves`: the CSV tables hold the docs/design.md §3 reference values, the SVG charts have a
 // line and a legend entry per series, bad input gives a one-line error; and the chart axis ticks
 // (ui/charts/chart.h) are round numbers.
 #include "cli_test_util.h"
@@ -91,7 +91,7 @@ TEST(CurvesCommand, WarpCsvHoldsTheReferenceValues) {
             EXPECT_EQ(std::stod(row[3]), 0.0) << i;
         }
     }
-    // DESIGN §3.2 reference: n'₁(90°) = n + √(fn) = 11; GMNPR λ₁(90°) = 11/99.
+    // docs/design.md §3.2 reference: n'₁(90°) = n + √(fn) = 11; GMNPR λ₁(90°) = 11/99.
     const double glispsm90 = std::stod(byKey[{90.0, "glispsm"}].first);
     const double gmnprLambda90 = std::stod(byKey[{90.0, "gmnpr"}].second);
     EXPECT_NEAR(glispsm90, 11.0, 1e-6);
@@ -136,7 +136,7 @@ TEST(CurvesCommand, ErrorCsvLispsmIsBalancedAtNinetyDegrees) {
     EXPECT_DOUBLE_EQ(lispsm.front().first, 1.0);
     EXPECT_DOUBLE_EQ(lispsm.back().first, 100.0);
     for (size_t i = 1; i < lispsm.size(); ++i) EXPECT_GT(lispsm[i].first, lispsm[i - 1].first) << "z increases";
-    // LiSPSM's n' = n + √(fn) is the optimum of eq 12 at γ = 90°: m_z(n) = m_z(f) (DESIGN §3.3).
+    // LiSPSM's n' = n + √(fn) is the optimum of eq 12 at γ = 90°: m_z(n) = m_z(f) (docs/design.md §3.3).
     EXPECT_NEAR(lispsm.front().second / lispsm.back().second, 1.0, 1e-6);
 }
 

@@ -57,7 +57,7 @@ TEST(Focus, EmptyWhenTheFrustumMissesTheScene) {
 }
 
 // Every point of V ∩ S, and every point of S between it and the light, lands in the light's
-// unit cube, for random cameras and lights (DESIGN §3.1).
+// unit cube, for random cameras and lights (docs/design.md §3.1).
 TEST(Focus, RandomCamerasAndLightsKeepReceiversAndCastersInTheUnitCube) {
     std::mt19937 rng(1234);
     Aabb S;

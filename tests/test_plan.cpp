@@ -32,7 +32,7 @@ const WarpMethod kMethods[] = {WarpMethod::Uniform, WarpMethod::Psm, WarpMethod:
 } // namespace
 
 // Every point of V_i ∩ S and every point of S between it and the light lands in split i's unit
-// cube, for every warp, both warp directions and 1–4 splits (DESIGN §3.1, §3.2).
+// cube, for every warp, both warp directions and 1–4 splits (docs/design.md §3.1, §3.2).
 TEST(Plan, WarpedSplitsKeepReceiversAndCastersInTheirUnitCube) {
     std::mt19937 rng(99);
     Aabb S;

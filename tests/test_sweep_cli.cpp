@@ -90,7 +90,7 @@ TEST(SweepGamma, EveryMethodPassesTheCheckAtCiSize) {
         // Light ∥ view (0° and 180°): every method falls back to uniform.
         if (angle == 0 || angle == 180 || method == "uniform") EXPECT_TRUE(std::isinf(num(row, "n_prime")));
         else EXPECT_TRUE(std::isfinite(num(row, "n_prime")));
-        // γ = 90°: GLiSPSM and GMNPR both give n' = n + √(f·n) (Barroso eq 14, Zhang eq 8).
+        // γ = 90°: GLiSPSM and GMNPR both give n' = n + √(f·n) (Barroso eq 13, Zhang eq 8).
         if (angle == 90 && (method == "glispsm" || method == "gmnpr"))
             EXPECT_NEAR(num(row, "n_prime"), n + std::sqrt(f * n), 1e-6);
         if (angle == 90 && method == "psm") EXPECT_NEAR(num(row, "n_prime"), n, 1e-9);

@@ -161,7 +161,7 @@ TEST(Techniques, LispsmGivesNearReceiversMoreTexelsPerPixel) {
 }
 
 // Per-split caster culling: three practical splits on the platform submit little more than one
-// uniform map (DESIGN §3.4, Barroso Table 2).
+// uniform map (docs/design.md §3.4, Barroso Table 2).
 TEST(Techniques, SplitCullingKeepsShadowTrianglesNearOnePass) {
     static Bench platform(makePlatformScene());
     ShadowSettings one = small(256);

@@ -1,4 +1,4 @@
-// Warp parameters against DESIGN §3.2's reference values (n = 1, f = 100, φ = π/6).
+// Warp parameters against docs/design.md §3.2's reference values (n = 1, f = 100, φ = π/6).
 #include "geometry/shadow/analytic_error.h"
 #include "geometry/shadow/warp.h"
 

@@ -106,7 +106,7 @@ void Dashboard::drawStatsTable() {
             row("m mean / p50", [&](int i) {
                 const auto* in = insp(i);
                 return in ? fmt("%.3g", in->aliasing.mean) + " / " + fmt("%.3g", in->aliasing.p50) : std::string("–");
-            }, "Aliasing error m (screen pixels per shadow texel, DESIGN §4) over receiver pixels");
+            }, "Aliasing error m (screen pixels per shadow texel, docs/design.md §4) over receiver pixels");
             row("m p95 / max", [&](int i) {
                 const auto* in = insp(i);
                 return in ? fmt("%.3g", in->aliasing.p95) + " / " + fmt("%.3g", in->aliasing.max) : std::string("–");

@@ -2,7 +2,7 @@
 // Lost casters, measured geometrically (issue 9): whatever can shadow a receiver lies on the
 // segment from it towards the light until that segment leaves the scene bounds S, so a correct
 // plan keeps that whole segment inside the light frustum of the split the receiver samples
-// (the focus body B_i extruded towards the light, DESIGN §3.1). Counting receivers whose segment
+// (the focus body B_i extruded towards the light, docs/design.md §3.1). Counting receivers whose segment
 // leaves the frustum finds a plan that drops casters whatever the map resolution, where
 // false_lit cannot tell lost casters from casters thinner than a texel. Pure, no GL.
 #include "geometry/shadow/shadow_plan.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Ground truth for shadow inspection (DESIGN §4): for each visible receiver point, does a ray
+// Ground truth for shadow inspection (docs/design.md §4): for each visible receiver point, does a ray
 // from it towards the directional light hit any triangle of the scene? Traced with Embree 3 on
 // the CPU, so it is independent of the GL renderer whose shadows it judges. No GL, no ImGui.
 #include "geometry/scene/scene.h"

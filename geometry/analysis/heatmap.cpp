@@ -270,7 +270,7 @@ glm::vec3 divergingLog2(float m, float range) {
 
 glm::vec3 falseColourTruth(float s, bool occluded) {
     if (!std::isfinite(s)) return kInvalidColour;
-    const bool lit = s >= 0.5f; // DESIGN §4 threshold, as in geometry::truthStats
+    const bool lit = s >= 0.5f; // docs/design.md §4 threshold, as in geometry::truthStats
     if (!occluded && !lit) return kFalseShadowColour;
     if (occluded && lit) return kFalseLitColour;
     return glm::vec3(0.3f + 0.6f * std::clamp(s, 0.f, 1.f));

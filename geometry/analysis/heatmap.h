@@ -1,5 +1,5 @@
 #pragma once
-// The image side of inspection heatmaps (DESIGN §4): colour maps, heatmap images, legends and
+// The image side of inspection heatmaps (docs/design.md §4): colour maps, heatmap images, legends and
 // PFM float dumps. CPU only, no GL calls; per-pixel inputs are row-major, top row first, like
 // renderer::Image.
 #include "geometry/analysis/image.h"
@@ -23,15 +23,14 @@ inline constexpr glm::vec3 kInvalidColour{1.f, 0.f, 1.f};
 inline constexpr glm::vec3 kNonReceiverColour{0.15f, 0.15f, 0.15f};
 
 /// Aliasing error m on a diverging blue–white–red scale of log2 m over [−range, range]
-/// (DESIGN §4 "Heatmap: log2 m on a diverging colour scale"): blue = oversampled (m < 1),
+/// (docs/design.md §4 "Heatmap"): blue = oversampled (m < 1),
 /// white = m = 1, red = undersampled (m > 1); beyond the range the end colours hold. Lightness
 /// falls monotonically from white towards both ends (a ColorBrewer RdBu-like ramp), so the
 /// magnitude reads the same on both sides. Non-finite or non-positive m, or range ≤ 0, give
 /// kInvalidColour.
 [[nodiscard]] glm::vec3 divergingLog2(float m, float range = 4);
 
-/// Shadow factor s (lit fraction) against truth (DESIGN §4 "Heatmap: red false shadow, blue
-/// false lit"): red where truth is lit and s < 0.5, blue where truth is shadowed and s ≥ 0.5,
+/// Shadow factor s (lit fraction) against truth (docs/design.md §4 "Heatmap"): red where truth is lit and s < 0.5, blue where truth is shadowed and s ≥ 0.5,
 /// otherwise a grey whose level follows s (0.3 shadowed … 0.9 lit), so the scene stays readable
 /// under the errors. Non-finite s gives kInvalidColour.
 [[nodiscard]] glm::vec3 falseColourTruth(float s, bool occluded);

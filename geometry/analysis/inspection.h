@@ -18,7 +18,7 @@ class GroundTruth;
 struct Inspection {
     int width = 0, height = 0;
     std::vector<float> shadow;          // s per pixel
-    std::vector<float> m;               // aliasing error per pixel (DESIGN §4)
+    std::vector<float> m;               // aliasing error per pixel (docs/design.md §4)
     std::vector<glm::vec4> aux;         // map texel u, v, split, map depth
     std::vector<glm::vec3> positions;   // world
     std::vector<glm::vec3> normals;     // facing normal

@@ -79,7 +79,7 @@ TruthStats truthStats(std::span<const float> s, std::span<const uint8_t> occlude
         if (!receiver[i]) continue;
         if (!std::isfinite(s[i])) { ++st.skipped; continue; }
         ++st.count;
-        const bool lit = s[i] >= 0.5f; // the rendered verdict; DESIGN §4 thresholds at 0.5
+        const bool lit = s[i] >= 0.5f; // the rendered verdict; docs/design.md §4 thresholds at 0.5
         const double truth = occluded[i] ? 0.0 : 1.0;
         falseShadow += !occluded[i] && !lit;
         falseLit += occluded[i] && lit;

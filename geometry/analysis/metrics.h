@@ -1,9 +1,9 @@
 #pragma once
-// CPU-side inspection metrics over per-pixel readbacks (DESIGN §4). Pure functions, no GL.
+// CPU-side inspection metrics over per-pixel readbacks (docs/design.md §4). Pure functions, no GL.
 //
 // Every input is one value per eye pixel in the same order (row-major, top row first; the order
 // does not matter to the statistics). `receiver[i] != 0` marks visible geometry facing the light
-// (N·l < 0); sky and back-facing pixels are left out of every statistic, as DESIGN §4 asks.
+// (N·l < 0); sky and back-facing pixels are left out of every statistic, as docs/design.md §4 asks.
 // Non-finite values (NaN, ±Inf) are skipped and counted in `skipped`, so one bad pixel cannot
 // turn a whole statistic into NaN. Spans of different lengths throw std::invalid_argument.
 #include <glm/glm.hpp>
@@ -15,7 +15,7 @@
 
 namespace geometry::analysis {
 
-/// Aliasing error m (DESIGN §4: m = 1/σ_min(J), screen pixels per texel along the worst
+/// Aliasing error m (docs/design.md §4: m = 1/σ_min(J), screen pixels per texel along the worst
 /// direction; m > 1 undersampled) summarized over receiver pixels.
 struct AliasingStats {
     double mean = 0, p50 = 0, p95 = 0, max = 0;
@@ -29,7 +29,7 @@ struct AliasingStats {
 /// All fields are zero when no receiver pixel has a finite m.
 [[nodiscard]] AliasingStats aliasingStats(std::span<const float> m, std::span<const uint8_t> receiver);
 
-/// Rendered shadow factor s against ray-cast ground truth (DESIGN §4 "Ground truth").
+/// Rendered shadow factor s against ray-cast ground truth (docs/design.md §4 "Ground truth").
 /// s is the lit fraction: 1 fully lit, 0 fully shadowed.
 struct TruthStats {
     double falseShadow = 0; // fraction of counted pixels with truth lit and s < 0.5 (acne, over-bias)
@@ -44,7 +44,7 @@ struct TruthStats {
 [[nodiscard]] TruthStats truthStats(std::span<const float> s, std::span<const uint8_t> occluded,
                                     std::span<const uint8_t> receiver);
 
-/// Texel utilization (DESIGN §4): the fraction of split `split`'s resolution² texels that hold
+/// Texel utilization (docs/design.md §4): the fraction of split `split`'s resolution² texels that hold
 /// at least one receiver pixel's sample point. aux[i] = (u, v in texels of the split's map,
 /// split index, map depth); a pixel belongs to the split when its index rounds to `split`, and
 /// it marks texel (⌊u⌋, ⌊v⌋). Pixels with non-finite u, v or index, or with (u, v) outside

@@ -1,5 +1,5 @@
 #pragma once
-// Frame-to-frame and across-split stability measures (DESIGN §4 "Seams", "Flicker"). Pure
+// Frame-to-frame and across-split stability measures (docs/design.md §4 "Seams", "Flicker"). Pure
 // functions over per-pixel readbacks, no GL; inputs are one value per eye pixel, row-major, top
 // row first, as in metrics.h. `receiver[i] != 0` marks visible geometry facing the light.
 // Spans of different lengths (or not width·height long, for seamStats) throw std::invalid_argument.
@@ -31,7 +31,7 @@ struct FlickerStats {
                                         std::span<const uint8_t> receiverBefore, std::span<const float> sAfter,
                                         std::span<const uint8_t> occludedAfter, std::span<const uint8_t> receiverAfter);
 
-/// Seams (DESIGN §4: "ratio of m on the two sides of each split boundary"). Walks every row and
+/// Seams (docs/design.md §4: "ratio of m on the two sides of each split boundary"). Walks every row and
 /// column through four consecutive pixels c, a | b, e (a and b neighbours): a split boundary
 /// lies between a and b when their split indices (aux[i].z, rounded; < 0 for sky) differ, while
 /// c shares a's split and e shares b's. All four must be receivers with 0 < m < 1e6 (larger m is

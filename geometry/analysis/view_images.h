@@ -13,7 +13,7 @@ namespace geometry::analysis {
                                          const geometry::shadow::ShadowPlan& plan);
 /// The shadow map's texel grid (every `every` texels) drawn over the receivers of the eye image.
 [[nodiscard]] Image texelsView(const Image& eye, const Inspection& in, int every = 1);
-/// log2 m heatmap with a legend (DESIGN §4); `blend` > 0 mixes the eye image in (0 heatmap alone).
+/// log2 m heatmap with a legend (docs/design.md §4); `blend` > 0 mixes the eye image in (0 heatmap alone).
 [[nodiscard]] Image aliasingView(const Inspection& in, const Image& eye, float blend = 0.f);
 /// False shadow red, false lit blue, over the grey scene; needs in.occluded.
 [[nodiscard]] Image truthView(const Inspection& in, const Image& eye, float blend = 0.f);
@@ -24,7 +24,7 @@ namespace geometry::analysis {
 [[nodiscard]] Image differenceView(const Inspection& a, const Inspection& b);
 
 /// Tints, in a light-view image of split `split` (resolution `res` texels), every texel that some
-/// visible receiver pixel samples (DESIGN §4 texel utilization, shown).
+/// visible receiver pixel samples (docs/design.md §4 texel utilization, shown).
 void tintSampledTexels(Image& light, const Inspection& in, int split, int res);
 
 } // namespace geometry::analysis

@@ -51,7 +51,7 @@ struct LoadedModel {
 /// True for extensions loadModel() reads.
 [[nodiscard]] bool isModelFile(std::string_view path) noexcept;
 
-/// Cleans one triangle mesh in place (DESIGN: drop NaN/Inf vertices and their faces, degenerate
+/// Cleans one triangle mesh in place (docs/design.md §2.1: drop NaN/Inf vertices and their faces, degenerate
 /// faces, merge duplicates, remove duplicate faces and isolated vertices, crease-angle normals,
 /// optional orientation fix) and returns what it did. Does not chunk.
 CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {});

@@ -1,6 +1,6 @@
 #pragma once
 // Turning the light about the eye so that its angle with the view direction takes a chosen value
-// (DESIGN §1 "find where methods fail": γ sweeps through the dueling frusta). Pure, no GL; the
+// (docs/design.md §1, hunting failure cases: γ sweeps through the dueling frusta). Pure, no GL; the
 // `sweep gamma` command and the GUI's "set γ" control share it.
 #include <glm/glm.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The scene model: a flat list of meshes, one camera, one directional light. Nothing more
-// (DESIGN §2: "model no more of a scene than it needs").
+// (docs/design.md §2: "model no more of a scene than it needs").
 #include "geometry/scene/aabb.h"
 
 #include <cstdint>
@@ -10,7 +10,7 @@
 namespace geometry::scene {
 
 /// A contiguous run of triangles in a mesh's index buffer, with world-space bounds, so that
-/// shadow and eye passes can cull casters per split (DESIGN §3.4).
+/// shadow and eye passes can cull casters per split (docs/design.md §3.4).
 struct Chunk {
     uint32_t firstTriangle = 0;
     uint32_t triangleCount = 0;

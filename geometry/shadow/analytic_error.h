@@ -1,5 +1,5 @@
 #pragma once
-// Analytic aliasing error along the view axis (Barroso eq 12; Zhang 004 eq 2), DESIGN §3.3.
+// Analytic aliasing error along the view axis (Barroso eq 12; Zhang 004 eq 2), docs/design.md §3.3.
 namespace geometry::shadow {
 
 struct ErrorModel {

@@ -1,6 +1,6 @@
 #pragma once
 // A convex polyhedron as a list of planar faces, just enough to clip a view frustum by the
-// scene bounds (DESIGN §3.1). The same approach as Wimmer's LiSPSM reference code.
+// scene bounds (docs/design.md §3.1). The same approach as Wimmer's LiSPSM reference code.
 #include "geometry/scene/aabb.h"
 
 #include <array>

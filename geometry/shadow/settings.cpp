@@ -124,11 +124,11 @@ const std::vector<SettingInfo>& settingsDeclaration() {
         number("filter.eye_blur.iterations", "Eye-space blur of the shadow mask, stronger near the viewer "
                "(Scherzer 4.3); 0 = off", Kind::Int, 0, 8,
                [](ShadowSettings& s) -> auto& { return s.filter.eyeBlurIterations; }),
-        number("filter.eye_blur.falloff", "Eye-space blur: radius = 1/(1 + falloff * view depth) pixels per "
+        number("filter.eye_blur.falloff", "Eye-space blur: taps 1/(1 + falloff * view depth) pixels apart, 3 each side, per "
                "iteration", Kind::Float, 0, 10, [](ShadowSettings& s) -> auto& { return s.filter.eyeBlurFalloff; },
                true),
         choice("warp.method",
-               "Warp: uniform (none), psm (n' = n), lispsm (Wimmer), glispsm (Barroso eqs 13-18), gmnpr (Zhang eq 8), "
+               "Warp: uniform (none), psm (n' = n / sin(gamma)), lispsm (Wimmer), glispsm (Barroso eqs 13-18), gmnpr (Zhang eq 8), "
                "manual (warp.n_prime)",
                {"uniform", "psm", "lispsm", "glispsm", "gmnpr", "manual"},
                [](ShadowSettings& s) -> auto& { return s.warp.method; }),

@@ -12,7 +12,7 @@
 
 namespace geometry::shadow {
 
-/// Bias types (Barroso Table 1; Scherzer §4.2; DESIGN §3.5).
+/// Bias types (Barroso Table 1; Scherzer §4.2; docs/design.md §3.5).
 enum class BiasType { None, Constant, Slope, SecondDepth, Midpoint, DualDepth, NormalOffset };
 
 struct BiasSettings {
@@ -26,7 +26,7 @@ struct BiasSettings {
     bool tangentPlane = false; // bias.tangent_plane: PCF reference depth on the receiver's plane
 };
 
-/// Filters (Barroso §2.2; Scherzer §4.3; DESIGN §3.6).
+/// Filters (Barroso §2.2; Scherzer §4.3; docs/design.md §3.6).
 enum class FilterType { None, Hw2x2, Pcf, Disk, Vsm };
 
 struct FilterSettings {

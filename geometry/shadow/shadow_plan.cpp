@@ -14,7 +14,7 @@ using dvec3 = glm::dvec3;
 using dvec4 = glm::dvec4;
 using dmat4 = glm::dmat4;
 
-/// Beyond this n'/(d + n) a warp differs from uniform by less than float precision: use uniform.
+/// Beyond n' = kUniformRatio·(d + 1) a warp differs from uniform by less than float precision: use uniform.
 constexpr double kUniformRatio = 1e5;
 
 /// Any unit vector ⊥ l.
@@ -111,7 +111,7 @@ struct SplitFrame {
     double d;
 };
 
-/// Builds L and the projection after it for B (Wimmer's LiSPSM construction, DESIGN §3.2).
+/// Builds L and the projection after it for B (Wimmer's LiSPSM construction, docs/design.md §3.2).
 /// B's points pulled back to S's light-facing boundary are fitted too, so every caster between
 /// B and the light stays in the map.
 SplitFrame frameForSplit(const std::vector<glm::vec3>& body, const dvec3& l, const dvec3& vp, const dvec3& eye,

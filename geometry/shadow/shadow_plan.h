@@ -1,6 +1,6 @@
 #pragma once
 // The shadow plan: everything the renderer needs to draw shadows, decided here and nowhere
-// else (DESIGN §2). A plain value: rendering, overlays, charts and tests use the same plan.
+// else (docs/design.md §2). A plain value: rendering, overlays, charts and tests use the same plan.
 #include "geometry/scene/scene.h"
 #include "geometry/shadow/settings.h"
 

@@ -20,7 +20,7 @@ std::vector<double> splitDistances(const SplitParams& p, double n, double f, dou
     case SplitScheme::Log:
         for (int i = 1; i < k; ++i) c[i] = logarithmic(i);
         break;
-    case SplitScheme::Practical: // Zhang 003 eq 3, with a weight
+    case SplitScheme::Practical: // λ·log + (1 − λ)·uniform: the blend engines ship (docs/design.md §3.4)
         for (int i = 1; i < k; ++i) c[i] = p.lambda * logarithmic(i) + (1.0 - p.lambda) * uniform(i);
         break;
     case SplitScheme::Pssm: { // lengths L_i = L_1·r^(i−1), ΣL_i = f − n

@@ -1,5 +1,5 @@
 #pragma once
-// Z-partitioning of [n, f] into k splits (DESIGN §3.4).
+// Z-partitioning of [n, f] into k splits (docs/design.md §3.4).
 #include <string_view>
 #include <vector>
 

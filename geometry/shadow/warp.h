@@ -1,5 +1,5 @@
 #pragma once
-// The LiSPSM family of warps (DESIGN §3.2): each returns the warp parameter n', the distance from
+// The LiSPSM family of warps (docs/design.md §3.2): each returns the warp parameter n', the distance from
 // the warp frustum P's projection centre to its near plane. n' = +∞ means uniform (no warp).
 // Angles in radians; n, f the (sub-)frustum's near and far; φ its vertical half field of view;
 // γ = θ ∈ [0, π/2] the angle between light and view directions.
@@ -14,9 +14,9 @@ enum class GlispsmFalloff { Eq18, Eq17 };
 
 inline constexpr double kUniform = std::numeric_limits<double>::infinity();
 
-/// Barroso eq 13: γ_lim = atan((a + b) / (f − n)), a = n·tanφ, b = f·tanφ.
+/// Barroso eq 15: γ_lim = atan((a + b) / (f − n)), a = n·tanφ, b = f·tanφ.
 [[nodiscard]] double gammaLimit(double n, double f, double phi) noexcept;
-/// Barroso eqs 14–15: n'₁(γ) = (n + √(f·n))·sinγ − a·cosγ, for γ_lim ≤ γ ≤ π/2.
+/// Barroso eq 13 (eq 16's first case): n'₁(γ) = (n + √(f·n))·sinγ − a·cosγ, for γ_lim ≤ γ ≤ π/2.
 [[nodiscard]] double nPrimeGlispsm1(double n, double f, double phi, double gamma) noexcept;
 /// Barroso eqs 16–18: n'₁ above γ_lim; n'₁(γ_lim) / r(γ) below, r from eq 18 (default) or eq 17.
 [[nodiscard]] double nPrimeGlispsm(double n, double f, double phi, double gamma,

@@ -132,7 +132,7 @@ void main() {
     oDirect = vec4(uColor * (1.0 - kAmbient) * ndotl, 1.0);
     oMask = vec4(s);
     oAux = vec4(texel, float(split), p.z);
-    // DESIGN §4: J = texels per pixel (screen derivatives of the map coordinates, taken above in
+    // docs/design.md §4: J = texels per pixel (screen derivatives of the map coordinates, taken above in
     // uniform control flow); m = 1/σ_min(J), screen pixels per texel along the worst direction.
     float a = dot(dTdx, dTdx) + dot(dTdy, dTdy);
     float sigmaMin2 = 0.5 * (a - sqrt(max(a * a - 4.0 * det * det, 0.0)));
