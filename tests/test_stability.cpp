@@ -48,7 +48,7 @@ TEST(LightAngle, RoundTripsThroughViewAngleEverywhere) {
         const float angle = testutil::uniform(rng, 0.f, 180.f);
         const glm::vec3 l = lightAtViewAngle(v, ref, angle);
         ASSERT_NEAR(glm::length(l), 1.f, 1e-5f);
-        ASSERT_NEAR(viewAngleDeg(v, l), angle, 0.05f) << "angle " << angle;
+        ASSERT_NEAR(lightViewAngleDeg(v, l), angle, 0.05f) << "angle " << angle;
         ASSERT_NEAR(gammaDeg(v, l), std::min(angle, 180.f - angle), 0.05f);
     }
 }
@@ -57,7 +57,7 @@ TEST(LightAngle, KeepsTheLightWhereItWasAroundTheViewAxis) {
     // The current light's own angle gives the current light back.
     const glm::vec3 v = glm::normalize(glm::vec3(38.5f, -4.2f, -10.5f));
     const glm::vec3 ref = glm::normalize(glm::vec3(-0.55f, -0.75f, -0.35f));
-    const glm::vec3 l = lightAtViewAngle(v, ref, viewAngleDeg(v, ref));
+    const glm::vec3 l = lightAtViewAngle(v, ref, lightViewAngleDeg(v, ref));
     EXPECT_NEAR(glm::length(l - ref), 0.f, 1e-5f);
 }
 
@@ -79,13 +79,13 @@ TEST(LightAngle, NaNSafe) {
     EXPECT_NEAR(glm::length(lightAtViewAngle({0, 0, -1}, {0, -1, 0}, nan) - glm::vec3(0, 0, -1)), 0.f, 1e-6f);
     EXPECT_TRUE(finite(lightAtViewAngle(glm::vec3(nan), glm::vec3(nan), 30.f)));
     EXPECT_TRUE(finite(lightAtViewAngle(glm::vec3(0.f), glm::vec3(0.f), 30.f)));
-    EXPECT_NEAR(viewAngleDeg(glm::vec3(0.f, 0.f, -1.f), lightAtViewAngle(glm::vec3(0.f), {0, -1, 0}, 30.f)), 30.f, 1e-3f)
+    EXPECT_NEAR(lightViewAngleDeg(glm::vec3(0.f, 0.f, -1.f), lightAtViewAngle(glm::vec3(0.f), {0, -1, 0}, 30.f)), 30.f, 1e-3f)
         << "a zero v counts as (0, 0, -1)";
     // Out of range angles clamp.
-    EXPECT_NEAR(viewAngleDeg({1, 0, 0}, lightAtViewAngle({1, 0, 0}, {0, -1, 0}, 400.f)), 180.f, 1e-3f);
-    EXPECT_NEAR(viewAngleDeg({1, 0, 0}, lightAtViewAngle({1, 0, 0}, {0, -1, 0}, -5.f)), 0.f, 1e-3f);
-    EXPECT_EQ(viewAngleDeg(glm::vec3(nan), {0, -1, 0}), 0.f);
-    EXPECT_EQ(viewAngleDeg({0, 0, 0}, {0, -1, 0}), 0.f);
+    EXPECT_NEAR(lightViewAngleDeg({1, 0, 0}, lightAtViewAngle({1, 0, 0}, {0, -1, 0}, 400.f)), 180.f, 1e-3f);
+    EXPECT_NEAR(lightViewAngleDeg({1, 0, 0}, lightAtViewAngle({1, 0, 0}, {0, -1, 0}, -5.f)), 0.f, 1e-3f);
+    EXPECT_EQ(lightViewAngleDeg(glm::vec3(nan), {0, -1, 0}), 0.f);
+    EXPECT_EQ(lightViewAngleDeg({0, 0, 0}, {0, -1, 0}), 0.f);
 }
 
 TEST(PathInterpolation, ParameterCoversThePath) {
@@ -118,7 +118,7 @@ TEST(PathInterpolation, LightTurnsAtAConstantRate) {
     for (int i = 0; i <= 8; ++i) {
         const glm::vec3 l = lightAlongPath(keys, i / 8.0);
         EXPECT_NEAR(glm::length(l), 1.f, 1e-6f);
-        EXPECT_NEAR(viewAngleDeg({1, 0, 0}, l), 180.f * i / 8.f, 1e-3f) << i;
+        EXPECT_NEAR(lightViewAngleDeg({1, 0, 0}, l), 180.f * i / 8.f, 1e-3f) << i;
     }
     // Opposite keys still give a finite path (through world down).
     const glm::vec3 mid = lightAlongPath({{1, 0, 0}, {-1, 0, 0}}, 0.5);

@@ -128,7 +128,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     ImGui::PopStyleVar(2);
     if (width >= 1.f && height >= 1.f) {
         drawControlsPanel();
-        drawEyePanel(input);
+        drawEyePanel();
         drawLightPanel();
         drawHeatmapPanel();
         drawStatsPanel();

@@ -87,7 +87,7 @@ public:
     [[nodiscard]] geometry::analysis::Image lightImage() const;
     [[nodiscard]] geometry::analysis::Image heatmapImage() const;
 
-    /// The last statistics of side A or B (nullopt before the first inspection).
+    /// The last statistics of side A or B (nullptr before the first inspection).
     [[nodiscard]] const geometry::analysis::Inspection* inspection(int side) const noexcept;
     [[nodiscard]] const geometry::shadow::ShadowPlan& plan(int side) const noexcept { return sides_[side].plan; }
     [[nodiscard]] const LoadedScene& scene() const noexcept { return scene_; }
@@ -123,7 +123,7 @@ private:
 
     // Panels (dashboard_panels.cpp, dashboard_controls.cpp, dashboard_stats.cpp).
     void drawSplitters(float width, float height);
-    void drawEyePanel(const FrameInput& input);
+    void drawEyePanel();
     void drawLightPanel();
     void drawHeatmapPanel();
     void drawStatsPanel();
@@ -142,7 +142,7 @@ private:
     void drawPresetsGroup();
     /// An image filling `area` with zoom/pan/hover handling; returns the hovered image pixel.
     std::optional<glm::ivec2> imageArea(ViewPanel panel, GLuint texture, int width, int height, const Rect& area,
-                                        bool cameraControls, const FrameInput& input, const char* id);
+                                        bool cameraControls, const char* id);
     void probeEye(int side, glm::ivec2 pixel, ViewPanel panel);
     void probeLight(glm::ivec2 pixel);
 

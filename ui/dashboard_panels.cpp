@@ -59,11 +59,15 @@ void zoomButtons(ImageView& view, const char* id) {
     ImGui::PopID();
 }
 
+/// A left click that did not drag (a drag orbits or pans): pins the pixel under the cursor.
+bool clickedWithoutDrag() {
+    return ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f;
+}
+
 } // namespace
 
 std::optional<glm::ivec2> Dashboard::imageArea(ViewPanel panel, GLuint texture, int w, int h, const Rect& area,
-                                               bool cameraControls, const FrameInput& input, const char* id) {
-    (void)input;
+                                               bool cameraControls, const char* id) {
     if (area.w < 1.f || area.h < 1.f || w <= 0 || h <= 0) return std::nullopt;
     ImageView& view = state_.imageViews[int(panel)];
     ImGui::SetCursorScreenPos(ImVec2(area.x, area.y));
@@ -139,7 +143,7 @@ void Dashboard::probeLight(glm::ivec2 px) {
     hovered_ = p;
 }
 
-void Dashboard::drawEyePanel(const FrameInput& input) {
+void Dashboard::drawEyePanel() {
     if (panelBegin("eye_panel", rects_.eye)) {
         const CompareMode mode = state_.views.compare;
         ImGui::TextUnformatted(mode == CompareMode::Off ? "Eye view" : mode == CompareMode::SideBySide ? "Eye view: A | B"
@@ -151,7 +155,7 @@ void Dashboard::drawEyePanel(const FrameInput& input) {
         zoomButtons(state_.imageViews[int(ViewPanel::Eye)], "eye");
         const ImageView& view = state_.imageViews[int(ViewPanel::Eye)];
         const geometry::shadow::Viewport size = sides_[0].size;
-        const bool clicked = ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f;
+        const bool clicked = clickedWithoutDrag();
         if (mode == CompareMode::SideBySide && sides_[1].renderer) {
             const float half = std::floor((eyeArea_.w - 2.f) * 0.5f);
             const Rect left{eyeArea_.x, eyeArea_.y, half, eyeArea_.h};
@@ -159,7 +163,7 @@ void Dashboard::drawEyePanel(const FrameInput& input) {
             for (int i = 0; i < 2; ++i) {
                 const Rect& r = i == 0 ? left : right;
                 const auto px = imageArea(ViewPanel::Eye, sides_[i].renderer->eyeTexture(), size.width, size.height, r, true,
-                                          input, i == 0 ? "eye_image" : "eye_image_b");
+                                          i == 0 ? "eye_image" : "eye_image_b");
                 ImGui::GetWindowDrawList()->AddText(ImVec2(r.x + 6, r.y + 4), IM_COL32(255, 255, 255, 230), i == 0 ? "A" : "B");
                 if (px) {
                     probeEye(i, *px, ViewPanel::Eye);
@@ -168,7 +172,7 @@ void Dashboard::drawEyePanel(const FrameInput& input) {
             }
         } else {
             const auto px = imageArea(ViewPanel::Eye, sides_[0].renderer->eyeTexture(), size.width, size.height, eyeArea_,
-                                      true, input, "eye_image");
+                                      true, "eye_image");
             if (mode == CompareMode::Split && sides_[1].renderer) {
                 // B over the right part, a draggable divider between them.
                 ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -215,11 +219,10 @@ void Dashboard::drawLightPanel() {
         zoomButtons(state_.imageViews[int(ViewPanel::Light)], "light");
         if (side.renderer) {
             const GLuint tex = state_.views.unwarped ? side.renderer->unwarpedLightTexture() : side.renderer->lightTexture();
-            const FrameInput none;
-            const auto px = imageArea(ViewPanel::Light, tex, lightViewSize_, lightViewSize_, lightArea_, false, none, "light_image");
+            const auto px = imageArea(ViewPanel::Light, tex, lightViewSize_, lightViewSize_, lightArea_, false, "light_image");
             if (px) {
                 probeLight(*px);
-                if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f)
+                if (clickedWithoutDrag())
                     pinned_ = hovered_;
             }
         }
@@ -246,9 +249,8 @@ void Dashboard::drawHeatmapPanel() {
                               "texel grid; difference: m_A / m_B (A/B compare)");
         zoomButtons(state_.imageViews[int(ViewPanel::Heatmap)], "heatmap");
         const int side = shownSide();
-        const FrameInput none;
         const auto px = imageArea(ViewPanel::Heatmap, heatmap_.id(), heatmap_.width(), heatmap_.height(), heatmapArea_,
-                                  false, none, "heatmap_image");
+                                  false, "heatmap_image");
         const bool needsTruth = state_.views.heatmap == HeatmapKind::Truth && !state_.views.truth;
         const bool needsCompare = state_.views.heatmap == HeatmapKind::Difference && !comparing();
         if (needsTruth || needsCompare)
@@ -256,7 +258,7 @@ void Dashboard::drawHeatmapPanel() {
                                                 needsTruth ? "turn on ground truth (Views)" : "turn on A/B compare (Views)");
         if (px) {
             probeEye(side, *px, ViewPanel::Heatmap);
-            if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f)
+            if (clickedWithoutDrag())
                 pinned_ = hovered_;
         }
         if (pinned_ && pinned_->panel != ViewPanel::Light)

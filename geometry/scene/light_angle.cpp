@@ -35,6 +35,5 @@ glm::vec3 lightAtViewAngle(const glm::vec3& vIn, const glm::vec3& reference, flo
     return glm::vec3(glm::normalize(std::cos(a) * v + std::sin(a) * u));
 }
 
-float viewAngleDeg(const glm::vec3& v, const glm::vec3& l) noexcept { return lightViewAngleDeg(v, l); }
 
 } // namespace geometry::scene

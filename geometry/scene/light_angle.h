@@ -15,10 +15,7 @@ namespace geometry::scene {
 /// When reference is (anti)parallel to v, zero or not finite, u is world down (0, −1, 0) made ⊥ v
 /// (so that at 90° the sun shines from above), or world −x when v is vertical. angleDeg is clamped
 /// to [0, 180]; NaN counts as 0. A zero or non-finite v counts as (0, 0, −1). Never NaN.
+/// Its inverse is lightViewAngleDeg (scene.h).
 [[nodiscard]] glm::vec3 lightAtViewAngle(const glm::vec3& v, const glm::vec3& reference, float angleDeg) noexcept;
-
-/// acos(v·l) in degrees, in [0, 180] (0: l = v, 180: l = −v); lightAtViewAngle's inverse.
-/// NaN-safe: zero or non-finite input gives 0. The same value as lightViewAngleDeg (scene.h).
-[[nodiscard]] float viewAngleDeg(const glm::vec3& v, const glm::vec3& l) noexcept;
 
 } // namespace geometry::scene

@@ -23,11 +23,6 @@ void MeshBuilder::addTriangle(uint32_t a, uint32_t b, uint32_t c) {
     mesh_.indices.insert(mesh_.indices.end(), {a, b, c});
 }
 
-void MeshBuilder::addQuad(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& p3) {
-    openSurfaces_ = true; // a lone quad can face away from the light and must still cast
-    addFace(p0, p1, p2, p3);
-}
-
 void MeshBuilder::addFace(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& p3) {
     glm::vec3 n = glm::cross(p1 - p0, p3 - p0);
     const float len = glm::length(n);

@@ -15,8 +15,6 @@ public:
     /// Cylinder of `radius` from a to b with `segments` sides (≥ 3), smooth sides;
     /// caps add 2·segments triangles. 2·segments side triangles.
     void addCylinder(const glm::vec3& a, const glm::vec3& b, float radius, int segments, bool caps = true);
-    /// Flat quad p0..p3 (counter-clockwise seen from the front), 2 triangles, one-sided normal.
-    void addQuad(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, const glm::vec3& p3);
     /// Horizontal square grid at height y, `cells`×`cells` quads, facing +y.
     void addGroundGrid(const glm::vec3& center, float size, int cells);
 

@@ -53,7 +53,7 @@ glm::vec3 lightAlongPath(const std::vector<glm::vec3>& keys, double t) noexcept 
     const auto [i, u] = segment(keys.size(), t);
     const glm::vec3 a = unitOr(keys[i], down), b = unitOr(keys[i + 1], down);
     // Rotating a towards b in their plane by u·angle(a, b) is slerp.
-    return lightAtViewAngle(a, b, u * viewAngleDeg(a, b));
+    return lightAtViewAngle(a, b, u * lightViewAngleDeg(a, b));
 }
 
 } // namespace geometry::scene
