@@ -7,8 +7,8 @@
 #include "renderer/context.h"
 #include "renderer/measure.h"
 #include "renderer/renderer.h"
-#include "ui/charts/chart.h"
 #include "ui/chart_image.h"
+#include "ui/charts/chart.h"
 #include "ui/charts/tradeoff_chart.h"
 
 #include <CLI/CLI.hpp>
@@ -44,7 +44,8 @@ std::vector<Sweep> parseSweeps(const std::vector<std::string>& sweeps) {
         if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
             throw std::invalid_argument("--sweep " + s + ": expected key=v1,v2,...");
         Sweep sw{s.substr(0, eq), splitList(s.substr(eq + 1), ',')};
-        if (!geometry::shadow::findSetting(sw.key)) throw std::invalid_argument("--sweep " + s + ": unknown setting '" + sw.key + "'");
+        if (!geometry::shadow::findSetting(sw.key))
+            throw std::invalid_argument("--sweep " + s + ": unknown setting '" + sw.key + "'");
         for (const auto& v : sw.values) { // validate each value now, with the key's range in the message
             geometry::shadow::ShadowSettings probe;
             geometry::shadow::applySetting(probe, sw.key, v);
@@ -95,9 +96,13 @@ std::vector<BenchConfiguration> benchConfigurations(const BenchOptions& o) {
 void addBenchCommand(CLI::App& cmd, BenchOptions& o) {
     addRenderOptions(cmd, o.common, OptionUse::Bench);
     cmd.add_option("--sweep", o.sweeps, "key=v1,v2,...: one configuration per value (repeatable: all combinations)");
-    cmd.add_option("--frames", o.frames, "Timed frames per configuration and view")->check(CLI::Range(1, 10000))->capture_default_str();
+    cmd.add_option("--frames", o.frames, "Timed frames per configuration and view")
+        ->check(CLI::Range(1, 10000))
+        ->capture_default_str();
     // At least one: llvmpipe reports a bogus GL_TIME_ELAPSED (hours) for a new renderer's first frame.
-    cmd.add_option("--warmup", o.warmup, "Untimed frames first (at least 1)")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd.add_option("--warmup", o.warmup, "Untimed frames first (at least 1)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
     cmd.add_flag("--truth", o.truth, "Also measure misclassification against ray-traced truth (Embree)");
 }
 
@@ -109,7 +114,8 @@ struct Row {
     bool truth = false;
 };
 
-ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows, bool gpuTimes) {
+ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows,
+                             bool gpuTimes) {
     // One point per configuration: mean frame time and geometric-mean p95 over the views.
     std::vector<ui::charts::TradeoffPoint> points;
     for (const auto& cfg : configs) {
@@ -123,7 +129,8 @@ ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, con
             }
         points.push_back({cfg.label, cfg.preset, n ? t / n : NAN, n ? std::exp(logE / n) : NAN});
     }
-    ui::charts::Chart c = ui::charts::tradeoffChart(points, gpuTimes ? "frame time, GPU median (ms)" : "frame time, CPU median (ms)");
+    ui::charts::Chart c =
+        ui::charts::tradeoffChart(points, gpuTimes ? "frame time, GPU median (ms)" : "frame time, CPU median (ms)");
     if (rows.size() > configs.size()) c.title += ", mean over views";
     return c;
 }
@@ -195,8 +202,8 @@ int runBench(const BenchOptions& o) {
                 << w.cpuMs << ',' << w.p95 << ',';
             if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
             else csv << ",,";
-            csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.common.size.width << ',' << o.common.size.height << ",\""
-                << context->rendererString() << "\"\n";
+            csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.common.size.width << ',' << o.common.size.height
+                << ",\"" << context->rendererString() << "\"\n";
         }
         if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
     }

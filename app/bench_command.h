@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace CLI { class App; }
+namespace CLI {
+class App;
+}
 
 namespace app {
 
@@ -16,7 +18,7 @@ struct BenchOptions {
     /// (OptionUse::Bench): `common.views` empty = all of the scene's views; each of `common.presets`
     /// is a configuration (none: the defaults); `common.assignments` apply to every configuration.
     RenderOptions common = benchDefaults();
-    std::vector<std::string> sweeps;       // "key=v1,v2,..."
+    std::vector<std::string> sweeps; // "key=v1,v2,..."
     int frames = 10;
     int warmup = 2;
     bool truth = false;
@@ -32,7 +34,7 @@ struct BenchOptions {
 /// One configuration: a label ("paper", "ssm filter.kernel=5") and its settings.
 struct BenchConfiguration {
     std::string label;
-    std::string preset;                    // the preset's file stem ("" for the defaults)
+    std::string preset; // the preset's file stem ("" for the defaults)
     geometry::shadow::ShadowSettings settings;
 };
 

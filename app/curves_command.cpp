@@ -50,7 +50,8 @@ std::string warpCsv(const std::vector<WarpRow>& rows) {
 std::string errorCsv(const std::vector<ErrorRow>& rows) {
     std::string out = "z,method,m_z\n";
     for (const ErrorRow& r : rows)
-        out += formatNumber(r.z) + "," + std::string(geometry::shadow::warpMethodName(r.method)) + "," + formatNumber(r.mz) + "\n";
+        out += formatNumber(r.z) + "," + std::string(geometry::shadow::warpMethodName(r.method)) + "," +
+               formatNumber(r.mz) + "\n";
     return out;
 }
 
@@ -59,7 +60,8 @@ std::string splitsCsv(const std::vector<SplitRow>& rows) {
     for (const SplitRow& r : rows)
         for (size_t i = 0; i + 1 < r.boundaries.size(); ++i)
             out += formatNumber(r.gammaDeg) + "," + std::string(geometry::shadow::splitSchemeName(r.scheme)) + "," +
-                   std::to_string(i) + "," + formatNumber(r.boundaries[i]) + "," + formatNumber(r.boundaries[i + 1]) + "\n";
+                   std::to_string(i) + "," + formatNumber(r.boundaries[i]) + "," + formatNumber(r.boundaries[i + 1]) +
+                   "\n";
     return out;
 }
 
@@ -78,7 +80,8 @@ void addCurvesCommand(CLI::App& cmd, CurvesOptions& o) {
     cmd.add_option("--fov-y", o.fovYDeg, "Camera vertical field of view in degrees (0..180, exclusive)")->required();
     cmd.add_option("--gamma-step", o.gammaStepDeg, "Step of gamma in degrees (0.01..90) for warp.csv and splits.csv")
         ->capture_default_str();
-    cmd.add_option("--gamma", o.gammaDeg, "Light/view angle gamma in degrees (0..90) for error.csv")->capture_default_str();
+    cmd.add_option("--gamma", o.gammaDeg, "Light/view angle gamma in degrees (0..90) for error.csv")
+        ->capture_default_str();
     cmd.add_option("--screen-res", o.screenRes, "Screen height in pixels (res_screen_y of the error model)")
         ->capture_default_str();
     cmd.add_option_function<int>(
@@ -121,7 +124,8 @@ int runCurves(const CurvesOptions& o) {
         {dir / "warp.svg", ui::charts::chartToSvg(ui::charts::warpChart(warp, p), 860, 520)},
         {dir / "lambda.svg", ui::charts::chartToSvg(ui::charts::lambdaChart(warp, p), 860, 520)},
         {dir / "error.svg", ui::charts::chartToSvg(ui::charts::errorChart(error, p), 860, 520)},
-        {dir / "splits.svg", ui::charts::chartsToSvg(ui::charts::splitChartsTitle(p), ui::charts::splitCharts(splits, p), 3, 440, 330)},
+        {dir / "splits.svg",
+         ui::charts::chartsToSvg(ui::charts::splitChartsTitle(p), ui::charts::splitCharts(splits, p), 3, 440, 330)},
     };
     for (const auto& [path, text] : files) writeText(path, text);
     for (const auto& [path, text] : files) std::cout << path.string() << '\n';

@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace CLI { class App; }
+namespace CLI {
+class App;
+}
 
 namespace app {
 
@@ -18,7 +20,7 @@ struct CurvesOptions {
     int screenRes = 1080;                     // res_screen_y of the error model
     std::optional<int> mapRes;                // res_map; default: the settings' shadow_map.resolution
     std::string out = "out";
-    geometry::shadow::ShadowSettings settings;        // --set key=value (warp options, split count and scheme options)
+    geometry::shadow::ShadowSettings settings; // --set key=value (warp options, split count and scheme options)
 };
 
 /// Adds the curves options (--near, --far, --fov-y, --gamma-step, --gamma, --screen-res, --map-res,

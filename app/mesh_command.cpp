@@ -26,12 +26,18 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
     j["triangles"] = triangles;
     j["vertices"] = vertices;
     j["bounds"] = {{"min", {bounds.lo.x, bounds.lo.y, bounds.lo.z}}, {"max", {bounds.hi.x, bounds.hi.y, bounds.hi.z}}};
-    j["cleanup"] = {{"input_vertices", r.inputVertices},   {"input_faces", r.inputFaces},
-                    {"non_finite_vertices", r.nonFiniteVertices}, {"non_finite_faces", r.nonFiniteFaces},
-                    {"degenerate_faces", r.degenerateFaces}, {"merged_vertices", r.mergedVertices},
-                    {"duplicate_faces", r.duplicateFaces}, {"isolated_vertices", r.isolatedVertices},
-                    {"flipped_faces", r.flippedFaces},     {"output_vertices", r.outputVertices},
-                    {"output_faces", r.outputFaces},       {"notes", r.notes}};
+    j["cleanup"] = {{"input_vertices", r.inputVertices},
+                    {"input_faces", r.inputFaces},
+                    {"non_finite_vertices", r.nonFiniteVertices},
+                    {"non_finite_faces", r.nonFiniteFaces},
+                    {"degenerate_faces", r.degenerateFaces},
+                    {"merged_vertices", r.mergedVertices},
+                    {"duplicate_faces", r.duplicateFaces},
+                    {"isolated_vertices", r.isolatedVertices},
+                    {"flipped_faces", r.flippedFaces},
+                    {"output_vertices", r.outputVertices},
+                    {"output_faces", r.outputFaces},
+                    {"notes", r.notes}};
     return j;
 }
 
@@ -97,7 +103,8 @@ int runMesh(const CLI::App& mesh, const MeshOptions& o) {
         const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m.transform)));
         for (size_t i = 0; i < m.positions.size(); ++i) {
             merged.positions.push_back(glm::vec3(m.transform * glm::vec4(m.positions[i], 1.f)));
-            merged.normals.push_back(i < m.normals.size() ? glm::normalize(normalMatrix * m.normals[i]) : glm::vec3(0, 1, 0));
+            merged.normals.push_back(i < m.normals.size() ? glm::normalize(normalMatrix * m.normals[i])
+                                                          : glm::vec3(0, 1, 0));
         }
         for (uint32_t idx : m.indices) merged.indices.push_back(base + idx);
     }

@@ -2,7 +2,9 @@
 // `shadowscope mesh info FILE [--json]` and `shadowscope mesh clean IN OUT`.
 #include <string>
 
-namespace CLI { class App; }
+namespace CLI {
+class App;
+}
 
 namespace app {
 

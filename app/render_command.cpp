@@ -1,22 +1,22 @@
 #include "render_command.h"
 
 #include "dashboard_setup.h"
-#include "headless_frame.h"
-#include "ui/dashboard_headless.h"
-#include "renderer/inspection.h"
-#include "geometry/analysis/view_images.h"
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/analysis/heatmap.h"
+#include "geometry/analysis/view_images.h"
+#include "headless_frame.h"
+#include "renderer/inspection.h"
+#include "ui/dashboard_headless.h"
 
 #include <CLI/CLI.hpp>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <algorithm>
-#include <cmath>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -24,7 +24,8 @@
 namespace app {
 
 const std::vector<std::string>& viewNames() {
-    static const std::vector<std::string> names = {"eye", "light", "light_unwarped", "aliasing", "truth", "splits", "texels", "dashboard"};
+    static const std::vector<std::string> names = {"eye",   "light",  "light_unwarped", "aliasing",
+                                                   "truth", "splits", "texels",         "dashboard"};
     return names;
 }
 
@@ -42,13 +43,18 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     j["size"] = {o.size.width, o.size.height};
     j["shadow_res"] = o.settings.resolution;
     nlohmann::json settings;
-    for (const auto& info : geometry::shadow::settingsDeclaration()) settings[std::string(info.key)] = info.format(o.settings);
+    for (const auto& info : geometry::shadow::settingsDeclaration())
+        settings[std::string(info.key)] = info.format(o.settings);
     j["settings"] = settings;
     nlohmann::json splits = nlohmann::json::array();
     for (size_t i = 0; i < f.plan.splits.size(); ++i) {
         const auto& s = f.plan.splits[i];
-        splits.push_back({{"near", s.near}, {"far", s.far}, {"n_prime", s.warped() ? nlohmann::json(s.nPrime) : nlohmann::json("inf")},
-                          {"lambda", s.lambda}, {"resolution", s.resolution}, {"empty", s.empty()},
+        splits.push_back({{"near", s.near},
+                          {"far", s.far},
+                          {"n_prime", s.warped() ? nlohmann::json(s.nPrime) : nlohmann::json("inf")},
+                          {"lambda", s.lambda},
+                          {"resolution", s.resolution},
+                          {"empty", s.empty()},
                           {"triangles", i < stats.splitTriangles.size() ? stats.splitTriangles[i] : 0}});
     }
     j["splits"] = splits;
@@ -81,7 +87,8 @@ void addExportOptions(CLI::App& cmd, ExportOptions& e) {
         ->capture_default_str();
     cmd.add_flag("--truth", e.truth, "Ray-trace ground truth (Embree) and report misclassified pixels");
     cmd.add_option("--texel-grid", e.texelGrid, "texels view: draw every N-th texel line")->check(CLI::Range(1, 4096));
-    cmd.add_option("--light-split", e.lightSplit, "light views: show this split's map")->check(CLI::Range(0, geometry::shadow::kMaxSplits - 1));
+    cmd.add_option("--light-split", e.lightSplit, "light views: show this split's map")
+        ->check(CLI::Range(0, geometry::shadow::kMaxSplits - 1));
     cmd.add_option_function<std::string>(
         "--depth-range",
         [&e](const std::string& text) {
@@ -95,7 +102,8 @@ void addExportOptions(CLI::App& cmd, ExportOptions& e) {
         },
         "light view: depth shown from black to white (map depth, 0..1); default: fitted to B_i");
     cmd.add_flag("--light-texels", e.lightTexels, "light view: tint the texels that visible pixels sample");
-    cmd.add_option("--heatmap-blend", e.heatmapBlend, "aliasing/truth views: 0 heatmap alone, up to 1 over the eye view")
+    cmd.add_option("--heatmap-blend", e.heatmapBlend,
+                   "aliasing/truth views: 0 heatmap alone, up to 1 over the eye view")
         ->check(CLI::Range(0.0, 1.0));
 }
 
@@ -145,8 +153,9 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     if (wants(e, "eye")) w.png("eye.png", eye);
     if (wants(e, "light")) {
         geometry::analysis::Image light = f.renderer->readLight();
-        if (e.lightTexels) tintSampledTexels(light, in, e.lightSplit, std::min(f.plan.splits[e.lightSplit].resolution,
-                                                                                 f.renderer->stats().shadowResolution));
+        if (e.lightTexels)
+            tintSampledTexels(light, in, e.lightSplit,
+                              std::min(f.plan.splits[e.lightSplit].resolution, f.renderer->stats().shadowResolution));
         w.png("light.png", light);
     }
     if (wants(e, "light_unwarped")) w.png("light_unwarped.png", f.renderer->readUnwarpedLight());

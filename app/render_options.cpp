@@ -72,8 +72,9 @@ CLI::Option* addSetOption(CLI::App& cmd, std::function<void(const std::vector<st
     std::string keys;
     for (const auto& info : geometry::shadow::settingsDeclaration())
         keys += "\n  " + std::string(info.key) + ": " + std::string(info.help) + " (" + info.rangeText() + ")";
-    return cmd.add_option_function<std::vector<std::string>>("--set", std::move(apply),
-                                                             "Shadow setting key=value (repeatable). Keys:" + keys)
+    return cmd
+        .add_option_function<std::vector<std::string>>("--set", std::move(apply),
+                                                       "Shadow setting key=value (repeatable). Keys:" + keys)
         ->type_name("KEY=VALUE")
         ->allow_extra_args(false);
 }
@@ -86,10 +87,10 @@ CLI::Option* addSetOption(CLI::App& cmd, std::function<void(const std::vector<st
 /// so running it once per given option (a preset file is then read up to three times) is harmless.
 struct SettingSources {
     RenderOptions* target = nullptr;
-    geometry::shadow::ShadowSettings base;      // target->settings when the options were declared
-    CLI::Option* presets = nullptr;     // --preset FILE, in command-line order
-    CLI::Option* shadowRes = nullptr;   // --shadow-res N
-    CLI::Option* assignments = nullptr; // --set key=value, in command-line order
+    geometry::shadow::ShadowSettings base; // target->settings when the options were declared
+    CLI::Option* presets = nullptr;        // --preset FILE, in command-line order
+    CLI::Option* shadowRes = nullptr;      // --shadow-res N
+    CLI::Option* assignments = nullptr;    // --set key=value, in command-line order
 
     void rebuild() const {
         geometry::shadow::ShadowSettings s = base;
@@ -174,11 +175,13 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
                    "file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
         ->capture_default_str();
     if (bench)
-        cmd.add_option("--view", o.views, "Canonical view (camera and light) named in the scene file to measure "
-                                          "(repeatable; default: every view of the scene)");
+        cmd.add_option("--view", o.views,
+                       "Canonical view (camera and light) named in the scene file to measure "
+                       "(repeatable; default: every view of the scene)");
     else
-        cmd.add_option("--view", o.view, "Canonical view (camera and light) named in the scene file, e.g. deck, "
-                                         "overview (default: the scene's camera and light)");
+        cmd.add_option("--view", o.view,
+                       "Canonical view (camera and light) named in the scene file, e.g. deck, "
+                       "overview (default: the scene's camera and light)");
     cmd.add_option_function<std::string>(
         "--size", [&o](const std::string& s) { o.size = parseSize(s); },
         "Image size WxH (default " + std::to_string(o.size.width) + "x" + std::to_string(o.size.height) + ")");

@@ -1,28 +1,30 @@
 #pragma once
 // Options shared by every command that renders (render, bench, sweep, the GUI's start-up):
 // declared once here.
-#include "geometry/scene/scene.h"
 #include "geometry/io/scene_file.h"
+#include "geometry/scene/scene.h"
 #include "geometry/shadow/shadow_plan.h"
 
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace CLI { class App; }
+namespace CLI {
+class App;
+}
 
 namespace app {
 
 struct RenderOptions {
-    std::string scene = "platform";                 // built-in name, scene file (.json) or model file
-    std::string view;                               // a canonical view of the scene; empty: the scene's camera
+    std::string scene = "platform"; // built-in name, scene file (.json) or model file
+    std::string view;               // a canonical view of the scene; empty: the scene's camera
     geometry::shadow::Viewport size{1280, 720};
     std::string out = "out";
     std::string backend = "auto";
-    std::optional<geometry::scene::Camera> camera;         // eye + target overrides
-    std::optional<glm::vec3> light;                 // l overrides
-    geometry::shadow::ShadowSettings settings;             // --preset FILE, --shadow-res, --set
-    bool settingsGiven = false;                     // any of those three was on the command line key=value
+    std::optional<geometry::scene::Camera> camera; // eye + target overrides
+    std::optional<glm::vec3> light;                // l overrides
+    geometry::shadow::ShadowSettings settings;     // --preset FILE, --shadow-res, --set
+    bool settingsGiven = false;                    // any of those three was on the command line key=value
     // OptionUse::Bench only: every --view, every --preset (each one configuration), every --set.
     std::vector<std::string> views, presets, assignments;
 };

@@ -30,13 +30,20 @@ struct Column {
     double SweepRecord::*member;
 };
 constexpr Column kColumns[] = {
-    {"n_prime", &SweepRecord::nPrime},       {"p95", &SweepRecord::p95},
-    {"max", &SweepRecord::max},              {"false_lit", &SweepRecord::falseLit},
-    {"false_shadow", &SweepRecord::falseShadow}, {"gamma_deg", &SweepRecord::gammaDeg},
-    {"lambda", &SweepRecord::lambda},        {"n_prime_min", &SweepRecord::nPrimeMin},
-    {"p50", &SweepRecord::p50},              {"mean", &SweepRecord::mean},
-    {"receivers", &SweepRecord::receivers},  {"gl_errors", &SweepRecord::glErrors},
-    {"p95_uniform", &SweepRecord::p95Uniform}, {"clipped_casters", &SweepRecord::clippedCasters},
+    {"n_prime", &SweepRecord::nPrime},
+    {"p95", &SweepRecord::p95},
+    {"max", &SweepRecord::max},
+    {"false_lit", &SweepRecord::falseLit},
+    {"false_shadow", &SweepRecord::falseShadow},
+    {"gamma_deg", &SweepRecord::gammaDeg},
+    {"lambda", &SweepRecord::lambda},
+    {"n_prime_min", &SweepRecord::nPrimeMin},
+    {"p50", &SweepRecord::p50},
+    {"mean", &SweepRecord::mean},
+    {"receivers", &SweepRecord::receivers},
+    {"gl_errors", &SweepRecord::glErrors},
+    {"p95_uniform", &SweepRecord::p95Uniform},
+    {"clipped_casters", &SweepRecord::clippedCasters},
     {"false_lit_clipped", &SweepRecord::falseLitClipped},
 };
 
@@ -51,7 +58,8 @@ double parseNumber(std::string_view s, const std::string& what) {
     if (s == "-inf") return -INFINITY;
     double v = 0;
     const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (r.ec != std::errc() || r.ptr != s.data() + s.size()) throw std::runtime_error(what + ": '" + std::string(s) + "' is not a number");
+    if (r.ec != std::errc() || r.ptr != s.data() + s.size())
+        throw std::runtime_error(what + ": '" + std::string(s) + "' is not a number");
     return v;
 }
 
@@ -84,8 +92,9 @@ std::vector<std::string> checkSweep(const std::vector<SweepRecord>& rows, const 
         if (r.glErrors > 0) failures.push_back(where(r) + ": GL error after the frame");
         if (r.falseLitClipped > t.maxFalseLitClipped)
             failures.push_back(where(r) + ": false_lit_clipped " + fixed(r.falseLitClipped, 4) + " exceeds " +
-                               fixed(t.maxFalseLitClipped, 4) + " (casters outside the light frustum; clipped_casters " +
-                               fixed(r.clippedCasters, 4) + ", false_lit " + fixed(r.falseLit, 4) + ")");
+                               fixed(t.maxFalseLitClipped, 4) +
+                               " (casters outside the light frustum; clipped_casters " + fixed(r.clippedCasters, 4) +
+                               ", false_lit " + fixed(r.falseLit, 4) + ")");
     }
     std::map<std::string, std::vector<const SweepRecord*>> byMethod;
     for (const SweepRecord& r : rows)
@@ -100,7 +109,9 @@ std::vector<std::string> checkSweep(const std::vector<SweepRecord>& rows, const 
             if (!(a.receivers >= t.minReceivers && b.receivers >= t.minReceivers)) continue;
             // A p95 at the shader's cap for singular J (receivers edge-on to the light, e.g. the sea
             // as the sun crosses the horizon) is no measurement of the warp: not judged.
-            const auto capped = [](const SweepRecord& r) { return r.p95 >= geometry::analysis::kSingularM || r.p95Uniform >= geometry::analysis::kSingularM; };
+            const auto capped = [](const SweepRecord& r) {
+                return r.p95 >= geometry::analysis::kSingularM || r.p95Uniform >= geometry::analysis::kSingularM;
+            };
             if (capped(a) || capped(b)) continue;
             const double ga = gain(a), gb = gain(b);
             if (!(ga > 0 && gb > 0 && std::isfinite(ga) && std::isfinite(gb))) continue;
@@ -157,7 +168,8 @@ std::vector<SweepRecord> parseSweepCsv(std::string_view text) {
         SweepRecord r;
         r.angleDeg = parseNumber(f[angle], line + " angle_deg");
         r.method = std::string(f[method]);
-        for (const auto& [index, member] : numeric) r.*member = parseNumber(f[index], line + " " + std::string(header[index]));
+        for (const auto& [index, member] : numeric)
+            r.*member = parseNumber(f[index], line + " " + std::string(header[index]));
         rows.push_back(std::move(r));
     }
     return rows;

@@ -11,18 +11,18 @@ namespace app {
 
 /// One row of sweep.csv: one method at one light-view angle.
 struct SweepRecord {
-    double angleDeg = 0;     // light-view angle acos(v·l), 0..180
-    std::string method;      // warp method name
-    double nPrime = 0;       // n' of split 0; +inf = uniform (no warp), the plan's own encoding
-    double p95 = 0, max = 0; // aliasing error m over receiver pixels
+    double angleDeg = 0;                  // light-view angle acos(v·l), 0..180
+    std::string method;                   // warp method name
+    double nPrime = 0;                    // n' of split 0; +inf = uniform (no warp), the plan's own encoding
+    double p95 = 0, max = 0;              // aliasing error m over receiver pixels
     double falseLit = 0, falseShadow = 0; // fractions of receiver pixels (ground truth)
-    double gammaDeg = 0;     // γ = acos(|v·l|)
-    double lambda = 0;       // Zhang's λ of split 0 (0 for uniform)
-    double nPrimeMin = 0;    // smallest n' over the splits (the strongest warp)
+    double gammaDeg = 0;                  // γ = acos(|v·l|)
+    double lambda = 0;                    // Zhang's λ of split 0 (0 for uniform)
+    double nPrimeMin = 0;                 // smallest n' over the splits (the strongest warp)
     double p50 = 0, mean = 0;
-    double receivers = 0;    // receiver pixels the statistics are over
-    double glErrors = 0;     // 1 when renderer::takeGlErrors() reported anything after this frame
-    double p95Uniform = 0;   // p95 m of uniform shadow mapping at the same angle (the reference)
+    double receivers = 0;       // receiver pixels the statistics are over
+    double glErrors = 0;        // 1 when renderer::takeGlErrors() reported anything after this frame
+    double p95Uniform = 0;      // p95 m of uniform shadow mapping at the same angle (the reference)
     double clippedCasters = 0;  // receivers whose caster segment leaves their split's map (caster_coverage.h)
     double falseLitClipped = 0; // receivers false lit with such a segment: shadows lost to the plan
 };

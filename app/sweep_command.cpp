@@ -44,7 +44,8 @@ std::string methodList() {
 } // namespace
 
 CLI::App* addSweepCommand(CLI::App& cli, SweepOptions& o) {
-    CLI::App* sweep = cli.add_subcommand("sweep", "Stability sweeps: light-view angle, camera/light paths (docs/stability.md)");
+    CLI::App* sweep =
+        cli.add_subcommand("sweep", "Stability sweeps: light-view angle, camera/light paths (docs/stability.md)");
     sweep->require_subcommand(1);
 
     CLI::App* gamma = sweep->add_subcommand(
@@ -70,12 +71,14 @@ CLI::App* addSweepCommand(CLI::App& cli, SweepOptions& o) {
     addThresholdOptions(*gamma, o.gamma.thresholds);
 
     CLI::App* path = sweep->add_subcommand(
-        "path", "Walk a camera/light path of a scene file and record flicker and seams per frame: DIR/path.csv and a chart");
+        "path",
+        "Walk a camera/light path of a scene file and record flicker and seams per frame: DIR/path.csv and a chart");
     o.path.render.size = {320, 180};
     addRenderOptions(*path, o.path.render);
     path->get_option("--size")->description("Image size WxH (default 320x180)");
     path->add_option("--path", o.path.path, "Path name in the scene file's \"paths\"")->required();
-    path->add_option("--frames", o.path.frames, "Frames covering the whole path (1.." + std::to_string(kMaxPathFrames) + ")")
+    path->add_option("--frames", o.path.frames,
+                     "Frames covering the whole path (1.." + std::to_string(kMaxPathFrames) + ")")
         ->capture_default_str();
 
     CLI::App* check = sweep->add_subcommand("check", "Apply sweep gamma's --check rules to a sweep.csv");
@@ -93,7 +96,8 @@ int runSweep(const CLI::App& sweep, const SweepOptions& o) {
 std::vector<double> sweepAngles(double from, double to, double step) {
     const auto text = [](double v) { return formatCsvNumber(v); };
     if (!std::isfinite(from) || !std::isfinite(to) || from < 0 || to > 180)
-        throw std::invalid_argument("--from/--to: the range must lie within 0..180 degrees, got " + text(from) + ".." + text(to));
+        throw std::invalid_argument("--from/--to: the range must lie within 0..180 degrees, got " + text(from) + ".." +
+                                    text(to));
     if (from > to) throw std::invalid_argument("--from " + text(from) + " is beyond --to " + text(to));
     if (!(step > 0) || !std::isfinite(step)) throw std::invalid_argument("--step: " + text(step) + " must be > 0");
     const double count = std::floor((to - from) / step + 1e-9) + 1;

@@ -12,9 +12,7 @@ namespace app {
 
 namespace {
 
-double now() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 std::string duration(double s) {
     char buf[32];
@@ -29,8 +27,9 @@ SweepRenderer::SweepRenderer(const geometry::scene::Scene& scene, const std::str
     : scene_(scene), context_(renderer::createHeadlessContext(renderer::parseBackend(backend))),
       renderer_(std::make_unique<renderer::Renderer>(scene_)), truth_(scene_) {}
 
-SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& settings, const geometry::scene::Camera& camera,
-                                 const geometry::scene::DirectionalLight& light, const geometry::shadow::Viewport& viewport) {
+SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& settings,
+                                 const geometry::scene::Camera& camera, const geometry::scene::DirectionalLight& light,
+                                 const geometry::shadow::Viewport& viewport) {
     context_->makeCurrent();
     SweepFrame f;
     renderer::Measurement m = renderer::measure(*renderer_, settings, scene_.bounds(), camera, light, viewport,
@@ -59,7 +58,9 @@ SweepProgress::SweepProgress(std::string label, int total)
 SweepProgress::~SweepProgress() {
     if (!shown_) return;
     if (std::uncaught_exceptions() > 0) std::cerr << "\r\033[K" << std::flush;
-    else std::cerr << "\r\033[K" << label_ << ": " << total_ << " frames in " << duration(now() - start_) << '\n' << std::flush;
+    else
+        std::cerr << "\r\033[K" << label_ << ": " << total_ << " frames in " << duration(now() - start_) << '\n'
+                  << std::flush;
 }
 
 void SweepProgress::step(int done, const std::string& detail) {

@@ -16,7 +16,7 @@ namespace app {
 struct SweepFrame {
     geometry::shadow::ShadowPlan plan;
     geometry::analysis::Inspection in; // with truth (in.occluded, in.truth)
-    std::string glErrors;    // renderer::takeGlErrors() after this frame; empty when clean
+    std::string glErrors;              // renderer::takeGlErrors() after this frame; empty when clean
 };
 
 class SweepRenderer {
@@ -27,8 +27,10 @@ public:
     /// Plans, renders one frame and reads it back with ground truth. The truth rays of the
     /// previous frame are reused when camera, light and viewport are unchanged (the eye pass, and
     /// so every receiver position, does not depend on the shadow settings).
-    [[nodiscard]] SweepFrame render(const geometry::shadow::ShadowSettings& settings, const geometry::scene::Camera& camera,
-                                    const geometry::scene::DirectionalLight& light, const geometry::shadow::Viewport& viewport);
+    [[nodiscard]] SweepFrame render(const geometry::shadow::ShadowSettings& settings,
+                                    const geometry::scene::Camera& camera,
+                                    const geometry::scene::DirectionalLight& light,
+                                    const geometry::shadow::Viewport& viewport);
 
     [[nodiscard]] const renderer::GlContext& context() const noexcept { return *context_; }
 

@@ -3,8 +3,8 @@
 #include "sweep_frame.h"
 
 #include "geometry/analysis/caster_coverage.h"
-#include "geometry/scene/light_angle.h"
 #include "geometry/analysis/stability_metrics.h"
+#include "geometry/scene/light_angle.h"
 #include "geometry/shadow/warp.h"
 #include "ui/charts/chart.h"
 
@@ -23,10 +23,12 @@ namespace {
 
 geometry::shadow::WarpMethod parseMethod(const std::string& name) {
     for (int m = 0; m <= int(geometry::shadow::WarpMethod::Manual); ++m)
-        if (geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)) == name) return geometry::shadow::WarpMethod(m);
+        if (geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)) == name)
+            return geometry::shadow::WarpMethod(m);
     std::string list;
     for (int m = 0; m <= int(geometry::shadow::WarpMethod::Manual); ++m)
-        list += (list.empty() ? "" : ", ") + std::string(geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)));
+        list +=
+            (list.empty() ? "" : ", ") + std::string(geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)));
     throw std::invalid_argument("--methods: unknown warp method '" + name + "' (expected " + list + ")");
 }
 
@@ -50,15 +52,16 @@ SweepRecord record(double angleDeg, const std::string& method, const SweepFrame&
     r.falseLit = f.in.truth->falseLit;
     r.falseShadow = f.in.truth->falseShadow;
     r.glErrors = f.glErrors.empty() ? 0 : 1;
-    const geometry::analysis::CasterCoverage c =
-        geometry::analysis::casterCoverage(f.plan, f.in.positions, f.in.aux, f.in.receiver, *f.in.occluded, f.in.shadow);
+    const geometry::analysis::CasterCoverage c = geometry::analysis::casterCoverage(
+        f.plan, f.in.positions, f.in.aux, f.in.receiver, *f.in.occluded, f.in.shadow);
     r.clippedCasters = c.clipped;
     r.falseLitClipped = c.falseLitClipped;
     return r;
 }
 
-ui::charts::Chart methodChart(const std::vector<SweepRecord>& rows, const std::vector<std::string>& methods, std::string title,
-                      ui::charts::ChartAxis y, const std::function<double(const SweepRecord&)>& value, bool skipUniform) {
+ui::charts::Chart methodChart(const std::vector<SweepRecord>& rows, const std::vector<std::string>& methods,
+                              std::string title, ui::charts::ChartAxis y,
+                              const std::function<double(const SweepRecord&)>& value, bool skipUniform) {
     ui::charts::Chart c;
     c.title = std::move(title);
     c.x = {"light-view angle acos(v·l), degrees (0: light behind the eye, 180: facing it)", false, 0.0, 180.0};
@@ -105,18 +108,21 @@ int runSweepGamma(const SweepGammaOptions& o) {
     {
         SweepProgress progress("sweep gamma", int(angles.size() * methods.size()));
         for (const double angle : angles) {
-            const geometry::scene::DirectionalLight light{geometry::scene::lightAtViewAngle(v, reference, float(angle))};
+            const geometry::scene::DirectionalLight light{
+                geometry::scene::lightAtViewAngle(v, reference, float(angle))};
             // Uniform at every angle, swept or not: the continuity rule compares each warp with it.
             const auto renderMethod = [&](geometry::shadow::WarpMethod method, const std::string& name) {
                 geometry::shadow::ShadowSettings settings = o.render.settings;
                 settings.warp.method = method;
                 const SweepFrame f = sweeper.render(settings, scene.camera, light, o.render.size);
-                if (!f.glErrors.empty()) glErrors.push_back(name + " at " + formatCsvNumber(angle) + " deg: " + f.glErrors);
+                if (!f.glErrors.empty())
+                    glErrors.push_back(name + " at " + formatCsvNumber(angle) + " deg: " + f.glErrors);
                 return record(angle, name, f);
             };
             const SweepRecord uniform = renderMethod(geometry::shadow::WarpMethod::Uniform, "uniform");
             for (size_t k = 0; k < methods.size(); ++k) {
-                SweepRecord r = methods[k] == geometry::shadow::WarpMethod::Uniform ? uniform : renderMethod(methods[k], names[k]);
+                SweepRecord r =
+                    methods[k] == geometry::shadow::WarpMethod::Uniform ? uniform : renderMethod(methods[k], names[k]);
                 r.p95Uniform = uniform.p95;
                 rows.push_back(r);
                 progress.step(int(rows.size()), names[k] + " at " + formatCsvNumber(angle) + " deg");
@@ -141,23 +147,25 @@ int runSweepGamma(const SweepGammaOptions& o) {
     const auto measured = [](double m) { return m < geometry::analysis::kSingularM ? m : NAN; };
     const std::vector<std::pair<std::filesystem::path, ui::charts::Chart>> charts{
         {dir / "n_prime.svg",
-         methodChart(rows, names, "n' of split 0 (uniform: ∞, not drawn) — " + where, {"n'", true, std::nullopt, std::nullopt},
-                     [](const SweepRecord& r) { return r.nPrime; }, true)},
-        {dir / "p95.svg",
-         methodChart(rows, names, "p95 of m over receivers — " + where, {"p95 m (pixels per texel)", true, std::nullopt, std::nullopt},
-                     [&](const SweepRecord& r) { return measured(r.p95); }, false)},
-        {dir / "gain.svg",
-         methodChart(rows, names, "p95 m relative to uniform (the continuity measure) — " + where,
-                     {"p95 m / p95 m of uniform", true, std::nullopt, std::nullopt},
-                     [&](const SweepRecord& r) { return measured(r.p95) / measured(r.p95Uniform); }, false)},
-        {dir / "false_lit.svg",
-         methodChart(rows, names, "False lit (truth shadowed, rendered lit) — " + where,
-                     {"fraction of receiver pixels", false, 0.0, std::nullopt},
-                     [](const SweepRecord& r) { return r.falseLit; }, false)},
-        {dir / "false_shadow.svg",
-         methodChart(rows, names, "False shadow (truth lit, rendered shadowed) — " + where,
-                     {"fraction of receiver pixels", false, 0.0, std::nullopt},
-                     [](const SweepRecord& r) { return r.falseShadow; }, false)},
+         methodChart(
+             rows, names, "n' of split 0 (uniform: ∞, not drawn) — " + where, {"n'", true, std::nullopt, std::nullopt},
+             [](const SweepRecord& r) { return r.nPrime; }, true)},
+        {dir / "p95.svg", methodChart(
+                              rows, names, "p95 of m over receivers — " + where,
+                              {"p95 m (pixels per texel)", true, std::nullopt, std::nullopt},
+                              [&](const SweepRecord& r) { return measured(r.p95); }, false)},
+        {dir / "gain.svg", methodChart(
+                               rows, names, "p95 m relative to uniform (the continuity measure) — " + where,
+                               {"p95 m / p95 m of uniform", true, std::nullopt, std::nullopt},
+                               [&](const SweepRecord& r) { return measured(r.p95) / measured(r.p95Uniform); }, false)},
+        {dir / "false_lit.svg", methodChart(
+                                    rows, names, "False lit (truth shadowed, rendered lit) — " + where,
+                                    {"fraction of receiver pixels", false, 0.0, std::nullopt},
+                                    [](const SweepRecord& r) { return r.falseLit; }, false)},
+        {dir / "false_shadow.svg", methodChart(
+                                       rows, names, "False shadow (truth lit, rendered shadowed) — " + where,
+                                       {"fraction of receiver pixels", false, 0.0, std::nullopt},
+                                       [](const SweepRecord& r) { return r.falseShadow; }, false)},
     };
     for (const auto& [path, chart] : charts) ui::charts::writeSvg(path, chart, 860, 480);
     for (const auto& e : glErrors) std::cerr << "shadowscope: GL error: " << e << '\n';

@@ -3,9 +3,9 @@
 #include "sweep_command.h"
 #include "sweep_frame.h"
 
-#include "geometry/scene/path_interpolation.h"
-#include "geometry/io/scene_file.h"
 #include "geometry/analysis/stability_metrics.h"
+#include "geometry/io/scene_file.h"
+#include "geometry/scene/path_interpolation.h"
 #include "ui/charts/chart.h"
 
 #include <cmath>
@@ -35,14 +35,13 @@ std::string pathCsv(const std::vector<PathRow>& rows) {
         out += std::to_string(r.frame) + "," + num(r.t) + "," + num(r.gammaDeg) + "," + num(r.angleDeg) + "," +
                num(r.flicker.rate) + "," + std::to_string(r.flicker.stable) + "," + num(r.seam.median) + "," +
                num(r.seam.p95) + "," + std::to_string(r.seam.pairs) + "," + num(r.seam.rawMedian) + "," +
-               num(r.seam.baselineMedian) + "," +
-               num(r.p95) + "," + num(r.falseLit) + "," + num(r.falseShadow) + "," + num(r.nPrime) + "," +
-               (r.glError ? "1" : "0") + "\n";
+               num(r.seam.baselineMedian) + "," + num(r.p95) + "," + num(r.falseLit) + "," + num(r.falseShadow) + "," +
+               num(r.nPrime) + "," + (r.glError ? "1" : "0") + "\n";
     return out;
 }
 
-ui::charts::ChartSeries series(const std::vector<PathRow>& rows, std::string name, int colour, double (*value)(const PathRow&),
-                       bool skipFirst = false) {
+ui::charts::ChartSeries series(const std::vector<PathRow>& rows, std::string name, int colour,
+                               double (*value)(const PathRow&), bool skipFirst = false) {
     ui::charts::ChartSeries s;
     s.name = std::move(name);
     s.colour = ui::charts::paletteColour(colour);
@@ -61,12 +60,15 @@ std::string pathSvg(const std::vector<PathRow>& rows, const std::string& title) 
         return c;
     };
     ui::charts::Chart flicker = chart("Flicker: stable-truth pixels that flip", {"fraction", false, 0.0, std::nullopt});
-    flicker.series.push_back(series(rows, "flicker", 0, [](const PathRow& r) { return r.flicker.rate; }, true));
-    ui::charts::Chart seam = chart("Seams: jump of m across split boundaries", {"median seam (1 = none)", false, 1.0, std::nullopt});
+    flicker.series.push_back(series(
+        rows, "flicker", 0, [](const PathRow& r) { return r.flicker.rate; }, true));
+    ui::charts::Chart seam =
+        chart("Seams: jump of m across split boundaries", {"median seam (1 = none)", false, 1.0, std::nullopt});
     seam.series.push_back(series(rows, "across split boundaries", 1, [](const PathRow& r) {
         return r.seam.pairs ? r.seam.median : NAN; // no boundary on screen: no point
     }));
-    seam.series.push_back(series(rows, "inside one split (baseline)", 2, [](const PathRow& r) { return r.seam.baselineMedian; }));
+    seam.series.push_back(
+        series(rows, "inside one split (baseline)", 2, [](const PathRow& r) { return r.seam.baselineMedian; }));
     ui::charts::Chart p95 = chart("Aliasing error m, p95 over receivers", {"p95 m", true, std::nullopt, std::nullopt});
     p95.series.push_back(series(rows, "p95 m", 3, [](const PathRow& r) { return r.p95; }));
     return ui::charts::chartsToSvg(title, {flicker, seam, p95}, 3, 420, 300);
@@ -84,7 +86,8 @@ double mean(const std::vector<PathRow>& rows, double (*value)(const PathRow&), b
 
 int runSweepPath(const SweepPathOptions& o) {
     if (o.frames < 1 || o.frames > kMaxPathFrames)
-        throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " must be within 1.." + std::to_string(kMaxPathFrames));
+        throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " must be within 1.." +
+                                    std::to_string(kMaxPathFrames));
     geometry::shadow::validateOrThrow(o.render.settings);
     geometry::io::SceneFile file = geometry::io::resolveScene(o.render.scene);
     const auto it = file.paths.find(o.path);
@@ -99,7 +102,8 @@ int runSweepPath(const SweepPathOptions& o) {
     if (!o.render.view.empty()) {
         const auto view = file.views.find(o.render.view);
         if (view == file.views.end())
-            throw std::invalid_argument("--view " + o.render.view + ": scene '" + o.render.scene + "' has no such view");
+            throw std::invalid_argument("--view " + o.render.view + ": scene '" + o.render.scene +
+                                        "' has no such view");
         scene.camera = view->second.camera;
         scene.light = view->second.light;
     }
@@ -119,9 +123,10 @@ int runSweepPath(const SweepPathOptions& o) {
         SweepProgress progress("sweep path " + o.path, o.frames);
         for (int i = 0; i < o.frames; ++i) {
             const double t = geometry::scene::pathParameter(i, o.frames);
-            const geometry::scene::Camera camera = path.cameras.empty() ? scene.camera : geometry::scene::cameraAlongPath(path.cameras, t);
-            const geometry::scene::DirectionalLight light{path.lights.empty() ? scene.light.direction
-                                                                       : geometry::scene::lightAlongPath(path.lights, t)};
+            const geometry::scene::Camera camera =
+                path.cameras.empty() ? scene.camera : geometry::scene::cameraAlongPath(path.cameras, t);
+            const geometry::scene::DirectionalLight light{
+                path.lights.empty() ? scene.light.direction : geometry::scene::lightAlongPath(path.lights, t)};
             geometry::shadow::validateFrustum(camera.near, camera.far, camera.fovYDeg);
             SweepFrame f = sweeper.render(o.render.settings, camera, light, o.render.size);
             PathRow r;
@@ -129,10 +134,12 @@ int runSweepPath(const SweepPathOptions& o) {
             r.t = t;
             r.gammaDeg = f.plan.gammaDeg;
             r.angleDeg = f.plan.lightViewAngleDeg;
-            r.seam = geometry::analysis::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals, camera.eye, w, h);
+            r.seam = geometry::analysis::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals,
+                                                   camera.eye, w, h);
             if (i > 0)
-                r.flicker = geometry::analysis::flickerStats(previous.in.shadow, *previous.in.occluded, previous.in.receiver,
-                                                   f.in.shadow, *f.in.occluded, f.in.receiver);
+                r.flicker =
+                    geometry::analysis::flickerStats(previous.in.shadow, *previous.in.occluded, previous.in.receiver,
+                                                     f.in.shadow, *f.in.occluded, f.in.receiver);
             r.p95 = f.in.aliasing.p95;
             r.falseLit = f.in.truth->falseLit;
             r.falseShadow = f.in.truth->falseShadow;
@@ -162,13 +169,25 @@ int runSweepPath(const SweepPathOptions& o) {
     const auto all = [](const PathRow&) { return true; };
     const auto afterFirst = [](const PathRow& r) { return r.frame > 0; };
     const auto withSeams = [](const PathRow& r) { return r.seam.pairs > 0; };
-    std::cout << "summary: frames " << o.frames
-              << ", flicker mean " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.flicker.rate; }, afterFirst))
-              << ", seam median mean " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.seam.median; }, withSeams))
-              << " (raw " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.seam.rawMedian; }, withSeams))
-              << ", baseline " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.seam.baselineMedian; }, all))
-              << ", crossings per frame " << formatCsvNumber(mean(rows, [](const PathRow& r) { return double(r.seam.pairs); }, all))
-              << "), p95 mean " << formatCsvNumber(mean(rows, [](const PathRow& r) { return r.p95; }, all)) << '\n';
+    std::cout << "summary: frames " << o.frames << ", flicker mean "
+              << formatCsvNumber(mean(
+                     rows, [](const PathRow& r) { return r.flicker.rate; }, afterFirst))
+              << ", seam median mean "
+              << formatCsvNumber(mean(
+                     rows, [](const PathRow& r) { return r.seam.median; }, withSeams))
+              << " (raw "
+              << formatCsvNumber(mean(
+                     rows, [](const PathRow& r) { return r.seam.rawMedian; }, withSeams))
+              << ", baseline "
+              << formatCsvNumber(mean(
+                     rows, [](const PathRow& r) { return r.seam.baselineMedian; }, all))
+              << ", crossings per frame "
+              << formatCsvNumber(mean(
+                     rows, [](const PathRow& r) { return double(r.seam.pairs); }, all))
+              << "), p95 mean "
+              << formatCsvNumber(mean(
+                     rows, [](const PathRow& r) { return r.p95; }, all))
+              << '\n';
     return glErrors.empty() ? 0 : 1;
 }
 

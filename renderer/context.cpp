@@ -30,7 +30,7 @@ std::mutex g_errorMutex;
 std::string g_errors;
 
 void APIENTRY onDebugMessage(GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
-                               const void*) {
+                             const void*) {
     if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
     std::lock_guard lock(g_errorMutex);
     if (!g_errors.empty()) g_errors += "; ";

@@ -65,9 +65,15 @@ public:
         const EGLint debug = EGL_FALSE;
 #endif
         for (const EGLint minor : {5, 3}) {
-            const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, minor,
-                                         EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                         EGL_CONTEXT_OPENGL_DEBUG, debug, EGL_NONE};
+            const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                         4,
+                                         EGL_CONTEXT_MINOR_VERSION,
+                                         minor,
+                                         EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                         EGL_CONTEXT_OPENGL_DEBUG,
+                                         debug,
+                                         EGL_NONE};
             context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, ctxAttribs);
             if (context_ != EGL_NO_CONTEXT) break;
         }

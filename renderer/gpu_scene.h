@@ -1,7 +1,7 @@
 #pragma once
 // The scene's meshes in GL buffers, drawn chunk by chunk.
-#include "gl/gl_api.h"
 #include "geometry/scene/scene.h"
+#include "gl/gl_api.h"
 
 #include <cstdint>
 #include <vector>
@@ -27,8 +27,7 @@ public:
     [[nodiscard]] const std::vector<GpuMesh>& meshes() const noexcept { return meshes_; }
     /// Draws the chunks of `m` whose bounds pass `visible(bounds)`, merging contiguous runs into
     /// one call; returns the triangles submitted.
-    template <class Visible>
-    uint64_t draw(const GpuMesh& m, Visible&& visible) const noexcept {
+    template <class Visible> uint64_t draw(const GpuMesh& m, Visible&& visible) const noexcept {
         glBindVertexArray(m.vao);
         uint64_t drawn = 0;
         uint32_t runStart = 0, runCount = 0;

@@ -14,8 +14,7 @@ geometry::analysis::Image readTexture(GLuint texture, int width, int height) {
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
     img.rgba.resize(raw.size());
     const size_t row = size_t(width) * 4;
-    for (int y = 0; y < height; ++y)
-        std::memcpy(&img.rgba[size_t(y) * row], &raw[size_t(height - 1 - y) * row], row);
+    for (int y = 0; y < height; ++y) std::memcpy(&img.rgba[size_t(y) * row], &raw[size_t(height - 1 - y) * row], row);
     return img;
 }
 

@@ -43,7 +43,8 @@ void LineRenderer::draw(const std::vector<geometry::shadow::OverlaySegment>& seg
         for (const auto& s : segments) {
             if (s.inMapNdc != ndc) continue;
             const glm::vec4 c = colour(s.kind);
-            for (const glm::vec3& p : {s.a, s.b}) vertices_.insert(vertices_.end(), {p.x, p.y, p.z, c.r, c.g, c.b, c.a});
+            for (const glm::vec3& p : {s.a, s.b})
+                vertices_.insert(vertices_.end(), {p.x, p.y, p.z, c.r, c.g, c.b, c.a});
         }
         if (vertices_.empty()) continue;
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices_.size() * sizeof(float)), vertices_.data(), GL_STREAM_DRAW);

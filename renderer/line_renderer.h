@@ -1,7 +1,7 @@
 #pragma once
 // Draws overlay segments (geometry::OverlaySegment) into the bound framebuffer, a colour per kind.
-#include "program.h"
 #include "geometry/shadow/overlays.h"
+#include "program.h"
 
 #include <vector>
 

@@ -13,16 +13,16 @@
 namespace renderer {
 
 struct MeasureOptions {
-    int warmup = 1;     // untimed frames first (llvmpipe's first timer query of a new renderer is bogus)
-    int frames = 3;     // timed frames
-    bool timed = true;  // false: frames are rendered but not timed (no glFinish, no timer wait)
+    int warmup = 1;    // untimed frames first (llvmpipe's first timer query of a new renderer is bogus)
+    int frames = 3;    // timed frames
+    bool timed = true; // false: frames are rendered but not timed (no glFinish, no timer wait)
 };
 
 struct Measurement {
-    geometry::shadow::ShadowPlan plan;          // of the last frame
-    geometry::analysis::Inspection inspection;  // of the last frame; truth when a GroundTruth was given
-    double gpuMs = 0, cpuMs = 0;                // medians over the timed frames; NaN when none was valid
-    int gpuFrames = 0;                          // timed frames with a valid GPU timer
+    geometry::shadow::ShadowPlan plan;         // of the last frame
+    geometry::analysis::Inspection inspection; // of the last frame; truth when a GroundTruth was given
+    double gpuMs = 0, cpuMs = 0;               // medians over the timed frames; NaN when none was valid
+    int gpuFrames = 0;                         // timed frames with a valid GPU timer
     uint64_t shadowMemoryBytes = 0;
 };
 

@@ -21,8 +21,7 @@ std::string expandIncludes(std::string_view name) {
         constexpr std::string_view directive = "#include \"";
         if (line.starts_with(directive) && line.ends_with('"'))
             out += shaderSource(line.substr(directive.size(), line.size() - directive.size() - 1));
-        else
-            out += line;
+        else out += line;
         out += '\n';
         pos = eol + 1;
     }

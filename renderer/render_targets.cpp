@@ -136,7 +136,8 @@ void EyeBuffers::ensure(int width, int height) {
     if (width < 1 || height < 1) throw std::runtime_error("view size must be at least 1x1");
     release();
     const GLenum formats[Count] = {GL_RGBA16F, GL_RGBA16F, GL_R16F, GL_RGBA32F, GL_RGBA32F, GL_RGBA16F};
-    for (int i = 0; i < Count; ++i) textures_[i] = makeTexture2D(formats[i], width, height, i == Aux || i == Position ? GL_NEAREST : GL_LINEAR);
+    for (int i = 0; i < Count; ++i)
+        textures_[i] = makeTexture2D(formats[i], width, height, i == Aux || i == Position ? GL_NEAREST : GL_LINEAR);
     depth_ = makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST);
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);

@@ -3,8 +3,8 @@
 #include "geometry/shadow/culling.h"
 
 #include <algorithm>
-#include <limits>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -89,7 +89,8 @@ void Renderer::uploadShadowBlock(const geometry::shadow::ShadowPlan& plan) {
     glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlockBuffer_);
 }
 
-void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport, const ViewOptions& options) {
+void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
+                      const ViewOptions& options) {
     ViewOptions views = options;
     if (views.lightViewSize <= 0) views.lightViewSize = 1024;
     if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
@@ -282,7 +283,9 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan, const geometry:
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
-    const auto inView = [&](const geometry::scene::Aabb& box) { return geometry::shadow::intersectsClipVolume(box, viewProj); };
+    const auto inView = [&](const geometry::scene::Aabb& box) {
+        return geometry::shadow::intersectsClipVolume(box, viewProj);
+    };
     // Depth pre-pass: the heavy eye shader (filter taps, six targets) then runs once per pixel
     // instead of once per overlapping surface.
     Program& depthOnly = depthProgram("#define EYE_DEPTH\n");
@@ -379,7 +382,9 @@ void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const 
     for (const auto& m : scene_->meshes()) {
         unlitProgram_.set("uModel", m.transform);
         unlitProgram_.set("uColor", m.color);
-        scene_->draw(m, [&](const geometry::scene::Aabb& b) { return geometry::shadow::intersectsClipVolume(b, plan.unwarpedViewProj); });
+        scene_->draw(m, [&](const geometry::scene::Aabb& b) {
+            return geometry::shadow::intersectsClipVolume(b, plan.unwarpedViewProj);
+        });
     }
     if (views.overlays) lines_.draw(geometry::shadow::unwarpedViewOverlays(plan), plan.unwarpedViewProj);
 }
@@ -390,7 +395,8 @@ std::vector<float> Renderer::readShadowMask() const {
     glBindTexture(GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Mask));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, raw.data());
-    for (int y = 0; y < h; ++y) std::memcpy(&out[size_t(y) * w], &raw[size_t(h - 1 - y) * w], size_t(w) * sizeof(float));
+    for (int y = 0; y < h; ++y)
+        std::memcpy(&out[size_t(y) * w], &raw[size_t(h - 1 - y) * w], size_t(w) * sizeof(float));
     return out;
 }
 

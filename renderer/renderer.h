@@ -2,6 +2,7 @@
 // Draws one frame from a shadow plan: shadow pass per split (with peeling or VSM moments when the
 // plan's bias/filter need them), eye pass, eye-space blur, composition, light view. Makes no
 // shadow-math decisions: every matrix, range and choice comes from the plan.
+#include "geometry/shadow/shadow_plan.h"
 #include "gpu_scene.h"
 #include "gpu_timers.h"
 #include "image.h"
@@ -9,7 +10,6 @@
 #include "program.h"
 #include "render_targets.h"
 #include "shadow_block.h"
-#include "geometry/shadow/shadow_plan.h"
 
 #include <map>
 #include <memory>
@@ -19,14 +19,14 @@
 namespace renderer {
 
 struct FrameStats {
-    uint64_t shadowTriangles = 0;             // over all splits (and peeling passes)
+    uint64_t shadowTriangles = 0; // over all splits (and peeling passes)
     uint64_t eyeTriangles = 0;
-    std::vector<uint64_t> splitTriangles;     // per split
-    int shadowResolution = 0;                 // of the array actually allocated
-    uint64_t shadowMemoryBytes = 0;           // every shadow texture (depth layers, peeling, moments)
+    std::vector<uint64_t> splitTriangles; // per split
+    int shadowResolution = 0;             // of the array actually allocated
+    uint64_t shadowMemoryBytes = 0;       // every shadow texture (depth layers, peeling, moments)
     int eyeWidth = 0, eyeHeight = 0;
-    PassTimes gpu;                            // from an earlier frame (see GpuTimers)
-    std::vector<std::string> warnings;        // e.g. resolution clamped to the GL limit
+    PassTimes gpu;                     // from an earlier frame (see GpuTimers)
+    std::vector<std::string> warnings; // e.g. resolution clamped to the GL limit
 };
 
 /// What the light views show.
@@ -53,8 +53,10 @@ public:
 
     void setScene(const geometry::scene::Scene& scene);
     /// Renders the eye view at `viewport` and the light views into textures.
-    void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport, const ViewOptions& views);
-    void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport, int lightViewSize) {
+    void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
+                const ViewOptions& views);
+    void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
+                int lightViewSize) {
         ViewOptions v;
         v.lightViewSize = lightViewSize;
         render(plan, viewport, v);
@@ -62,8 +64,12 @@ public:
 
     [[nodiscard]] GLuint eyeTexture() const noexcept { return eye_.texture(); }
     [[nodiscard]] GLuint lightTexture() const noexcept { return light_.texture(); }
-    [[nodiscard]] geometry::analysis::Image readEye() const { return readTexture(eye_.texture(), eye_.width(), eye_.height()); }
-    [[nodiscard]] geometry::analysis::Image readLight() const { return readTexture(light_.texture(), light_.width(), light_.height()); }
+    [[nodiscard]] geometry::analysis::Image readEye() const {
+        return readTexture(eye_.texture(), eye_.width(), eye_.height());
+    }
+    [[nodiscard]] geometry::analysis::Image readLight() const {
+        return readTexture(light_.texture(), light_.width(), light_.height());
+    }
     [[nodiscard]] GLuint unwarpedLightTexture() const noexcept { return lightUnwarped_.texture(); }
     [[nodiscard]] geometry::analysis::Image readUnwarpedLight() const {
         return readTexture(lightUnwarped_.texture(), lightUnwarped_.width(), lightUnwarped_.height());

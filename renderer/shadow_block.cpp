@@ -12,8 +12,8 @@ ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResol
         auto& s = b.splits[i];
         s.lightViewProj = split.lightViewProj;
         s.splitFar = split.far;
-        s.mapScale = arrayResolution > 0 ? float(std::min(split.resolution, arrayResolution)) / float(arrayResolution)
-                                         : 1.f;
+        s.mapScale =
+            arrayResolution > 0 ? float(std::min(split.resolution, arrayResolution)) / float(arrayResolution) : 1.f;
         s.linearLo = split.linearDepthRange.x;
         s.linearScale = split.linearDepthScale;
         s.dualDepthCap = split.dualDepthCap;

@@ -1,8 +1,8 @@
 // Mesh loading cost against OpenMesh's own read_mesh, on one ~1M-triangle binary STL written
 // once into a temporary folder (the platform scene, flattened into one mesh).
 // Goal (issue "CAD meshes in"): loadModel (read + cleanup + chunking) ≤ 2 × bare read_mesh.
-#include "geometry/scene/builtin_scenes.h"
 #include "geometry/io/model_loader.h"
+#include "geometry/scene/builtin_scenes.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -60,8 +60,7 @@ std::map<std::string, double>& meanMs() {
 }
 
 /// Runs `body` per iteration and records its mean wall time under `name` for the ratio.
-template <typename Body>
-void timed(benchmark::State& state, const std::string& name, Body&& body) {
+template <typename Body> void timed(benchmark::State& state, const std::string& name, Body&& body) {
     double total = 0;
     int64_t n = 0;
     for (auto _ : state) {

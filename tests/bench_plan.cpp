@@ -19,6 +19,9 @@ static void BM_PlanShadows(benchmark::State& state) {
         benchmark::DoNotOptimize(plan);
     }
 }
-BENCHMARK(BM_PlanShadows)->ArgsProduct({{1, 2, 4, 8}, {0, 1}})->ArgNames({"splits", "lispsm"})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PlanShadows)
+    ->ArgsProduct({{1, 2, 4, 8}, {0, 1}})
+    ->ArgNames({"splits", "lispsm"})
+    ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

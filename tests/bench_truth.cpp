@@ -1,8 +1,8 @@
 // Ground truth on the 250k-triangle platform: goal ≤ 150 ms per 1280×720 image on the 2-core
 // dev machine (Release). Receivers are what the default camera sees, found once by primary rays
 // outside the timed loops; only the shadow rays are timed.
-#include "geometry/scene/builtin_scenes.h"
 #include "geometry/analysis/ground_truth.h"
+#include "geometry/scene/builtin_scenes.h"
 
 #include <benchmark/benchmark.h>
 
@@ -33,8 +33,8 @@ double fastest(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::mi
 
 /// Rays actually traced per call: pixels that see the sky are skipped.
 void reportRays(benchmark::State& state, size_t rays) {
-    state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(rays) * 1e-6 * static_cast<double>(state.iterations()),
-                                                   benchmark::Counter::kIsRate);
+    state.counters["Mrays/s"] = benchmark::Counter(
+        static_cast<double>(rays) * 1e-6 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["rays"] = static_cast<double>(rays);
 }
 
@@ -50,7 +50,13 @@ static void BM_Occluded(benchmark::State& state) {
     }
     reportRays(state, f.hits.hitCount());
 }
-BENCHMARK(BM_Occluded)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime()->ComputeStatistics("min", fastest);
+BENCHMARK(BM_Occluded)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->ComputeStatistics("min", fastest);
 
 /// The untimed setup above, for reference: primary rays for 1280×720.
 static void BM_PrimaryHits(benchmark::State& state) {

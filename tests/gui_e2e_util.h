@@ -248,8 +248,8 @@ inline void waitUntil(const std::string& what, Seconds timeout, const std::funct
     for (;;) {
         if (done()) return;
         if (Clock::now() > deadline)
-            throw std::runtime_error("timed out after " + std::to_string(int(timeout.count())) + " s waiting for " + what +
-                                     (context ? "\n" + context() : std::string()));
+            throw std::runtime_error("timed out after " + std::to_string(int(timeout.count())) + " s waiting for " +
+                                     what + (context ? "\n" + context() : std::string()));
         std::this_thread::sleep_for(std::chrono::milliseconds(15));
     }
 }
@@ -368,8 +368,8 @@ struct WidgetMap {
     [[nodiscard]] bool has(const std::string& id) const { return widgets.count(id) != 0; }
     [[nodiscard]] std::string describe() const {
         std::ostringstream s;
-        s << "widget map: frame " << frame << ", window " << width << "x" << height << ", status \"" << status
-          << "\", " << widgets.size() << " widgets:";
+        s << "widget map: frame " << frame << ", window " << width << "x" << height << ", status \"" << status << "\", "
+          << widgets.size() << " widgets:";
         for (const auto& [id, r] : widgets) s << ' ' << id;
         return s.str();
     }
@@ -387,7 +387,8 @@ inline std::optional<WidgetMap> readWidgetMap(const fs::path& file) {
         m.height = int(std::lround(j.at("window").at(1).get<double>()));
         m.status = j.value("status", "");
         for (const auto& [id, r] : j.at("widgets").items())
-            m.widgets[id] = Rect{r.at(0).get<double>(), r.at(1).get<double>(), r.at(2).get<double>(), r.at(3).get<double>()};
+            m.widgets[id] =
+                Rect{r.at(0).get<double>(), r.at(1).get<double>(), r.at(2).get<double>(), r.at(3).get<double>()};
     } catch (const std::exception&) {
         return std::nullopt;
     }

@@ -44,7 +44,8 @@ TEST(Bench, WritesOneRowPerConfigurationAndViewAndTheTradeoffChart) {
     const auto r = runShadowscope("bench --backend osmesa --scene " + std::string(SHADOWSCOPE_SOURCE_DIR) +
                                   "/resources/scenes/plane.json --preset " + presets + "ssm.json --preset " + presets +
                                   "paper.json --sweep filter.kernel=1,5 --set filter.type=pcf --frames 2 --warmup 1 "
-                                  "--size 160x120 --truth --out " + dir.string());
+                                  "--size 160x120 --truth --out " +
+                                  dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto rows = readCsv(dir / "results.csv");
     ASSERT_FALSE(rows.empty());
@@ -88,13 +89,14 @@ TEST(Bench, WritesOneRowPerConfigurationAndViewAndTheTradeoffChart) {
 
 TEST(Bench, BadSweepsAreOneLineErrors) {
     for (const std::string bad : {"--sweep filter.kernel", "--sweep nonsense=1,2", "--sweep filter.kernel=2",
-                                   "--sweep shadow_map.resolution=abc"}) {
+                                  "--sweep shadow_map.resolution=abc"}) {
         const auto r = runShadowscope("bench --backend osmesa --scene plane --frames 1 --out /tmp/unused " + bad);
         EXPECT_NE(r.exitCode, 0) << bad;
         EXPECT_NE(r.output.find("error"), std::string::npos) << bad << ": " << r.output;
         EXPECT_LE(std::count(r.output.begin(), r.output.end(), '\n'), 2) << r.output;
     }
-    const auto unknownView = runShadowscope("bench --backend osmesa --scene plane --view nowhere --frames 1 --out /tmp/unused");
+    const auto unknownView =
+        runShadowscope("bench --backend osmesa --scene plane --view nowhere --frames 1 --out /tmp/unused");
     EXPECT_NE(unknownView.exitCode, 0);
     EXPECT_NE(unknownView.output.find("nowhere"), std::string::npos);
 }
@@ -120,16 +122,18 @@ TEST(Bench, SharesTheRenderOptionsDeclaration) {
         ASSERT_NE(gap, std::string::npos) << r;
         std::string words = r.substr(r.find_first_not_of(' ', gap));
         EXPECT_FALSE(lineOf(bench.output, option).empty()) << option << " missing from bench --help";
-        EXPECT_NE(bench.output.find(words), std::string::npos) << option << ": '" << words << "' not in\n" << bench.output;
+        EXPECT_NE(bench.output.find(words), std::string::npos) << option << ": '" << words << "' not in\n"
+                                                               << bench.output;
     }
     EXPECT_NE(bench.output.find("--set KEY=VALUE"), std::string::npos) << bench.output;
     EXPECT_NE(bench.output.find("--preset"), std::string::npos);
     EXPECT_EQ(render.output.find("--sweep"), std::string::npos);
     // Each --preset is one configuration and --set applies to all of them.
     const auto dir = testutil::freshDir("bench_shared_options");
-    const auto r = runShadowscope("bench --backend osmesa --scene plane --frames 1 --warmup 1 --size 64x48 --out " +
-                                  dir.string() + " --preset " + SHADOWSCOPE_SOURCE_DIR "/resources/presets/ssm.json --preset " +
-                                  SHADOWSCOPE_SOURCE_DIR "/resources/presets/lispsm.json --set shadow_map.resolution=256");
+    const auto r =
+        runShadowscope("bench --backend osmesa --scene plane --frames 1 --warmup 1 --size 64x48 --out " + dir.string() +
+                       " --preset " + SHADOWSCOPE_SOURCE_DIR "/resources/presets/ssm.json --preset " +
+                       SHADOWSCOPE_SOURCE_DIR "/resources/presets/lispsm.json --set shadow_map.resolution=256");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto rows = readCsv(dir / "results.csv");
     ASSERT_EQ(rows.size(), 3u);

@@ -26,7 +26,8 @@ CommandResult run(const std::string& args) { return testutil::runShadowscope(arg
 
 TEST(Cli, RenderWritesPngsAndMetrics) {
     const fs::path dir = freshDir("render");
-    const CommandResult r = run("render --backend osmesa --scene plane --size 160x120 --shadow-res 256 --out " + dir.string());
+    const CommandResult r =
+        run("render --backend osmesa --scene plane --size 160x120 --shadow-res 256 --out " + dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find((dir / "eye.png").string()), std::string::npos) << "prints the paths it wrote";
     const geometry::analysis::Image eye = geometry::analysis::readImageFile((dir / "eye.png").string());
@@ -43,13 +44,16 @@ TEST(Cli, RenderWritesPngsAndMetrics) {
     const double gamma = m.at("gamma_deg");
     EXPECT_GT(gamma, 0.0);
     EXPECT_LE(gamma, 90.0);
-    for (const char* pass : {"shadow", "eye", "total"}) EXPECT_GT(m.at("timing_ms").at(pass).get<double>(), 0.0) << pass;
+    for (const char* pass : {"shadow", "eye", "total"})
+        EXPECT_GT(m.at("timing_ms").at(pass).get<double>(), 0.0) << pass;
 }
 
 TEST(Cli, CameraAndLightOptionsChangeTheFrame) {
     const fs::path dir = freshDir("camera");
-    const CommandResult r = run("render --backend osmesa --scene plane --size 96x64 --shadow-res 128 --camera 0,30,0.1,0,0,0 "
-                      "--light 0,-1,0 --out " + dir.string());
+    const CommandResult r =
+        run("render --backend osmesa --scene plane --size 96x64 --shadow-res 128 --camera 0,30,0.1,0,0,0 "
+            "--light 0,-1,0 --out " +
+            dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::ifstream in(dir / "metrics.json");
     const nlohmann::json m = nlohmann::json::parse(in);
@@ -59,11 +63,19 @@ TEST(Cli, CameraAndLightOptionsChangeTheFrame) {
 
 TEST(Cli, BadInputGivesOneLineErrorAndNonZeroExit) {
     const char* cases[] = {
-        "render --size 0x100",          "render --size abc",          "render --scene nosuchscene --backend osmesa",
-        "render --camera 1,2,3",        "render --camera 1,2,3,1,2,3", "render --light 0,0,0",
-        "render --light nan,1,0",       "render --shadow-res 5",       "render --backend vulkan",
-        "render --no-such-option",      "render --backend osmesa --scene plane --size 16384x16384",
-        "render --set splits.count=9",  "render --preset /nonexistent.json",
+        "render --size 0x100",
+        "render --size abc",
+        "render --scene nosuchscene --backend osmesa",
+        "render --camera 1,2,3",
+        "render --camera 1,2,3,1,2,3",
+        "render --light 0,0,0",
+        "render --light nan,1,0",
+        "render --shadow-res 5",
+        "render --backend vulkan",
+        "render --no-such-option",
+        "render --backend osmesa --scene plane --size 16384x16384",
+        "render --set splits.count=9",
+        "render --preset /nonexistent.json",
     };
     for (const char* args : cases) {
         const CommandResult r = run(std::string(args) + " --out " + freshDir("bad").string());
@@ -84,8 +96,8 @@ TEST(Cli, HelpListsTheSharedOptions) {
 
 TEST(Cli, WithoutADisplayTheMainJobRendersHeadless) {
     const fs::path dir = freshDir("main");
-    const CommandResult r = run("--scene plane --size 96x64 --shadow-res 128 --backend osmesa --out " + dir.string() +
-                      " </dev/null");
+    const CommandResult r =
+        run("--scene plane --size 96x64 --shadow-res 128 --backend osmesa --out " + dir.string() + " </dev/null");
     // The test runs with DISPLAY unset (see tests/CMakeLists.txt).
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(fs::exists(dir / "eye.png"));
@@ -93,12 +105,13 @@ TEST(Cli, WithoutADisplayTheMainJobRendersHeadless) {
 
 TEST(Cli, RenderWritesEveryViewAndRawValues) {
     const fs::path dir = freshDir("views");
-    const CommandResult r = run("render --backend osmesa --scene plane --size 96x72 --shadow-res 256 --truth "
-                                "--views eye,light,light_unwarped,aliasing,truth,splits,texels --set splits.count=2 --out " +
-                                dir.string());
+    const CommandResult r =
+        run("render --backend osmesa --scene plane --size 96x72 --shadow-res 256 --truth "
+            "--views eye,light,light_unwarped,aliasing,truth,splits,texels --set splits.count=2 --out " +
+            dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* name : {"eye.png", "light.png", "light_unwarped.png", "aliasing.png", "truth.png", "splits.png",
-                             "texels.png"}) {
+    for (const char* name :
+         {"eye.png", "light.png", "light_unwarped.png", "aliasing.png", "truth.png", "splits.png", "texels.png"}) {
         const geometry::analysis::Image img = geometry::analysis::readImageFile((dir / name).string());
         EXPECT_GT(img.width, 0) << name;
     }
@@ -120,8 +133,8 @@ TEST(Cli, RenderWritesEveryViewAndRawValues) {
 }
 
 TEST(Cli, TruthViewWithoutTruthIsAnError) {
-    const CommandResult r = run("render --backend osmesa --scene plane --size 32x32 --views truth --out " +
-                                freshDir("notruth").string());
+    const CommandResult r =
+        run("render --backend osmesa --scene plane --size 32x32 --views truth --out " + freshDir("notruth").string());
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.output.find("--truth"), std::string::npos);
 }

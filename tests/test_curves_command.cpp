@@ -190,7 +190,8 @@ TEST(CurvesCommand, SvgChartsHaveALineAndLegendEntryPerSeries) {
         EXPECT_TRUE(svg.rfind("<svg", 0) == 0 || svg.rfind("<?xml", 0) == 0) << file;
         EXPECT_NE(svg.find("</svg>"), std::string::npos) << file;
         EXPECT_GE(countOf(svg, "<polyline"), minLines) << file;
-        for (const auto& name : names) EXPECT_NE(svg.find(">" + name), std::string::npos) << file << ": legend " << name;
+        for (const auto& name : names)
+            EXPECT_NE(svg.find(">" + name), std::string::npos) << file << ": legend " << name;
         EXPECT_EQ(svg.find("nan"), std::string::npos) << file << ": no NaN coordinates";
         EXPECT_EQ(svg.find("inf\""), std::string::npos) << file << ": no infinite coordinates";
     };
@@ -198,7 +199,8 @@ TEST(CurvesCommand, SvgChartsHaveALineAndLegendEntryPerSeries) {
     check("warp.svg", {"psm", "lispsm", "glispsm", "gmnpr", "γ (degrees)"}, 4);
     check("error.svg", {"uniform", "psm", "lispsm", "glispsm", "gmnpr", "z (eye depth)"}, 5);
     // splits.svg: a panel per scheme, each with the boundaries C0 … C4.
-    check("splits.svg", {"uniform", "log", "practical", "pssm", "adaptive", "C0 = n", "C1", "C2", "C3", "C4 = f"}, 5u * 5u);
+    check("splits.svg", {"uniform", "log", "practical", "pssm", "adaptive", "C0 = n", "C1", "C2", "C3", "C4 = f"},
+          5u * 5u);
 }
 
 TEST(CurvesCommand, BadInputGivesOneLineErrorAndNonZeroExit) {
@@ -236,7 +238,8 @@ TEST(ChartAxes, LinearTicksAreRoundSteps) {
     EXPECT_LE(ticks.back(), 90.0);
     const double step = ticks[1] - ticks[0];
     const double mantissa = step / std::pow(10.0, std::floor(std::log10(step)));
-    EXPECT_TRUE(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9) << step;
+    EXPECT_TRUE(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9)
+        << step;
     for (size_t i = 1; i < ticks.size(); ++i) EXPECT_NEAR(ticks[i] - ticks[i - 1], step, 1e-9);
     EXPECT_GT(ticks.back() + step, 90.0) << "no round tick left out at the top";
     // Decimal steps come out as the decimal values, not as accumulated 0.1 + 0.2.
@@ -268,7 +271,12 @@ TEST(ChartAxes, RangesAndRuns) {
 
     ui::charts::Chart c;
     c.y.log = true;
-    c.series.push_back({"s", ui::charts::paletteColour(0), {{0, 1}, {1, 2}, {2, INFINITY}, {3, 4}, {4, 80}, {5, -1}, {6, 3}}, ui::charts::SeriesStyle::Lines, 3.f, {}});
+    c.series.push_back({"s",
+                        ui::charts::paletteColour(0),
+                        {{0, 1}, {1, 2}, {2, INFINITY}, {3, 4}, {4, 80}, {5, -1}, {6, 3}},
+                        ui::charts::SeriesStyle::Lines,
+                        3.f,
+                        {}});
     const auto runs = ui::charts::plottableRuns(c.series[0], false, true);
     ASSERT_EQ(runs.size(), 3u) << "∞ and non-positive (on a log axis) break the line";
     EXPECT_EQ(runs[0].size(), 2u);

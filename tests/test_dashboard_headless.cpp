@@ -83,8 +83,9 @@ TEST_F(HeadlessDashboardTest, EveryPanelHasContent) {
     ASSERT_EQ(img.width, kW);
     ASSERT_EQ(img.height, kH);
     const ui::DashboardRects& r = d->dashboard().rects();
-    const std::pair<const char*, ui::Rect> panels[] = {{"controls", r.controls}, {"eye", r.eye},     {"light", r.light},
-                                                      {"heatmap", r.heatmap},   {"stats", r.stats}, {"status", r.status}};
+    const std::pair<const char*, ui::Rect> panels[] = {{"controls", r.controls}, {"eye", r.eye},
+                                                       {"light", r.light},       {"heatmap", r.heatmap},
+                                                       {"stats", r.stats},       {"status", r.status}};
     for (const auto& [name, rect] : panels) {
         const Region s = stats(img, rect);
         EXPECT_GT(s.variance, 40.0) << name << " looks empty (mean " << s.mean << ")";
@@ -188,7 +189,8 @@ TEST_F(HeadlessDashboardTest, ASceneLoadsInTheBackgroundWithProgress) {
 
 TEST(SceneLoader, ReportsProgressAndErrors) {
     std::vector<float> seen;
-    const ui::SceneLoadResult ok = ui::SceneLoader::loadNow("plane", [&](float f, std::string_view) { seen.push_back(f); });
+    const ui::SceneLoadResult ok =
+        ui::SceneLoader::loadNow("plane", [&](float f, std::string_view) { seen.push_back(f); });
     ASSERT_TRUE(std::holds_alternative<ui::LoadedScene>(ok));
     EXPECT_NE(std::get<ui::LoadedScene>(ok).truth, nullptr);
     ASSERT_FALSE(seen.empty());
@@ -241,7 +243,10 @@ int firstTextHeight(const geometry::analysis::Image& img, const ui::Rect& r) {
         bool bright = false;
         for (int x = int(r.x); x < int(r.x + r.w * 0.5f) && !bright; ++x) bright = img.at(x, y)[0] > 200;
         if (bright && first < 0) first = y;
-        if (!bright && first >= 0) { last = y; break; }
+        if (!bright && first >= 0) {
+            last = y;
+            break;
+        }
     }
     return first < 0 || last < 0 ? 0 : last - first;
 }

@@ -1,10 +1,10 @@
 // The dashboard's pure parts: layout, image zoom/pan, camera rig, config file, control groups.
+#include "geometry/shadow/settings.h"
 #include "ui/dashboard.h"
 #include "ui/dashboard_config.h"
 #include "ui/dashboard_layout.h"
 #include "ui/image_view.h"
 #include "ui/orbit_camera.h"
-#include "geometry/shadow/settings.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -31,7 +31,8 @@ bool overlaps(const Rect& a, const Rect& b) {
 } // namespace
 
 TEST(DashboardLayout, PanelsTileTheWindowWithoutOverlap) {
-    for (const auto& [w, h, scale] : {std::tuple{1600.f, 900.f, 1.f}, {1280.f, 720.f, 1.f}, {3840.f, 2160.f, 2.f}, {640.f, 400.f, 1.f}}) {
+    for (const auto& [w, h, scale] :
+         {std::tuple{1600.f, 900.f, 1.f}, {1280.f, 720.f, 1.f}, {3840.f, 2160.f, 2.f}, {640.f, 400.f, 1.f}}) {
         const DashboardRects r = layoutDashboard(w, h, {}, scale);
         const Rect window{0, 0, w, h};
         const std::vector<Rect> panels = {r.controls, r.eye, r.light, r.heatmap, r.stats, r.status};
@@ -40,7 +41,8 @@ TEST(DashboardLayout, PanelsTileTheWindowWithoutOverlap) {
             EXPECT_GT(panels[i].w, 0.f) << i;
             EXPECT_GT(panels[i].h, 0.f) << i;
             EXPECT_EQ(panels[i].x, std::floor(panels[i].x)) << "whole pixels";
-            for (size_t j = i + 1; j < panels.size(); ++j) EXPECT_FALSE(overlaps(panels[i], panels[j])) << i << " " << j;
+            for (size_t j = i + 1; j < panels.size(); ++j)
+                EXPECT_FALSE(overlaps(panels[i], panels[j])) << i << " " << j;
         }
         EXPECT_FLOAT_EQ(r.status.bottom(), h);
         EXPECT_LE(r.heatmap.right(), w);
@@ -57,8 +59,11 @@ TEST(DashboardLayout, ScaleGrowsFixedSizes) {
 }
 
 TEST(DashboardLayout, DegenerateWindowsGiveEmptyRectsNotNaN) {
-    for (const auto& [w, h] : {std::pair{0.f, 0.f}, {-5.f, 10.f}, {std::numeric_limits<float>::quiet_NaN(), 100.f},
-                               {1.f, 1.f}, {std::numeric_limits<float>::infinity(), 5.f}}) {
+    for (const auto& [w, h] : {std::pair{0.f, 0.f},
+                               {-5.f, 10.f},
+                               {std::numeric_limits<float>::quiet_NaN(), 100.f},
+                               {1.f, 1.f},
+                               {std::numeric_limits<float>::infinity(), 5.f}}) {
         const DashboardRects r = layoutDashboard(w, h, {}, 1.f);
         for (const Rect& p : {r.controls, r.eye, r.light, r.heatmap, r.stats, r.status}) {
             EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.w) && std::isfinite(p.h));

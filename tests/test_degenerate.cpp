@@ -5,9 +5,9 @@
 // in the plan, no GL error, and the fallback each case documents (docs/stability.md).
 #include "render_test_util.h"
 
+#include "geometry/analysis/ground_truth.h"
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/chunking.h"
-#include "geometry/analysis/ground_truth.h"
 #include "geometry/scene/mesh_builder.h"
 #include "renderer/context.h"
 #include "renderer/inspection.h"

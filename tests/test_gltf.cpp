@@ -31,8 +31,7 @@ using Bytes = std::vector<unsigned char>;
 /// A binary buffer assembled piece by piece, each piece 4-byte aligned as glTF requires.
 struct Bin {
     Bytes bytes;
-    template <typename T>
-    size_t add(const std::vector<T>& values) {
+    template <typename T> size_t add(const std::vector<T>& values) {
         while (bytes.size() % 4) bytes.push_back(0);
         const size_t offset = bytes.size();
         bytes.resize(offset + values.size() * sizeof(T));
@@ -123,8 +122,7 @@ class GltfTest : public ::testing::Test {
 protected:
     void SetUp() override {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("shadowscope_gltf_" + std::to_string(getpid()) + "_" + info->name());
+        dir_ = fs::temp_directory_path() / ("shadowscope_gltf_" + std::to_string(getpid()) + "_" + info->name());
         fs::create_directories(dir_);
     }
     void TearDown() override {
@@ -134,8 +132,8 @@ protected:
 
     std::string writeBytes(const std::string& name, const Bytes& bytes) const {
         const fs::path path = dir_ / name;
-        std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                                    std::streamsize(bytes.size()));
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
         return path.string();
     }
     std::string writeText(const std::string& name, const std::string& text) const {
@@ -270,7 +268,8 @@ TEST_F(GltfTest, ExternalBinBuffer) {
 
 TEST_F(GltfTest, GlbWithBinChunk) {
     const Bytes bin = triangleBin().bytes;
-    const LoadedModel model = geometry::io::loadGltf(writeBytes("triangle.glb", makeGlb(triangleDoc(bin, "").dump(), bin)));
+    const LoadedModel model =
+        geometry::io::loadGltf(writeBytes("triangle.glb", makeGlb(triangleDoc(bin, "").dump(), bin)));
     EXPECT_EQ(model.format, "glb");
     ASSERT_EQ(model.meshes.size(), 1u);
     EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
@@ -282,7 +281,8 @@ TEST_F(GltfTest, NonFinitePositionsAreCleanedNotFatal) {
     bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, nan, 0, 0});
     bin.add(std::vector<uint8_t>{0, 1, 2, 0, 1, 3});
     json doc = triangleDoc(bin.bytes, dataUri(bin.bytes));
-    doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 6}}});
+    doc["bufferViews"] =
+        json::array({{{"buffer", 0}, {"byteLength", 48}}, {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 6}}});
     doc["accessors"][0]["count"] = 4;
     doc["accessors"][1] = {{"bufferView", 1}, {"componentType", kUByte}, {"count", 6}, {"type", "SCALAR"}};
     const LoadedModel model = geometry::io::loadGltf(writeDoc("nan.gltf", doc));
@@ -322,7 +322,8 @@ TEST_F(GltfTest, TruncatedGlb) {
     const Bytes bin = triangleBin().bytes;
     const Bytes glb = makeGlb(triangleDoc(bin, "").dump(), bin);
     for (size_t keep : {size_t(10), size_t(24), glb.size() / 2, glb.size() - 4})
-        expectFailure(writeBytes("truncated" + std::to_string(keep) + ".glb", Bytes(glb.begin(), glb.begin() + long(keep))));
+        expectFailure(
+            writeBytes("truncated" + std::to_string(keep) + ".glb", Bytes(glb.begin(), glb.begin() + long(keep))));
 }
 
 TEST_F(GltfTest, NodeCycle) {
@@ -414,9 +415,8 @@ TEST_F(GltfTest, WrongAccessorTypes) {
 
 TEST_F(GltfTest, SparseAccessorRejected) {
     json doc = embeddedTriangle();
-    doc["accessors"][0]["sparse"] = {{"count", 1},
-                                     {"indices", {{"bufferView", 1}, {"componentType", kUShort}}},
-                                     {"values", {{"bufferView", 0}}}};
+    doc["accessors"][0]["sparse"] = {
+        {"count", 1}, {"indices", {{"bufferView", 1}, {"componentType", kUShort}}}, {"values", {{"bufferView", 0}}}};
     expectFailure(writeDoc("sparse.gltf", doc));
 }
 
@@ -426,7 +426,8 @@ TEST_F(GltfTest, SharedAccessorAmplificationRefused) {
     bin.add(std::vector<float>(30000, 0.f));
     json doc = triangleDoc(bin.bytes, "");
     doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteLength", bin.bytes.size()}}});
-    doc["accessors"] = json::array({{{"bufferView", 0}, {"componentType", kFloat}, {"count", 10000}, {"type", "VEC3"}}});
+    doc["accessors"] =
+        json::array({{{"bufferView", 0}, {"componentType", kFloat}, {"count", 10000}, {"type", "VEC3"}}});
     doc["meshes"][0]["primitives"] = json::array();
     for (int i = 0; i < 400; ++i) doc["meshes"][0]["primitives"].push_back(primitive(0, -1));
     const std::string message = expectFailure(writeBytes("amplified.glb", makeGlb(doc.dump(), bin.bytes)));

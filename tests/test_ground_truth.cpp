@@ -1,7 +1,7 @@
 // Ground truth by ray casting (Embree): known answers on the plane scene and tiny scenes,
 // agreement with a brute-force tracer, input validation, and the platform as a whole.
-#include "geometry/scene/builtin_scenes.h"
 #include "geometry/analysis/ground_truth.h"
+#include "geometry/scene/builtin_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -68,12 +68,14 @@ Face poleFace(size_t pole, const glm::vec3& dir) {
     const Pole& p = planeScenePoles().at(pole);
     std::optional<Face> best;
     for (size_t t = 0; t < poles->triangleCount(); ++t) {
-        const glm::vec3 a = worldVertex(*poles, 3 * t), b = worldVertex(*poles, 3 * t + 1), c = worldVertex(*poles, 3 * t + 2);
+        const glm::vec3 a = worldVertex(*poles, 3 * t), b = worldVertex(*poles, 3 * t + 1),
+                        c = worldVertex(*poles, 3 * t + 2);
         Face f{(a + b + c) / 3.f, glm::normalize(glm::cross(b - a, c - a))};
         const glm::vec3 offAxis(f.centroid.x - p.base.x, 0.f, f.centroid.z - p.base.z);
         if (glm::length(offAxis) > p.radius * 1.01f) continue; // another pole
         // Outward whatever the winding: caps point away from the pole's middle, sides away from its axis.
-        const glm::vec3 out = std::abs(f.normal.y) > 0.9f ? glm::vec3(0.f, f.centroid.y - p.base.y - 0.5f * p.height, 0.f) : offAxis;
+        const glm::vec3 out =
+            std::abs(f.normal.y) > 0.9f ? glm::vec3(0.f, f.centroid.y - p.base.y - 0.5f * p.height, 0.f) : offAxis;
         if (glm::dot(f.normal, out) < 0.f) f.normal = -f.normal;
         if (!best || glm::dot(f.normal, dir) > glm::dot(best->normal, dir)) best = f;
     }
@@ -109,8 +111,8 @@ std::vector<glm::vec3> worldTriangles(const Scene& scene) {
 }
 
 /// Brute-force reference: Möller–Trumbore against every triangle, with the same offset rule.
-uint8_t bruteOccluded(const std::vector<glm::vec3>& tris, const GroundTruth& truth, const glm::vec3& p, const glm::vec3& n,
-                      const glm::vec3& l) {
+uint8_t bruteOccluded(const std::vector<glm::vec3>& tris, const GroundTruth& truth, const glm::vec3& p,
+                      const glm::vec3& n, const glm::vec3& l) {
     if (!std::isfinite(p.x + p.y + p.z + n.x + n.y + n.z) || glm::length(n) == 0.f) return 0;
     const glm::vec3 d = -glm::normalize(l);
     const float eps = truth.epsilon(p);
@@ -162,7 +164,8 @@ TEST(GroundTruthPlane, GroundBesideEachPoleShadowIsLit) {
 
 TEST(GroundTruthPlane, GroundFarFromPolesIsLit) {
     const glm::vec3 l = planeScene().light.l();
-    const std::vector<glm::vec3> far{{15.f, 0.f, 15.f}, {-20.f, 0.f, 20.f}, {25.f, 0.f, -25.f}, {-30.f, 0.f, -30.f}, {10.f, 0.f, 3.f}};
+    const std::vector<glm::vec3> far{
+        {15.f, 0.f, 15.f}, {-20.f, 0.f, 20.f}, {25.f, 0.f, -25.f}, {-30.f, 0.f, -30.f}, {10.f, 0.f, 3.f}};
     const std::vector<glm::vec3> normals(far.size(), kUp);
     EXPECT_EQ(planeTruth().occluded(far, normals, l), std::vector<uint8_t>(far.size(), 0));
 }
@@ -206,7 +209,8 @@ TEST(GroundTruthPlane, CameraCentrePixelSeesTheTarget) {
     EXPECT_LT(hits.points[20 * 101 + 50].z, hits.points[centre].z);
     EXPECT_LT(hits.points[centre].z, hits.points[40 * 101 + 50].z);
     // Every pixel below the horizon sees the ground (all of the lower half here).
-    for (size_t i = 30 * 101; i < hits.points.size(); ++i) ASSERT_TRUE(std::isfinite(hits.points[i].y)) << "pixel " << i;
+    for (size_t i = 30 * 101; i < hits.points.size(); ++i)
+        ASSERT_TRUE(std::isfinite(hits.points[i].y)) << "pixel " << i;
     // Left column is at smaller x (the camera looks along −z, so +x is to the right).
     EXPECT_LT(hits.points[centre - 20].x, hits.points[centre + 20].x);
 }
@@ -235,7 +239,8 @@ TEST(GroundTruthPlane, ReceiverOrderDoesNotMatter) {
     const PrimaryHits hits = planeTruth().primaryHits(scene.camera, 130, 71);
     const auto forward = planeTruth().occluded(hits.points, hits.normals, scene.light.l());
     EXPECT_GT(std::count(forward.begin(), forward.end(), 1), 0);
-    const std::vector<glm::vec3> pts(hits.points.rbegin(), hits.points.rend() - 3), nrm(hits.normals.rbegin(), hits.normals.rend() - 3);
+    const std::vector<glm::vec3> pts(hits.points.rbegin(), hits.points.rend() - 3),
+        nrm(hits.normals.rbegin(), hits.normals.rend() - 3);
     const auto backward = planeTruth().occluded(pts, nrm, scene.light.l());
     EXPECT_EQ(backward, std::vector<uint8_t>(forward.rbegin(), forward.rend() - 3));
 }
@@ -245,7 +250,8 @@ TEST(GroundTruthPlane, ReceiverOrderDoesNotMatter) {
 TEST(GroundTruthTriangle, ShadesTheGroundUnderItOnly) {
     const GroundTruth truth(trianglesScene(kRoof));
     EXPECT_EQ(truth.triangleCount(), 1u);
-    const std::vector<glm::vec3> pts{{0.f, 0.f, 0.f}, {0.f, 0.f, -1.5f}, {5.f, 0.f, 0.f}, {0.f, 2.f, 0.f}, {-1.5f, 0.f, 1.5f}};
+    const std::vector<glm::vec3> pts{
+        {0.f, 0.f, 0.f}, {0.f, 0.f, -1.5f}, {5.f, 0.f, 0.f}, {0.f, 2.f, 0.f}, {-1.5f, 0.f, 1.5f}};
     const std::vector<glm::vec3> nrm(pts.size(), kUp);
     EXPECT_EQ(truth.occluded(pts, nrm, kStraightDown), (std::vector<uint8_t>{1, 1, 0, 0, 0}));
     // Slanted light (travelling towards +x) moves the shadow 3 m along +x: (0, 0, 0) is now lit,
@@ -309,9 +315,9 @@ TEST(GroundTruthTriangle, PrimaryHitsClipAtNearAndFar) {
         cam.far = far;
         return truth.primaryHits(cam, 3, 3).points[4].y;
     };
-    EXPECT_NEAR(centreY(0.5f, 100.f), 1.f, 1e-5f);  // the roof
-    EXPECT_NEAR(centreY(4.5f, 100.f), 0.f, 1e-5f);  // near plane past the roof: the floor
-    EXPECT_TRUE(std::isnan(centreY(0.5f, 3.5f)));   // far plane short of both
+    EXPECT_NEAR(centreY(0.5f, 100.f), 1.f, 1e-5f); // the roof
+    EXPECT_NEAR(centreY(4.5f, 100.f), 0.f, 1e-5f); // near plane past the roof: the floor
+    EXPECT_TRUE(std::isnan(centreY(0.5f, 3.5f)));  // far plane short of both
 }
 
 TEST(GroundTruthEmpty, NothingOccludesAndNothingIsSeen) {
@@ -339,9 +345,11 @@ TEST(GroundTruthInput, NonFiniteReceiversGiveZeroAndLeaveTheirNeighboursAlone) {
     // 40 receivers (more than one packet), shaded ones interleaved with broken ones.
     std::vector<glm::vec3> pts, nrm;
     std::vector<uint8_t> expected;
-    const std::vector<std::pair<glm::vec3, glm::vec3>> broken{
-        {{kNaN, 0.f, 0.f}, kUp}, {{0.f, kInf, 0.f}, kUp}, {{0.f, 0.f, 0.f}, {0.f, kNaN, 0.f}},
-        {{0.f, 0.f, 0.f}, {-kInf, 1.f, 0.f}}, {{0.f, 0.f, 0.f}, glm::vec3(0.f)}};
+    const std::vector<std::pair<glm::vec3, glm::vec3>> broken{{{kNaN, 0.f, 0.f}, kUp},
+                                                              {{0.f, kInf, 0.f}, kUp},
+                                                              {{0.f, 0.f, 0.f}, {0.f, kNaN, 0.f}},
+                                                              {{0.f, 0.f, 0.f}, {-kInf, 1.f, 0.f}},
+                                                              {{0.f, 0.f, 0.f}, glm::vec3(0.f)}};
     for (int i = 0; i < 40; ++i) {
         if (i % 3 == 1) {
             const auto& [p, n] = broken[static_cast<size_t>(i) % broken.size()];

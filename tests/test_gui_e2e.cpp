@@ -82,7 +82,8 @@ protected:
 
     std::string context() {
         std::ostringstream s;
-        if (auto m = readWidgetMap(mapFile_)) s << "status line: \"" << m->status << "\" (map frame " << m->frame << ")\n";
+        if (auto m = readWidgetMap(mapFile_))
+            s << "status line: \"" << m->status << "\" (map frame " << m->frame << ")\n";
         else s << "no widget map yet\n";
         if (app_.started()) {
             if (!app_.alive()) s << "the app has exited with code " << app_.exitCode() << "\n";
@@ -100,7 +101,9 @@ protected:
 
     // ---- the app ----------------------------------------------------------------------------
 
-    std::vector<std::string> xEnvironment() { return environmentWith({{"DISPLAY", xvfb_.display()}, {"WAYLAND_DISPLAY", std::nullopt}}); }
+    std::vector<std::string> xEnvironment() {
+        return environmentWith({{"DISPLAY", xvfb_.display()}, {"WAYLAND_DISPLAY", std::nullopt}});
+    }
 
     void launch() {
         const auto env = environmentWith({{"DISPLAY", xvfb_.display()},
@@ -113,15 +116,16 @@ protected:
         ::close(out);
         ::close(err);
         long first = -1;
-        waitUntil("the app's first frames (the widget map appearing and its frame counter advancing)", scaled(120),
-                  [&] {
-                      requireAlive("starting");
-                      const auto m = readWidgetMap(mapFile_);
-                      if (!m) return false;
-                      if (first < 0) first = m->frame;
-                      return m->frame > first && m->has("screenshot");
-                  },
-                  ctx());
+        waitUntil(
+            "the app's first frames (the widget map appearing and its frame counter advancing)", scaled(120),
+            [&] {
+                requireAlive("starting");
+                const auto m = readWidgetMap(mapFile_);
+                if (!m) return false;
+                if (first < 0) first = m->frame;
+                return m->frame > first && m->has("screenshot");
+            },
+            ctx());
         // The window: without a window manager it sits at the screen's origin; read it anyway.
         const RunResult found = xdo({"search", "--sync", "--onlyvisible", "--name", "^shadowscope"}, scaled(60));
         window_ = std::strtoul(found.output.c_str(), nullptr, 10);
@@ -134,7 +138,8 @@ protected:
         const WidgetMap m = currentMap();
         if (m.width != kWidth || m.height != kHeight)
             throw std::runtime_error("the dashboard is " + std::to_string(m.width) + "x" + std::to_string(m.height) +
-                                     ", expected the default " + std::to_string(kWidth) + "x" + std::to_string(kHeight));
+                                     ", expected the default " + std::to_string(kWidth) + "x" +
+                                     std::to_string(kHeight));
     }
 
     void focus() { xdo({"windowfocus", "--sync", std::to_string(window_)}, scaled(30)); }
@@ -142,7 +147,8 @@ protected:
     /// Closes the window like a window manager's close button and waits for a clean exit.
     void closeGracefully() {
         requestWindowClose(xvfb_.display(), window_);
-        if (!app_.waitExit(scaled(60))) throw std::runtime_error("the app did not exit after WM_DELETE_WINDOW\n" + context());
+        if (!app_.waitExit(scaled(60)))
+            throw std::runtime_error("the app did not exit after WM_DELETE_WINDOW\n" + context());
         if (app_.exitCode() != 0)
             throw std::runtime_error("the app exited with code " + std::to_string(app_.exitCode()) + "\n" + context());
     }
@@ -161,7 +167,8 @@ protected:
         if (!mayFail && (r.timedOut || r.exitCode != 0)) {
             std::string cmd = "xdotool";
             for (const auto& a : args) cmd += " " + a;
-            throw std::runtime_error(cmd + (r.timedOut ? " timed out" : " failed (exit " + std::to_string(r.exitCode) + ")") +
+            throw std::runtime_error(cmd +
+                                     (r.timedOut ? " timed out" : " failed (exit " + std::to_string(r.exitCode) + ")") +
                                      ": " + r.output + "\n" + context());
         }
         return r;
@@ -174,7 +181,8 @@ protected:
 
     WidgetMap currentMap() {
         std::optional<WidgetMap> m;
-        waitUntil("a readable widget map", scaled(30), [&] { return bool(m = readWidgetMap(mapFile_)); }, ctx());
+        waitUntil(
+            "a readable widget map", scaled(30), [&] { return bool(m = readWidgetMap(mapFile_)); }, ctx());
         return *m;
     }
 
@@ -182,13 +190,14 @@ protected:
     WidgetMap waitForMap(const std::string& what, const std::function<bool(const WidgetMap&)>& pred,
                          Seconds timeout = scaled(120)) {
         std::optional<WidgetMap> m;
-        waitUntil(what, timeout,
-                  [&] {
-                      requireAlive("waiting for " + what);
-                      m = readWidgetMap(mapFile_);
-                      return m && pred(*m);
-                  },
-                  [&] { return (m ? m->describe() + "\n" : std::string()) + context(); });
+        waitUntil(
+            what, timeout,
+            [&] {
+                requireAlive("waiting for " + what);
+                m = readWidgetMap(mapFile_);
+                return m && pred(*m);
+            },
+            [&] { return (m ? m->describe() + "\n" : std::string()) + context(); });
         return *m;
     }
 
@@ -198,7 +207,8 @@ protected:
     void waitFrames(int n) {
         const long last = currentMap().frame;
         const long target = (last / 30 + 1) * 30 - 1 + n;
-        waitForMap(std::to_string(n) + " more frames", [&](const WidgetMap& m) { return m.frame >= target; }, scaled(240));
+        waitForMap(
+            std::to_string(n) + " more frames", [&](const WidgetMap& m) { return m.frame >= target; }, scaled(240));
     }
 
     Rect widget(const std::string& id) {
@@ -251,8 +261,7 @@ protected:
                 }
                 return false;
             };
-            waitForMap("the controls panel to scroll",
-                       [&](const WidgetMap& m) { return moved(m) || m.frame >= seen; });
+            waitForMap("the controls panel to scroll", [&](const WidgetMap& m) { return moved(m) || m.frame >= seen; });
         };
         WidgetMap m = currentMap();
         if (visible(m)) return m.widgets.at(id);
@@ -299,12 +308,13 @@ protected:
     /// Waits until the saved config (written about once a second when something changed) holds
     /// settings.KEY == value.
     void waitForConfig(const std::string& key, const json& value) {
-        waitUntil("the config to have " + key + " = " + value.dump(), scaled(60),
-                  [&] {
-                      requireAlive("waiting for the config");
-                      return configSetting(key) == value.dump();
-                  },
-                  [&] { return "config has " + key + " = " + configSetting(key) + "\n" + context(); });
+        waitUntil(
+            "the config to have " + key + " = " + value.dump(), scaled(60),
+            [&] {
+                requireAlive("waiting for the config");
+                return configSetting(key) == value.dump();
+            },
+            [&] { return "config has " + key + " = " + configSetting(key) + "\n" + context(); });
     }
 
     long linesMentioning(const std::string& file, const std::string& needle) {
@@ -418,7 +428,8 @@ TEST_F(GuiE2E, SurvivesAbuse) {
     std::cout << "[ e2e ] xdotool windowsize 0 0: exit " << zero.exitCode << " " << zero.output << '\n';
     requireAlive("after a 0x0 resize request");
     xdo({"windowsize", wid, std::to_string(kWidth), std::to_string(kHeight)});
-    waitForMap("the dashboard back at full size", [](const WidgetMap& m) { return m.width == kWidth && m.height == kHeight; });
+    waitForMap("the dashboard back at full size",
+               [](const WidgetMap& m) { return m.width == kWidth && m.height == kHeight; });
     const Shots restored = screenshot("restored");
     EXPECT_EQ(restored.dashboard.width, kWidth);
     EXPECT_EQ(restored.dashboard.height, kHeight);
@@ -445,7 +456,8 @@ TEST_F(GuiE2E, SurvivesAbuse) {
     typeText("-999999");
     pressKey("Return");
     const WidgetMap refused = waitForMap("the refusal in the status line", [](const WidgetMap& m) {
-        return m.status.find("shadow_map.resolution") != std::string::npos && m.status.find("refused") != std::string::npos;
+        return m.status.find("shadow_map.resolution") != std::string::npos &&
+               m.status.find("refused") != std::string::npos;
     });
     EXPECT_NE(refused.status.find("kept 2048"), std::string::npos) << refused.status;
     screenshot("after_refusal"); // the status line now says "saved …"
@@ -485,8 +497,9 @@ TEST_F(GuiE2E, CorruptConfigIsIgnored) {
     garbage += "\n\x01\x02 not json at all }}}";
     writeText(configFile_, garbage);
     launch();
-    waitUntil("the app to report the config on stderr", scaled(30),
-              [&] { return readText(tmp_ / "app.err").find("ignored the config file") != std::string::npos; }, ctx());
+    waitUntil(
+        "the app to report the config on stderr", scaled(30),
+        [&] { return readText(tmp_ / "app.err").find("ignored the config file") != std::string::npos; }, ctx());
     EXPECT_NE(currentMap().status.find("ignored the config file"), std::string::npos) << context();
     const Shots shots = screenshot("corrupt_config", /*button=*/true);
     EXPECT_EQ(shots.dashboard.width, kWidth);
@@ -508,16 +521,17 @@ TEST_F(GuiE2E, SamePixelsAsHeadless) {
     const Shots gui = screenshot("gui");
     const WidgetMap m = currentMap();
     const fs::path headlessDir = tmp_ / "headless";
-    const RunResult r = runProgram(appExe(),
-                                   {"render", "--scene", "plane", "--views", "dashboard", "--size",
-                                    std::to_string(kWidth) + "x" + std::to_string(kHeight), "--backend", "osmesa",
-                                    "--out", headlessDir.string()},
-                                   environmentWith({{"DISPLAY", std::nullopt}, {"WAYLAND_DISPLAY", std::nullopt},
-                                                    {"SHADOWSCOPE_WIDGET_MAP", std::nullopt}}),
-                                   scaled(300));
+    const RunResult r = runProgram(
+        appExe(),
+        {"render", "--scene", "plane", "--views", "dashboard", "--size",
+         std::to_string(kWidth) + "x" + std::to_string(kHeight), "--backend", "osmesa", "--out", headlessDir.string()},
+        environmentWith(
+            {{"DISPLAY", std::nullopt}, {"WAYLAND_DISPLAY", std::nullopt}, {"SHADOWSCOPE_WIDGET_MAP", std::nullopt}}),
+        scaled(300));
     ASSERT_FALSE(r.timedOut) << r.output;
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const geometry::analysis::Image headless = geometry::analysis::readImageFile((headlessDir / "dashboard.png").string());
+    const geometry::analysis::Image headless =
+        geometry::analysis::readImageFile((headlessDir / "dashboard.png").string());
     ASSERT_EQ(headless.width, kWidth);
     ASSERT_EQ(headless.height, kHeight);
     for (const char* id : {"eye_image", "light_image", "heatmap_image"}) {
@@ -562,11 +576,12 @@ TEST_F(GuiE2E, DISABLED_TypedValueIsAppliedOnlyWhenComplete) {
     const WidgetMap refused = waitForMap("the refusal in the status line", [](const WidgetMap& m) {
         // Under load X may drop a repeated keystroke ("99999"): any out-of-range number will do,
         // what matters is that no in-range prefix was applied on the way.
-        return m.status.find("shadow_map.resolution: 9999") != std::string::npos && m.status.find("refused") != std::string::npos;
+        return m.status.find("shadow_map.resolution: 9999") != std::string::npos &&
+               m.status.find("refused") != std::string::npos;
     });
     EXPECT_NE(refused.status.find("kept 2048"), std::string::npos) << refused.status;
     closeGracefully();
     EXPECT_EQ(configSetting("shadow_map.resolution"), "2048");
 }
 
-}  // namespace
+} // namespace

@@ -10,7 +10,6 @@
 #include <sstream>
 #include <stdexcept>
 
-
 using namespace geometry::analysis;
 
 namespace {
@@ -25,11 +24,12 @@ Image filled(int w, int h, uint8_t grey) {
     return img;
 }
 
-bool inside(const PixelRect& r, int x, int y) { return x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height; }
+bool inside(const PixelRect& r, int x, int y) {
+    return x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height;
+}
 
 /// Counts pixels inside r for which pred(r, g, b) holds.
-template <class Pred>
-int countIn(const Image& img, const PixelRect& r, Pred pred) {
+template <class Pred> int countIn(const Image& img, const PixelRect& r, Pred pred) {
     int n = 0;
     for (int y = std::max(r.y, 0); y < std::min(r.y + r.height, img.height); ++y)
         for (int x = std::max(r.x, 0); x < std::min(r.x + r.width, img.width); ++x) {
@@ -45,9 +45,7 @@ bool strongBlue(int r, int g, int b) { return b > 150 && r < 80 && g < 120; }
 
 std::string tempPath(const std::string& name) { return testing::TempDir() + "shadowscope_heatmap_" + name; }
 
-void writeBytes(const std::string& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-}
+void writeBytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 
 std::string readBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -219,9 +217,9 @@ TEST(Legend, DrawsOnlyInsideItsBoxInTheBottomLeft) {
             else changedInside += !same;
         }
     EXPECT_EQ(changedInside, r.width * r.height); // the translucent box darkens every box pixel
-    EXPECT_GT(countIn(img, r, light), 50);       // text (and the bar's white middle)
-    EXPECT_GT(countIn(img, r, strongRed), 50);  // the bar's undersampled end (≥ 5 columns)
-    EXPECT_GT(countIn(img, r, strongBlue), 50); // the bar's oversampled end
+    EXPECT_GT(countIn(img, r, light), 50);        // text (and the bar's white middle)
+    EXPECT_GT(countIn(img, r, strongRed), 50);    // the bar's undersampled end (≥ 5 columns)
+    EXPECT_GT(countIn(img, r, strongBlue), 50);   // the bar's oversampled end
 }
 
 TEST(Legend, TextIsRasterized) {

@@ -3,12 +3,12 @@
 #include "render_test_util.h"
 
 #include "app/headless_frame.h"
-#include "renderer/inspection.h"
-#include "geometry/shadow/analytic_error.h"
-#include "geometry/scene/builtin_scenes.h"
 #include "geometry/analysis/ground_truth.h"
+#include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/mesh_builder.h"
+#include "geometry/shadow/analytic_error.h"
 #include "renderer/context.h"
+#include "renderer/inspection.h"
 
 #include <gtest/gtest.h>
 
@@ -70,7 +70,8 @@ TEST(Inspection, MeasuredAliasingAgreesWithTheAnalyticModelAlongTheViewAxis) {
             const auto [m, plan] = g.measure(method, D);
             EXPECT_NEAR(plan.gammaDeg, 90.f, 0.01f);
             const double mz = g.analytic(plan, D);
-            EXPECT_NEAR(m / mz, 1.0, 0.25) << warpMethodName(method) << " at depth " << D << ": m " << m << ", m_z " << mz;
+            EXPECT_NEAR(m / mz, 1.0, 0.25)
+                << warpMethodName(method) << " at depth " << D << ": m " << m << ", m_z " << mz;
         }
     EXPECT_EQ(renderer::takeGlErrors(), "");
 }

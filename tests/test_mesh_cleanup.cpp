@@ -1,6 +1,6 @@
 // cleanMesh(): every step on hand-built meshes, counted and checked.
-#include "geometry/scene/mesh_builder.h"
 #include "geometry/io/model_loader.h"
+#include "geometry/scene/mesh_builder.h"
 
 #include <gtest/gtest.h>
 
@@ -73,8 +73,7 @@ TEST(MeshCleanup, MergeRespectsTolerance) {
 
 TEST(MeshCleanup, NonFiniteVertexRemovesItsFaces) {
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {nan, 0, 0}, {1, inf, 0}},
-                      {0, 1, 2, 1, 3, 2, 0, 4, 1});
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {nan, 0, 0}, {1, inf, 0}}, {0, 1, 2, 1, 3, 2, 0, 4, 1});
     const CleanupReport r = cleanMesh(m);
     EXPECT_EQ(r.nonFiniteVertices, 2u);
     EXPECT_EQ(r.nonFiniteFaces, 2u);
@@ -84,10 +83,9 @@ TEST(MeshCleanup, NonFiniteVertexRemovesItsFaces) {
 }
 
 TEST(MeshCleanup, DegenerateFacesRemoved) {
-    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}},
-                      {0, 1, 2,   // good
-                       0, 0, 1,   // repeated index
-                       0, 1, 3}); // collinear: zero area
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}}, {0, 1, 2,   // good
+                                                                     0, 0, 1,   // repeated index
+                                                                     0, 1, 3}); // collinear: zero area
     const CleanupReport r = cleanMesh(m);
     EXPECT_EQ(r.degenerateFaces, 2u);
     EXPECT_EQ(r.outputFaces, 1u);
@@ -104,8 +102,7 @@ TEST(MeshCleanup, IndexOutOfRangeDropsFace) {
 }
 
 TEST(MeshCleanup, DuplicateFacesAnyWindingRemoved) {
-    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}},
-                      {0, 1, 2, 2, 1, 0, 1, 2, 0, 1, 3, 2});
+    Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {0, 1, 2, 2, 1, 0, 1, 2, 0, 1, 3, 2});
     const CleanupReport r = cleanMesh(m);
     EXPECT_EQ(r.duplicateFaces, 2u);
     EXPECT_EQ(r.outputFaces, 2u);

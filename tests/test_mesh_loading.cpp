@@ -1,7 +1,7 @@
 // loadModel()/saveMesh() for OBJ, STL, OFF, PLY: fixtures are written by the tests into a
 // temporary folder, good and hostile alike.
-#include "geometry/scene/mesh_builder.h"
 #include "geometry/io/model_loader.h"
+#include "geometry/scene/mesh_builder.h"
 
 #include <gtest/gtest.h>
 
@@ -25,9 +25,8 @@ protected:
     fs::path dir;
 
     void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("shadowscope_meshio_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir = fs::temp_directory_path() / ("shadowscope_meshio_" + std::to_string(::getpid()) + "_" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir);
     }
     void TearDown() override {
@@ -193,12 +192,11 @@ TEST_F(MeshLoading, BinaryPly) { expectClosedTetra(loadModel(write("tetra.ply", 
 
 TEST_F(MeshLoading, ProgressReportsEveryStage) {
     std::vector<std::string> stages;
-    (void)loadModel(write("tetra.stl", binaryStl(tetra())), {},
-                    [&](float f, std::string_view stage) {
-                        EXPECT_GE(f, 0.f);
-                        EXPECT_LE(f, 1.f);
-                        if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
-                    });
+    (void)loadModel(write("tetra.stl", binaryStl(tetra())), {}, [&](float f, std::string_view stage) {
+        EXPECT_GE(f, 0.f);
+        EXPECT_LE(f, 1.f);
+        if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
+    });
     EXPECT_EQ(stages, (std::vector<std::string>{"reading", "cleaning", "chunking"}));
 }
 

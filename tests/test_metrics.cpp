@@ -27,8 +27,8 @@ TEST(AliasingStats, HandComputedSmallCase) {
     EXPECT_EQ(st.count, 4u);
     EXPECT_EQ(st.skipped, 0u);
     EXPECT_DOUBLE_EQ(st.mean, 7.5 / 4);
-    EXPECT_DOUBLE_EQ(st.p50, 1.0);          // nearest rank ⌈0.5·4⌉ = 2nd smallest
-    EXPECT_DOUBLE_EQ(st.p95, 4.0);          // ⌈0.95·4⌉ = 4th
+    EXPECT_DOUBLE_EQ(st.p50, 1.0); // nearest rank ⌈0.5·4⌉ = 2nd smallest
+    EXPECT_DOUBLE_EQ(st.p95, 4.0); // ⌈0.95·4⌉ = 4th
     EXPECT_DOUBLE_EQ(st.max, 4.0);
     EXPECT_DOUBLE_EQ(st.undersampled, 0.5); // 2 and 4; m = 1 exactly is not undersampled
 }
@@ -72,9 +72,9 @@ TEST(AliasingStats, NonFiniteReceiverValuesAreSkippedAndCounted) {
 }
 
 TEST(AliasingStats, EmptyOrNoReceiversGiveAllZero) {
-    for (const auto& st : {aliasingStats({}, {}),
-                           aliasingStats(std::vector<float>{5.f, 6.f}, std::vector<uint8_t>{0, 0}),
-                           aliasingStats(std::vector<float>{kNaN}, std::vector<uint8_t>{1})}) {
+    for (const auto& st :
+         {aliasingStats({}, {}), aliasingStats(std::vector<float>{5.f, 6.f}, std::vector<uint8_t>{0, 0}),
+          aliasingStats(std::vector<float>{kNaN}, std::vector<uint8_t>{1})}) {
         EXPECT_EQ(st.count, 0u);
         EXPECT_EQ(st.mean, 0.0);
         EXPECT_EQ(st.p50, 0.0);
@@ -146,15 +146,15 @@ TEST(TruthStats, SizeMismatchThrows) {
 
 TEST(TexelUtilization, FourByFourMapFromAFewPixels) {
     const std::vector<glm::vec4> aux{
-        {0.2f, 0.7f, 0.f, 0.5f}, // texel (0,0)
-        {0.9f, 0.1f, 0.f, 0.5f}, // texel (0,0) again: counted once
-        {3.5f, 3.99f, 0.f, 0.5f}, // texel (3,3)
-        {1.0f, 2.0f, 0.f, 0.5f}, // texel (1,2): floor of an exact integer
-        {2.5f, 2.5f, 1.f, 0.5f}, // other split
-        {2.5f, 0.5f, 0.f, 0.5f}, // non-receiver
-        {4.0f, 1.0f, 0.f, 0.5f}, // u = resolution: off the map
-        {-0.1f, 1.0f, 0.f, 0.5f}, // off the map
-        {kNaN, 1.0f, 0.f, 0.5f}, // not finite
+        {0.2f, 0.7f, 0.f, 0.5f},   // texel (0,0)
+        {0.9f, 0.1f, 0.f, 0.5f},   // texel (0,0) again: counted once
+        {3.5f, 3.99f, 0.f, 0.5f},  // texel (3,3)
+        {1.0f, 2.0f, 0.f, 0.5f},   // texel (1,2): floor of an exact integer
+        {2.5f, 2.5f, 1.f, 0.5f},   // other split
+        {2.5f, 0.5f, 0.f, 0.5f},   // non-receiver
+        {4.0f, 1.0f, 0.f, 0.5f},   // u = resolution: off the map
+        {-0.1f, 1.0f, 0.f, 0.5f},  // off the map
+        {kNaN, 1.0f, 0.f, 0.5f},   // not finite
         {1.5f, 1.5f, 0.02f, 0.5f}, // split index read back slightly off 0: texel (1,1)
     };
     const std::vector<uint8_t> r{1, 1, 1, 1, 1, 0, 1, 1, 1, 1};

@@ -26,7 +26,7 @@ bool finite(const glm::mat4& m) {
 
 bool insideUnitCube(const glm::mat4& m, const glm::vec3& p) { return testutil::insideUnitCube(m, p, 2e-4f); }
 
-const WarpMethod kMethods[] = {WarpMethod::Uniform, WarpMethod::Psm, WarpMethod::Lispsm,
+const WarpMethod kMethods[] = {WarpMethod::Uniform, WarpMethod::Psm,   WarpMethod::Lispsm,
                                WarpMethod::Glispsm, WarpMethod::Gmnpr, WarpMethod::Manual};
 
 } // namespace

@@ -1,8 +1,8 @@
 // JSON presets: settingsToJson/settingsFromJson round-trip every declared key, the shipped presets
 // hold what they promise, bad files give one-line errors, and --preset / --set precedence does not
 // depend on the order on the command line.
-#include "geometry/io/preset.h"
 #include "app/render_options.h"
+#include "geometry/io/preset.h"
 
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
@@ -117,7 +117,8 @@ TEST(Presets, EveryKeyIsPresentWithItsJsonType) {
         }
     }
     EXPECT_EQ(j.at("filter").at("eye_blur").at("iterations"), 8);
-    EXPECT_EQ(geometry::io::settingsToJson(ShadowSettings{}).at("bias").at("constant").dump(), "0.05") << "floats print short";
+    EXPECT_EQ(geometry::io::settingsToJson(ShadowSettings{}).at("bias").at("constant").dump(), "0.05")
+        << "floats print short";
 }
 
 TEST(Presets, EveryKeyRoundTrips) {
@@ -138,11 +139,13 @@ TEST(Presets, SaveWritesPrettyJsonWithNameFirst) {
     geometry::io::savePreset(path, ShadowSettings{}, "mine", "what it is");
     std::ifstream in(path, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_EQ(text.rfind("{\n  \"name\": \"mine\",\n  \"description\": \"what it is\",\n  \"shadow_map\"", 0), 0u) << text;
+    EXPECT_EQ(text.rfind("{\n  \"name\": \"mine\",\n  \"description\": \"what it is\",\n  \"shadow_map\"", 0), 0u)
+        << text;
     EXPECT_EQ(text.back(), '\n');
     EXPECT_EQ(json::parse(text).at("name"), "mine");
-    EXPECT_NE(errorOf([] { geometry::io::savePreset("/nonexistent-dir/x.json", ShadowSettings{}); }).find("cannot write"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf([] { geometry::io::savePreset("/nonexistent-dir/x.json", ShadowSettings{}); }).find("cannot write"),
+        std::string::npos);
 }
 
 TEST(Presets, MissingKeysKeepTheBase) {
@@ -153,14 +156,15 @@ TEST(Presets, MissingKeysKeepTheBase) {
     EXPECT_EQ(s.warp.method, geometry::shadow::WarpMethod::Psm);
     EXPECT_EQ(s.splits.count, 5);
     EXPECT_EQ(s.bias.constant, 0.3f);
-    const ShadowSettings t = geometry::io::loadPreset(writeFile("partial.json", R"({"name": "x", "filter": {"eye_blur": {}}})"), base);
+    const ShadowSettings t =
+        geometry::io::loadPreset(writeFile("partial.json", R"({"name": "x", "filter": {"eye_blur": {}}})"), base);
     expectSameSettings(t, base);
 }
 
 TEST(Presets, ShippedPresetsHoldTheirTechnique) {
     using namespace geometry::scene;
-using namespace geometry::shadow;
-using namespace geometry::io;
+    using namespace geometry::shadow;
+    using namespace geometry::io;
     const ShadowSettings ssm = geometry::io::loadPreset(presetPath("ssm.json"));
     EXPECT_EQ(ssm.warp.method, WarpMethod::Uniform);
     EXPECT_EQ(ssm.splits.count, 1);
@@ -200,7 +204,7 @@ TEST(Presets, ShippedPresetsAreWhatSavePresetWrites) {
         ASSERT_TRUE(j.at("description").is_string()) << name;
         const std::string again = (testDir() / name).string();
         geometry::io::savePreset(again, geometry::io::loadPreset(presetPath(name)), j.at("name").get<std::string>(),
-                        j.at("description").get<std::string>());
+                                 j.at("description").get<std::string>());
         std::ifstream in2(again, std::ios::binary);
         const std::string text2((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());
         EXPECT_EQ(text, text2) << name;
@@ -254,7 +258,8 @@ TEST(Presets, BadFilesGiveOneLineErrorsNamingTheProblem) {
         const std::string message = loadError(path);
         EXPECT_EQ(message.rfind("preset " + path + ": ", 0), 0u) << c.name << ": " << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << c.name << ": " << message;
-        for (const auto& part : c.expected) EXPECT_NE(message.find(part), std::string::npos) << c.name << ": " << message;
+        for (const auto& part : c.expected)
+            EXPECT_NE(message.find(part), std::string::npos) << c.name << ": " << message;
     }
     const std::string missing = (testDir() / "missing.json").string();
     EXPECT_EQ(loadError(missing), "preset " + missing + ": no such file");
@@ -311,9 +316,9 @@ TEST(Presets, LaterPresetsAndSetsWin) {
     app::addRenderOptions(cli, o);
     parseArgs(cli, {"--set", "splits.count=3", "--preset", presetPath("paper.json"), "--set", "splits.count=5",
                     "--preset", partial});
-    EXPECT_EQ(o.settings.filter.kernel, 7);               // the later preset
+    EXPECT_EQ(o.settings.filter.kernel, 7);                               // the later preset
     EXPECT_EQ(o.settings.filter.type, geometry::shadow::FilterType::Pcf); // the earlier one, not overridden
-    EXPECT_EQ(o.settings.splits.count, 5);                // the last --set
+    EXPECT_EQ(o.settings.splits.count, 5);                                // the last --set
 }
 
 TEST(Presets, OptionsOnlyTouchTheirCommand) {

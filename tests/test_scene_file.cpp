@@ -1,7 +1,7 @@
 // Scene files (geometry/io/scene_file.h): the shipped files, transforms, model references, every
 // validation error, and resolveScene() for each kind of --scene argument.
-#include "geometry/scene/builtin_scenes.h"
 #include "geometry/io/scene_file.h"
+#include "geometry/scene/builtin_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -150,7 +150,8 @@ TEST(SceneFile, ReferencesAModelFileRelativeToItsFolder) {
     const fs::path file = writeFile(dir / "s.json", R"({
         "name": "boxes",
         "meshes": [{"file": "models/box.obj", "translate": [1, 0, 0]},
-                   {"file": ")" + (dir / "models" / "box.obj").string() + R"(", "translate": [0, 5, 0], "color": [1, 0, 0]}],
+                   {"file": ")" + (dir / "models" / "box.obj").string() +
+                                                        R"(", "translate": [0, 5, 0], "color": [1, 0, 0]}],
         "ground": {"size": 50, "height": -1},
         "light": {"direction": [0, -1, 0]}})");
     const SceneFile f = loadSceneFile(file.string());
@@ -229,7 +230,8 @@ TEST(SceneFile, EveryErrorIsOneLineNamingTheFileAndTheKey) {
         {R"({"meshes": [{"builtin": "plane"}, {"builtin": "plane"}, {"builtin": "plane", "translate": [1, 2]}]})",
          "meshes[2].translate: expected 3 numbers"},
         {R"({"meshes": [{"builtin": "plane", "translate": "up"}]})", "meshes[0].translate: expected 3 numbers"},
-        {R"({"meshes": [{"builtin": "plane", "translate": [1, "2", 3]}]})", "meshes[0].translate[1]: expected a number"},
+        {R"({"meshes": [{"builtin": "plane", "translate": [1, "2", 3]}]})",
+         "meshes[0].translate[1]: expected a number"},
         {R"({"meshes": [{"builtin": "plane", "scale": 1e999}]})", "1e999"},
         {R"({"meshes": [{"builtin": "plane", "scale": 1e300}]})", "meshes[0].scale: number out of range"},
         {R"({"meshes": [{"builtin": "plane", "scale": 0}]})", "meshes[0].scale: expected a positive number"},
@@ -328,7 +330,8 @@ TEST(SceneFile, FileLevelLimits) {
     for (int i = 0; i < 20; ++i) deep += "[";
     for (int i = 0; i < 20; ++i) deep += "]";
     deep += "}";
-    EXPECT_NE(messageFor(writeFile(dir / "deep.json", deep)).find("deep.json: nested deeper than 16"), std::string::npos);
+    EXPECT_NE(messageFor(writeFile(dir / "deep.json", deep)).find("deep.json: nested deeper than 16"),
+              std::string::npos);
     EXPECT_NE(messageFor(dir / "absent.json").find("absent.json: no such file"), std::string::npos);
     EXPECT_NE(messageFor(dir).find("is a directory"), std::string::npos);
 }
@@ -337,8 +340,8 @@ TEST(SceneFile, FileLevelLimits) {
 
 TEST(SceneFile, FrameCameraSeesTheWholeBox) {
     const Aabb boxes[] = {
-        {{-1, -1, -1}, {1, 1, 1}},   {{0, 0, 0}, {100, 1, 100}}, {{-5, 0, -5}, {5, 200, 5}},
-        {{3, 3, 3}, {3, 3, 3}},      {{-1000, 0, 0}, {1000, 2, 3}},
+        {{-1, -1, -1}, {1, 1, 1}}, {{0, 0, 0}, {100, 1, 100}},    {{-5, 0, -5}, {5, 200, 5}},
+        {{3, 3, 3}, {3, 3, 3}},    {{-1000, 0, 0}, {1000, 2, 3}},
     };
     for (const Aabb& b : boxes) {
         for (float fov : {30.f, 60.f, 90.f}) {

@@ -38,15 +38,15 @@ TEST(ShadowBlock, CppAndGlslAgreeOnEveryOffset) {
     const ShadowBlock b{};
     int checked = 0;
     // The block's own members, then every split member in the first and the last element.
-#define SHADOW_FIELD(glsl, cpp, name)                                                                                 \
-    EXPECT_EQ(glOffset(eye.id(), "ShadowBlock." #name), byteOffset(b, b.name)) << #name;                             \
+#define SHADOW_FIELD(glsl, cpp, name)                                                                                  \
+    EXPECT_EQ(glOffset(eye.id(), "ShadowBlock." #name), byteOffset(b, b.name)) << #name;                               \
     ++checked;
 #include "renderer/shadow_block.inc"
 #undef SHADOW_FIELD
     for (const int i : {0, kMaxSplits - 1}) {
         const std::string element = "ShadowBlock.splits[" + std::to_string(i) + "].";
-#define SHADOW_SPLIT_FIELD(glsl, cpp, name)                                                                           \
-    EXPECT_EQ(glOffset(eye.id(), element + #name), byteOffset(b, b.splits[i].name)) << element << #name;             \
+#define SHADOW_SPLIT_FIELD(glsl, cpp, name)                                                                            \
+    EXPECT_EQ(glOffset(eye.id(), element + #name), byteOffset(b, b.splits[i].name)) << element << #name;               \
     ++checked;
 #include "renderer/shadow_block.inc"
 #undef SHADOW_SPLIT_FIELD

@@ -12,8 +12,8 @@ constexpr double n = 1, f = 100, half = std::numbers::pi / 2;
 }
 
 TEST(Splits, EverySchemeStartsAtNearEndsAtFarAndIncreases) {
-    for (auto scheme : {SplitScheme::Uniform, SplitScheme::Log, SplitScheme::Practical, SplitScheme::Pssm,
-                        SplitScheme::Adaptive})
+    for (auto scheme :
+         {SplitScheme::Uniform, SplitScheme::Log, SplitScheme::Practical, SplitScheme::Pssm, SplitScheme::Adaptive})
         for (int k = 1; k <= 8; ++k)
             for (double g : {0.0, 0.3, 0.8, half}) {
                 SplitParams p{k, scheme};
@@ -24,8 +24,7 @@ TEST(Splits, EverySchemeStartsAtNearEndsAtFarAndIncreases) {
                 for (int i = 1; i <= k; ++i) {
                     if (scheme == SplitScheme::Adaptive && g == 0.0 && k > 5)
                         EXPECT_GE(c[i], c[i - 1]); // α^(k−1) > f/n: leading splits clamp at n
-                    else
-                        EXPECT_GT(c[i], c[i - 1]) << splitSchemeName(scheme) << " k=" << k << " γ=" << g;
+                    else EXPECT_GT(c[i], c[i - 1]) << splitSchemeName(scheme) << " k=" << k << " γ=" << g;
                 }
             }
 }

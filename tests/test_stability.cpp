@@ -1,11 +1,11 @@
 // Pure stability helpers: the light turned to a chosen light-view angle, path interpolation,
 // and the flicker and seam measures (geometry/scene/light_angle.h, path_interpolation.h,
 // stability_metrics.h).
-#include "geometry/scene/builtin_scenes.h"
 #include "geometry/analysis/caster_coverage.h"
+#include "geometry/analysis/stability_metrics.h"
+#include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/light_angle.h"
 #include "geometry/scene/path_interpolation.h"
-#include "geometry/analysis/stability_metrics.h"
 
 #include "random_util.h"
 
@@ -79,7 +79,8 @@ TEST(LightAngle, NaNSafe) {
     EXPECT_NEAR(glm::length(lightAtViewAngle({0, 0, -1}, {0, -1, 0}, nan) - glm::vec3(0, 0, -1)), 0.f, 1e-6f);
     EXPECT_TRUE(finite(lightAtViewAngle(glm::vec3(nan), glm::vec3(nan), 30.f)));
     EXPECT_TRUE(finite(lightAtViewAngle(glm::vec3(0.f), glm::vec3(0.f), 30.f)));
-    EXPECT_NEAR(lightViewAngleDeg(glm::vec3(0.f, 0.f, -1.f), lightAtViewAngle(glm::vec3(0.f), {0, -1, 0}, 30.f)), 30.f, 1e-3f)
+    EXPECT_NEAR(lightViewAngleDeg(glm::vec3(0.f, 0.f, -1.f), lightAtViewAngle(glm::vec3(0.f), {0, -1, 0}, 30.f)), 30.f,
+                1e-3f)
         << "a zero v counts as (0, 0, -1)";
     // Out of range angles clamp.
     EXPECT_NEAR(lightViewAngleDeg({1, 0, 0}, lightAtViewAngle({1, 0, 0}, {0, -1, 0}, 400.f)), 180.f, 1e-3f);
@@ -188,14 +189,14 @@ TEST(SeamStats, StepAcrossTheBoundaryBeyondTheLocalSlope) {
 
 TEST(SeamStats, OnlyPixelsOnOneSurfaceCount) {
     SeamImage img(0.f, 4.f);
-    img.positions[4].y = -40.f;                    // row 0: b is the sea seen through a grating hole
-    img.normals[8 + 5] = {1.f, 0.f, 0.f};          // row 1: e is on a wall
-    img.receiver[16 + 2] = 0;                      // row 2: c is no receiver
+    img.positions[4].y = -40.f;           // row 0: b is the sea seen through a grating hole
+    img.normals[8 + 5] = {1.f, 0.f, 0.f}; // row 1: e is on a wall
+    img.receiver[16 + 2] = 0;             // row 2: c is no receiver
     SeamStats s = img.stats();
     EXPECT_EQ(s.pairs, 0u);
     EXPECT_EQ(s.median, 0.0);
     img = SeamImage(0.f, 4.f);
-    img.aux[3].z = -1.f;                           // sky
+    img.aux[3].z = -1.f; // sky
     img.m[8 + 3] = NAN;
     img.m[16 + 4] = 0.f;
     EXPECT_EQ(img.stats().pairs, 0u);
@@ -277,8 +278,9 @@ TEST(CasterCoverage, AMapThatMissesCastersIsCaught) {
     std::vector<float> lit(n, 1.f);
     // A light frustum half as wide (map coordinates doubled) drops the outer casters.
     for (auto& split : g.plan.splits)
-        split.lightViewProj = glm::mat4(glm::vec4(2, 0, 0, 0), glm::vec4(0, 2, 0, 0), glm::vec4(0, 0, 1, 0),
-                                        glm::vec4(0, 0, 0, 1)) * split.lightViewProj;
+        split.lightViewProj =
+            glm::mat4(glm::vec4(2, 0, 0, 0), glm::vec4(0, 2, 0, 0), glm::vec4(0, 0, 1, 0), glm::vec4(0, 0, 0, 1)) *
+            split.lightViewProj;
     CasterCoverage c = casterCoverage(g.plan, g.positions, g.aux, receiver, occluded, lit);
     EXPECT_GT(c.clipped, 0.2);
     EXPECT_EQ(c.falseLitClipped, c.clipped) << "all truth-shadowed and rendered lit";
@@ -288,8 +290,9 @@ TEST(CasterCoverage, AMapThatMissesCastersIsCaught) {
     // Casters above the map's near side (towards the light) are lost as well.
     g = GroundView(WarpMethod::Uniform);
     for (auto& split : g.plan.splits)
-        split.lightViewProj = glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0),
-                                        glm::vec4(0, 0, -1.2f, 1)) * split.lightViewProj; // z − 1.2·w: the near side moves in
+        split.lightViewProj =
+            glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0), glm::vec4(0, 0, -1.2f, 1)) *
+            split.lightViewProj; // z − 1.2·w: the near side moves in
     receiver.assign(g.positions.size(), 1);
     EXPECT_GT(casterCoverage(g.plan, g.positions, g.aux, receiver).clipped, 0.2);
     // Sky, non-receivers and bad positions are not counted; sizes must agree.

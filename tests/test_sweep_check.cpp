@@ -64,9 +64,9 @@ TEST(SweepCheck, CleanSweepPasses) { EXPECT_TRUE(app::checkSweep(clean(), at15()
 
 TEST(SweepCheck, NaNAndInfFailButUniformNPrimeIsInfinity) {
     auto rows = clean();
-    rows[3].p95 = NAN;          // lispsm at 15°
+    rows[3].p95 = NAN;              // lispsm at 15°
     rows[5].falseShadow = INFINITY; // lispsm at 30°
-    rows[7].nPrime = -INFINITY; // lispsm at 45°
+    rows[7].nPrime = -INFINITY;     // lispsm at 45°
     const auto f = app::checkSweep(rows);
     EXPECT_TRUE(mentions(f, "method lispsm at 15.00 deg", "p95 is nan"));
     EXPECT_TRUE(mentions(f, "method lispsm at 30.00 deg", "false_shadow is inf"));
@@ -120,7 +120,7 @@ TEST(SweepCheck, LostCastersAndGlErrorsFail) {
     auto rows = clean();
     rows[25].falseLitClipped = 0.04; // lispsm at 180°
     rows[25].clippedCasters = 0.2;
-    rows[10].glErrors = 1;          // uniform at 75°
+    rows[10].glErrors = 1; // uniform at 75°
     const auto f = app::checkSweep(rows, at15());
     EXPECT_TRUE(mentions(f, "method lispsm at 180.00 deg", "false_lit_clipped 0.0400 exceeds 0.0010"));
     EXPECT_TRUE(mentions(f, "method lispsm at 180.00 deg", "clipped_casters 0.2000"));
@@ -151,7 +151,7 @@ TEST(SweepCheck, BrokenCsvIsAOneLineError) {
     EXPECT_THROW((void)app::parseSweepCsv(""), std::runtime_error);
     EXPECT_THROW((void)app::parseSweepCsv("angle_deg,method\n0,uniform\n"), std::runtime_error); // missing columns
     const std::string header = app::sweepCsvHeader() + "\n";
-    EXPECT_THROW((void)app::parseSweepCsv(header + "0,uniform,1\n"), std::runtime_error);       // short row
+    EXPECT_THROW((void)app::parseSweepCsv(header + "0,uniform,1\n"), std::runtime_error); // short row
     std::string bad = app::sweepCsvRow(row(0, "uniform", 1));
     bad.replace(bad.find(",uniform,") + 9, 3, "abc");
     try {

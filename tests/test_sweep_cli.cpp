@@ -117,7 +117,8 @@ TEST(SweepGamma, EveryMethodPassesTheCheckAtCiSize) {
 TEST(SweepGamma, ContinuityMethodsPassAtOneDegreeAcrossTheirSwitchingAngles) {
     const fs::path dir = freshDir("sweep_gamma_window");
     const CommandResult r =
-        run("sweep gamma " + kSmall + "--methods lispsm,glispsm,gmnpr --from 146 --to 156 --step 1 --check --out " + dir.string());
+        run("sweep gamma " + kSmall + "--methods lispsm,glispsm,gmnpr --from 146 --to 156 --step 1 --check --out " +
+            dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto rows = readCsv(dir / "sweep.csv");
     ASSERT_EQ(rows.size(), 11u * 3u);
@@ -134,7 +135,8 @@ TEST(SweepGamma, ContinuityMethodsPassAtOneDegreeAcrossTheirSwitchingAngles) {
 // method and the angle; without --check the same run succeeds.
 TEST(SweepGamma, CheckFailsOnImpossibleThresholds) {
     const fs::path dir = freshDir("sweep_gamma_tight");
-    const std::string args = "sweep gamma " + kSmall + "--methods lispsm --from 60 --to 90 --step 15 --out " + dir.string();
+    const std::string args =
+        "sweep gamma " + kSmall + "--methods lispsm --from 60 --to 90 --step 15 --out " + dir.string();
     EXPECT_EQ(run(args).exitCode, 0);
     const CommandResult r = run(args + " --check --max-p95-ratio 1 --continuity-step 15 --min-receivers 0");
     EXPECT_EQ(r.exitCode, 1) << r.output;
@@ -147,7 +149,8 @@ TEST(SweepGamma, CheckFailsOnImpossibleThresholds) {
     EXPECT_EQ(again.exitCode, 1) << again.output;
     EXPECT_TRUE(countLines(again.output, "check failed: method lispsm at ", 2)) << again.output;
     // A correct plan keeps every caster: no receiver is false lit through a clipped caster.
-    for (const auto& row : readCsv(dir / "sweep.csv")) EXPECT_EQ(num(row, "false_lit_clipped"), 0) << row.at("angle_deg");
+    for (const auto& row : readCsv(dir / "sweep.csv"))
+        EXPECT_EQ(num(row, "false_lit_clipped"), 0) << row.at("angle_deg");
 }
 
 TEST(SweepCheck, BrokenCsvFails) {
@@ -159,20 +162,25 @@ TEST(SweepCheck, BrokenCsvFails) {
         std::ofstream(dir / name) << text;
         return (dir / name).string();
     };
-    const std::string good = write("good.csv", header + "30,glispsm,15.8,13.9,224,0.03,0.2,30,0.008,15.8,3.2,5.1,13140,0,138,0,0\n");
+    const std::string good =
+        write("good.csv", header + "30,glispsm,15.8,13.9,224,0.03,0.2,30,0.008,15.8,3.2,5.1,13140,0,138,0,0\n");
     EXPECT_EQ(run("sweep check " + good).exitCode, 0);
-    const CommandResult nan = run("sweep check " +
-                                  write("nan.csv", header + "30,glispsm,nan,13.9,224,0.03,0.2,30,0.008,15.8,3.2,5.1,13140,0,138,0,0\n"));
+    const CommandResult nan =
+        run("sweep check " +
+            write("nan.csv", header + "30,glispsm,nan,13.9,224,0.03,0.2,30,0.008,15.8,3.2,5.1,13140,0,138,0,0\n"));
     EXPECT_EQ(nan.exitCode, 1);
     EXPECT_NE(nan.output.find("method glispsm at 30.00 deg: n_prime is nan"), std::string::npos) << nan.output;
-    const CommandResult gl = run("sweep check " +
-                                 write("gl.csv", header + "30,glispsm,15.8,13.9,224,0.03,0.2,30,0.008,15.8,3.2,5.1,13140,1,138,0,0\n"));
+    const CommandResult gl =
+        run("sweep check " +
+            write("gl.csv", header + "30,glispsm,15.8,13.9,224,0.03,0.2,30,0.008,15.8,3.2,5.1,13140,1,138,0,0\n"));
     EXPECT_EQ(gl.exitCode, 1);
     EXPECT_NE(gl.output.find("GL error"), std::string::npos) << gl.output;
-    const CommandResult lost = run("sweep check " +
-                                   write("lost.csv", header + "30,glispsm,15.8,13.9,224,0.03,0.2,30,0.008,15.8,3.2,5.1,13140,0,138,0.2,0.02\n"));
+    const CommandResult lost = run(
+        "sweep check " +
+        write("lost.csv", header + "30,glispsm,15.8,13.9,224,0.03,0.2,30,0.008,15.8,3.2,5.1,13140,0,138,0.2,0.02\n"));
     EXPECT_EQ(lost.exitCode, 1);
-    EXPECT_NE(lost.output.find("method glispsm at 30.00 deg: false_lit_clipped 0.0200"), std::string::npos) << lost.output;
+    EXPECT_NE(lost.output.find("method glispsm at 30.00 deg: false_lit_clipped 0.0200"), std::string::npos)
+        << lost.output;
     const CommandResult missing = run("sweep check " + write("missing.csv", "angle_deg,method\n0,uniform\n"));
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_NE(missing.output.find("no column 'n_prime'"), std::string::npos) << missing.output;
@@ -181,15 +189,15 @@ TEST(SweepCheck, BrokenCsvFails) {
 
 TEST(SweepGamma, BadInputIsAOneLineError) {
     const std::string out = " --out " + freshDir("sweep_bad").string();
-    for (const auto& [args, expect] : std::vector<std::pair<std::string, std::string>>{
-             {"--methods lispsm,nosuch", "unknown warp method 'nosuch'"},
-             {"--methods lispsm,lispsm", "given twice"},
-             {"--step 0", "--step"},
-             {"--step -2", "--step"},
-             {"--from 100 --to 90", "--from"},
-             {"--to 200", "0..180"},
-             {"--step 0.001", "at most 3601"},
-             {"--view nosuch", "no such view"}}) {
+    for (const auto& [args, expect] :
+         std::vector<std::pair<std::string, std::string>>{{"--methods lispsm,nosuch", "unknown warp method 'nosuch'"},
+                                                          {"--methods lispsm,lispsm", "given twice"},
+                                                          {"--step 0", "--step"},
+                                                          {"--step -2", "--step"},
+                                                          {"--from 100 --to 90", "--from"},
+                                                          {"--to 200", "0..180"},
+                                                          {"--step 0.001", "at most 3601"},
+                                                          {"--view nosuch", "no such view"}}) {
         const CommandResult r = run("sweep gamma --backend osmesa --scene " + kScene + " " + args + out);
         EXPECT_NE(r.exitCode, 0) << args;
         EXPECT_NE(r.output.find(expect), std::string::npos) << args << ": " << r.output;
@@ -198,18 +206,22 @@ TEST(SweepGamma, BadInputIsAOneLineError) {
     const CommandResult noPath = run("sweep path --backend osmesa --scene " + kScene + " --path nosuch" + out);
     EXPECT_NE(noPath.exitCode, 0);
     EXPECT_NE(noPath.output.find("available: grazing_walk, sun_arc"), std::string::npos) << noPath.output;
-    const CommandResult frames = run("sweep path --backend osmesa --scene " + kScene + " --path sun_arc --frames 0" + out);
+    const CommandResult frames =
+        run("sweep path --backend osmesa --scene " + kScene + " --path sun_arc --frames 0" + out);
     EXPECT_NE(frames.exitCode, 0);
     EXPECT_NE(frames.output.find("--frames"), std::string::npos) << frames.output;
-    EXPECT_NE(run("sweep path --backend osmesa --scene plane --path x" + out).exitCode, 0) << "built-in scenes have no paths";
+    EXPECT_NE(run("sweep path --backend osmesa --scene plane --path x" + out).exitCode, 0)
+        << "built-in scenes have no paths";
 }
 
 // A short walk at small γ with three log splits: every frame has seams on screen, flicker is a
 // fraction, the first frame has none (nothing to compare with), and the light stays at γ ≈ 6°.
 TEST(SweepPath, ShortWalkRecordsFlickerAndSeams) {
     const fs::path dir = freshDir("sweep_path");
-    const CommandResult r = run("sweep path " + kSmall + "--path grazing_walk --frames 4 --set splits.count=3 "
-                                "--set splits.scheme=log --set warp.method=glispsm --out " + dir.string());
+    const CommandResult r = run("sweep path " + kSmall +
+                                "--path grazing_walk --frames 4 --set splits.count=3 "
+                                "--set splits.scheme=log --set warp.method=glispsm --out " +
+                                dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("summary: frames 4"), std::string::npos) << r.output;
     const auto rows = readCsv(dir / "path.csv");

@@ -92,7 +92,7 @@ TEST(Techniques, EveryWarpBiasAndFilterRendersWithoutGlError) {
 TEST(Techniques, BiasRemovesAcneUnderGrazingLight) {
     Scene scene = makePlaneScene();
     scene.camera.eye = {22.f, 4.f, 22.f};
-    scene.camera.target = {32.f, 0.f, 32.f};   // a corner no pole shadow reaches
+    scene.camera.target = {32.f, 0.f, 32.f};       // a corner no pole shadow reaches
     scene.light.direction = {-1.f, -0.2f, -0.15f}; // about 11° above the horizon, shadows go to −x
     Bench b(scene);
     const auto acne = [&](BiasType type) {

@@ -44,7 +44,8 @@ TEST(Warp, GmnprReferenceValues) {
 TEST(Warp, ContinuityAtTheSwitchingAngles) {
     const double gLim = gammaLimit(n, f, phi);
     for (auto falloff : {GlispsmFalloff::Eq18, GlispsmFalloff::Eq17})
-        EXPECT_NEAR(nPrimeGlispsm(n, f, phi, gLim - 1e-9, falloff), nPrimeGlispsm(n, f, phi, gLim + 1e-9, falloff), 1e-6);
+        EXPECT_NEAR(nPrimeGlispsm(n, f, phi, gLim - 1e-9, falloff), nPrimeGlispsm(n, f, phi, gLim + 1e-9, falloff),
+                    1e-6);
     EXPECT_NEAR(lambdaGmnpr(n, f, phi, phi - 1e-9), lambdaGmnpr(n, f, phi, phi + 1e-9), 1e-6);
     EXPECT_NEAR(nPrimeGmnpr(n, f, phi, phi - 1e-9), nPrimeGmnpr(n, f, phi, phi + 1e-9), 1e-6);
     EXPECT_NEAR(warpDepthRange(n, f, phi, phi - 1e-9), warpDepthRange(n, f, phi, phi + 1e-9), 1e-6);

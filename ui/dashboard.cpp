@@ -1,9 +1,9 @@
 #include "dashboard.h"
 
-#include "widget_map.h"
+#include "geometry/analysis/view_images.h"
 #include "geometry/io/preset.h"
 #include "geometry/shadow/shadow_plan.h"
-#include "geometry/analysis/view_images.h"
+#include "widget_map.h"
 
 #include <imgui.h>
 
@@ -78,12 +78,12 @@ Rect contentArea(const Rect& panel, float header, float pad) noexcept {
 }
 
 /// Exact text of the values a frame depends on, so a change anywhere re-inspects.
-std::string frameKey(const geometry::shadow::ShadowSettings& s, const geometry::scene::Scene& scene, geometry::shadow::Viewport size,
-                     bool truth, int generation) {
+std::string frameKey(const geometry::shadow::ShadowSettings& s, const geometry::scene::Scene& scene,
+                     geometry::shadow::Viewport size, bool truth, int generation) {
     std::ostringstream k;
-    k << geometry::io::settingsToJson(s).dump() << '|' << std::hexfloat << scene.camera.eye.x << ',' << scene.camera.eye.y
-      << ',' << scene.camera.eye.z << ',' << scene.camera.target.x << ',' << scene.camera.target.y << ','
-      << scene.camera.target.z << ',' << scene.light.direction.x << ',' << scene.light.direction.y << ','
+    k << geometry::io::settingsToJson(s).dump() << '|' << std::hexfloat << scene.camera.eye.x << ','
+      << scene.camera.eye.y << ',' << scene.camera.eye.z << ',' << scene.camera.target.x << ',' << scene.camera.target.y
+      << ',' << scene.camera.target.z << ',' << scene.light.direction.x << ',' << scene.light.direction.y << ','
       << scene.light.direction.z << '|' << size.width << 'x' << size.height << '|' << truth << '|' << generation;
     return k.str();
 }
@@ -150,7 +150,8 @@ void Dashboard::renderViews(const FrameInput& input) {
     scene.light.direction = state_.sun.direction();
 
     const bool sideBySide = state_.views.compare == CompareMode::SideBySide;
-    geometry::shadow::Viewport size{int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w), int(eyeArea_.h)};
+    geometry::shadow::Viewport size{int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w),
+                                    int(eyeArea_.h)};
     size.width = std::max(size.width, 16);
     size.height = std::max(size.height, 16);
     const int sides = comparing() ? 2 : 1;
@@ -159,8 +160,10 @@ void Dashboard::renderViews(const FrameInput& input) {
         if (!side.renderer) side.renderer = std::make_unique<renderer::Renderer>(scene);
         try {
             const auto p0 = std::chrono::steady_clock::now();
-            side.plan = geometry::shadow::planShadows(state_.settings[i], scene.bounds(), scene.camera, scene.light, size);
-            side.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - p0).count();
+            side.plan =
+                geometry::shadow::planShadows(state_.settings[i], scene.bounds(), scene.camera, scene.light, size);
+            side.planMicroseconds =
+                std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - p0).count();
             renderer::ViewOptions v;
             v.lightViewSize = lightViewSize_;
             v.lightSplit = std::clamp(state_.views.lightSplit, 0, std::max(0, int(side.plan.splits.size()) - 1));
@@ -183,7 +186,8 @@ void Dashboard::updateInspection() {
             frameKey(state_.settings[i], scene_.file.scene, side.size, state_.views.truth, sceneGeneration_);
         if (key == side.inspectedKey && side.inspection) continue;
         try {
-            side.inspection = renderer::inspect(*side.renderer, side.plan, state_.views.truth ? scene_.truth.get() : nullptr);
+            side.inspection =
+                renderer::inspect(*side.renderer, side.plan, state_.views.truth ? scene_.truth.get() : nullptr);
             side.eye = side.renderer->readEye();
             side.inspectedKey = key;
         } catch (const std::exception& e) {
@@ -211,10 +215,13 @@ void Dashboard::updateHeatmap() {
             switch (v.heatmap) {
             case HeatmapKind::Aliasing: img = geometry::analysis::aliasingView(in, side.eye, v.heatmapBlend); break;
             case HeatmapKind::Truth:
-                img = in.occluded ? geometry::analysis::truthView(in, side.eye, v.heatmapBlend) : placeholder(in.width, in.height);
+                img = in.occluded ? geometry::analysis::truthView(in, side.eye, v.heatmapBlend)
+                                  : placeholder(in.width, in.height);
                 break;
             case HeatmapKind::Splits: img = geometry::analysis::splitsView(side.eye, in, side.plan); break;
-            case HeatmapKind::Texels: img = geometry::analysis::texelsView(side.eye, in, std::max(1, v.texelGrid)); break;
+            case HeatmapKind::Texels:
+                img = geometry::analysis::texelsView(side.eye, in, std::max(1, v.texelGrid));
+                break;
             case HeatmapKind::Difference:
                 img = comparing() && sides_[0].inspection && sides_[1].inspection &&
                               sides_[0].inspection->width == sides_[1].inspection->width &&

@@ -7,12 +7,12 @@
 // GLFW window (viewer.cpp) and headless into an image (dashboard_headless.cpp): same layout and
 // same pixels for the same state and size.
 #include "dashboard_state.h"
-#include "scene_loader.h"
-#include "ui/charts/tradeoff_chart.h"
 #include "renderer/image.h"
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
 #include "renderer/texture.h"
+#include "scene_loader.h"
+#include "ui/charts/tradeoff_chart.h"
 
 #include <array>
 #include <filesystem>
@@ -28,22 +28,22 @@ struct DashboardOptions {
     std::vector<std::string> sceneChoices;  // built-in names and scene files for the scene picker
     std::vector<std::string> presetChoices; // preset files for the preset picker
     float uiScale = 1.f;
-    std::string view;                       // the canonical view the scene was opened at, if any
+    std::string view; // the canonical view the scene was opened at, if any
 };
 
 /// What the window front end reads from its input system for a frame (the dashboard itself
 /// sees the mouse through ImGui).
 struct FrameInput {
-    bool screenshot = false;  // the screenshot key
-    glm::vec3 fly{0.f};       // WASD/QE while fly-looking: (right, up, forward), −1..1 each
+    bool screenshot = false; // the screenshot key
+    glm::vec3 fly{0.f};      // WASD/QE while fly-looking: (right, up, forward), −1..1 each
     float deltaSeconds = 1.f / 60.f;
 };
 
 /// One pixel's exact values (the pixel inspector).
 struct PixelProbe {
     ViewPanel panel = ViewPanel::Eye;
-    int side = 0;            // A or B
-    glm::ivec2 pixel{0};     // image pixel, x right, y down
+    int side = 0;        // A or B
+    glm::ivec2 pixel{0}; // image pixel, x right, y down
     // Eye and heatmap panels:
     bool receiver = false, sky = true;
     float viewDepth = 0, shadow = 1, m = 0, mapDepth = 0;
@@ -167,7 +167,7 @@ private:
     std::string viewChoice_;      // the canonical view last applied
     float targetGammaDeg_ = 30.f; // the "set γ" control
     int requestedTab_ = -1;
-    bool flyLooking_ = false;     // right mouse held on the eye view: WASD/QE fly
+    bool flyLooking_ = false; // right mouse held on the eye view: WASD/QE fly
 
     /// The Charts panel's trade-off sweep, one configuration per dashboard frame so the UI stays live.
     struct TradeoffSweep {

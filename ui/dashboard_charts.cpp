@@ -3,12 +3,12 @@
 // background of the live dashboard. The same chart descriptions as `curves` and `bench`.
 #include "dashboard.h"
 
-#include "ui/charts/analytic_charts.h"
+#include "geometry/io/preset.h"
 #include "renderer/measure.h"
 #include "ui/chart_image.h"
+#include "ui/charts/analytic_charts.h"
 #include "ui/charts/chart_imgui.h"
 #include "widget_map.h"
-#include "geometry/io/preset.h"
 
 #include <imgui.h>
 
@@ -21,8 +21,8 @@ namespace ui {
 
 namespace {
 
-charts::CurveParams curveParams(const geometry::scene::Camera& cam, const geometry::shadow::ShadowPlan& plan, const geometry::shadow::ShadowSettings& s,
-                        int screenHeight) {
+charts::CurveParams curveParams(const geometry::scene::Camera& cam, const geometry::shadow::ShadowPlan& plan,
+                                const geometry::shadow::ShadowSettings& s, int screenHeight) {
     charts::CurveParams p;
     p.near = cam.near;
     p.far = cam.far;
@@ -66,8 +66,8 @@ void Dashboard::exportChart(const charts::Chart& chart, const std::string& name)
 
 void Dashboard::drawAnalyticChart(int which) {
     const int side = shownSide();
-    const charts::CurveParams p =
-        curveParams(scene_.file.scene.camera, sides_[side].plan, state_.settings[side], std::max(1, sides_[side].size.height));
+    const charts::CurveParams p = curveParams(scene_.file.scene.camera, sides_[side].plan, state_.settings[side],
+                                              std::max(1, sides_[side].size.height));
     charts::Chart chart;
     const char* name = "chart";
     if (which == 2) {
@@ -83,8 +83,10 @@ void Dashboard::drawAnalyticChart(int which) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s — n %.3g, f %.4g, fov %.0f°, γ %.1f°, %d px / %d texels; hover for values; drag the bar "
                         "above to enlarge",
-                        which == 0 ? "n'(γ) per warp" : which == 1 ? "λ(θ) per warp" : "m_z(z) per warp", p.near, p.far,
-                        p.fovYDeg, p.gammaDeg, p.screenRes, p.mapRes);
+                        which == 0   ? "n'(γ) per warp"
+                        : which == 1 ? "λ(θ) per warp"
+                                     : "m_z(z) per warp",
+                        p.near, p.far, p.fovYDeg, p.gammaDeg, p.screenRes, p.mapRes);
     float storage[2];
     const float* mouse = nullptr;
     const Rect area = chartArea("chart_area", &mouse, storage);
@@ -101,7 +103,8 @@ void Dashboard::drawTradeoffTab() {
             ImGui::SetTooltip("Times every preset in resources/presets and the current settings on this view (3 frames "
                               "each, GPU median) and measures aliasing p95; runs between dashboard frames");
     } else {
-        ImGui::ProgressBar(float(s.next) / float(std::max<size_t>(s.configs.size(), 1)), ImVec2(ImGui::GetFontSize() * 12, 0));
+        ImGui::ProgressBar(float(s.next) / float(std::max<size_t>(s.configs.size(), 1)),
+                           ImVec2(ImGui::GetFontSize() * 12, 0));
         ImGui::SameLine();
         if (ImGui::SmallButton("Cancel")) s.running = false;
         widgetMapRecord("tradeoff.cancel");
@@ -148,7 +151,8 @@ void Dashboard::stepTradeoffSweep() {
         s.generation = sceneGeneration_;
     }
     const auto& cfg = s.configs[s.next++];
-    const geometry::shadow::Viewport size = sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360};
+    const geometry::shadow::Viewport size =
+        sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360};
     try {
         const renderer::Measurement m = renderer::measure(*s.renderer, cfg.settings, scene.bounds(), scene.camera,
                                                           scene.light, size, {.warmup = 1, .frames = 3});

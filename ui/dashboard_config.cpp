@@ -59,7 +59,8 @@ double number(const json& obj, const char* key, const std::string& path, double 
     if (!v) return current;
     if (!v->is_number()) bad(path + key, "expected a number");
     const double d = v->get<double>();
-    if (!std::isfinite(d) || d < lo || d > hi) bad(path + key, "outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    if (!std::isfinite(d) || d < lo || d > hi)
+        bad(path + key, "outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return d;
 }
 

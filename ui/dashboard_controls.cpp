@@ -2,10 +2,10 @@
 // declaration, view options, A/B compare, presets, screenshot.
 #include "dashboard.h"
 
+#include "geometry/io/preset.h"
+#include "geometry/scene/light_angle.h"
 #include "settings_panel.h"
 #include "widget_map.h"
-#include "geometry/scene/light_angle.h"
-#include "geometry/io/preset.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -17,7 +17,9 @@ namespace ui {
 
 namespace {
 
-bool inGroup(std::string_view key, const void* ctx) { return settingGroup(key) == *static_cast<const std::string*>(ctx); }
+bool inGroup(std::string_view key, const void* ctx) {
+    return settingGroup(key) == *static_cast<const std::string*>(ctx);
+}
 
 void help(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
@@ -100,7 +102,8 @@ void Dashboard::drawSceneGroup() {
         ImGui::ProgressBar(loader_.progress(), ImVec2(-1, 0), (loader_.stage() + "…").c_str());
         widgetMapRecord("scene.progress");
     }
-    if (!scene_.file.views.empty() && ImGui::BeginCombo("view", viewChoice_.empty() ? "(choose)" : viewChoice_.c_str())) {
+    if (!scene_.file.views.empty() &&
+        ImGui::BeginCombo("view", viewChoice_.empty() ? "(choose)" : viewChoice_.c_str())) {
         for (const auto& [name, view] : scene_.file.views) {
             if (ImGui::Selectable(name.c_str(), name == viewChoice_)) {
                 viewChoice_ = name;

@@ -17,7 +17,9 @@ namespace ui {
 
 struct Rect {
     float x = 0, y = 0, w = 0, h = 0;
-    [[nodiscard]] bool contains(float px, float py) const noexcept { return px >= x && py >= y && px < x + w && py < y + h; }
+    [[nodiscard]] bool contains(float px, float py) const noexcept {
+        return px >= x && py >= y && px < x + w && py < y + h;
+    }
     [[nodiscard]] float right() const noexcept { return x + w; }
     [[nodiscard]] float bottom() const noexcept { return y + h; }
 };

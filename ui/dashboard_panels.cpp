@@ -84,7 +84,8 @@ std::optional<glm::ivec2> Dashboard::imageArea(ViewPanel panel, GLuint texture, 
     }
     if (cameraControls) flyLooking_ = active && ImGui::IsMouseDown(ImGuiMouseButton_Right);
     if (active && (delta.x != 0.f || delta.y != 0.f)) {
-        const bool left = ImGui::IsMouseDown(ImGuiMouseButton_Left), middle = ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+        const bool left = ImGui::IsMouseDown(ImGuiMouseButton_Left),
+                   middle = ImGui::IsMouseDown(ImGuiMouseButton_Middle);
         if (cameraControls) {
             if (left && !io.KeyShift && !io.KeyCtrl) state_.camera.rotate(delta.x, delta.y);
             else if (middle || (left && io.KeyShift))
@@ -146,8 +147,9 @@ void Dashboard::probeLight(glm::ivec2 px) {
 void Dashboard::drawEyePanel() {
     if (panelBegin("eye_panel", rects_.eye)) {
         const CompareMode mode = state_.views.compare;
-        ImGui::TextUnformatted(mode == CompareMode::Off ? "Eye view" : mode == CompareMode::SideBySide ? "Eye view: A | B"
-                                                                                                       : "Eye view: A / B split");
+        ImGui::TextUnformatted(mode == CompareMode::Off          ? "Eye view"
+                               : mode == CompareMode::SideBySide ? "Eye view: A | B"
+                                                                 : "Eye view: A / B split");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Drag: orbit. Shift+drag or middle-drag: pan. Right-drag: look, with WASD/QE to fly.\n"
                               "Wheel: dolly. Ctrl+wheel: zoom the image around the cursor, ctrl+drag: pan it.\n"
@@ -162,17 +164,18 @@ void Dashboard::drawEyePanel() {
             const Rect right{eyeArea_.x + half + 2.f, eyeArea_.y, half, eyeArea_.h};
             for (int i = 0; i < 2; ++i) {
                 const Rect& r = i == 0 ? left : right;
-                const auto px = imageArea(ViewPanel::Eye, sides_[i].renderer->eyeTexture(), size.width, size.height, r, true,
-                                          i == 0 ? "eye_image" : "eye_image_b");
-                ImGui::GetWindowDrawList()->AddText(ImVec2(r.x + 6, r.y + 4), IM_COL32(255, 255, 255, 230), i == 0 ? "A" : "B");
+                const auto px = imageArea(ViewPanel::Eye, sides_[i].renderer->eyeTexture(), size.width, size.height, r,
+                                          true, i == 0 ? "eye_image" : "eye_image_b");
+                ImGui::GetWindowDrawList()->AddText(ImVec2(r.x + 6, r.y + 4), IM_COL32(255, 255, 255, 230),
+                                                    i == 0 ? "A" : "B");
                 if (px) {
                     probeEye(i, *px, ViewPanel::Eye);
                     if (clicked) pinned_ = hovered_;
                 }
             }
         } else {
-            const auto px = imageArea(ViewPanel::Eye, sides_[0].renderer->eyeTexture(), size.width, size.height, eyeArea_,
-                                      true, "eye_image");
+            const auto px = imageArea(ViewPanel::Eye, sides_[0].renderer->eyeTexture(), size.width, size.height,
+                                      eyeArea_, true, "eye_image");
             if (mode == CompareMode::Split && sides_[1].renderer) {
                 // B over the right part, a draggable divider between them.
                 ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -180,7 +183,8 @@ void Dashboard::drawEyePanel() {
                 float& s = state_.views.splitPosition;
                 drawImage(dl, sides_[1].renderer->eyeTexture(), place, s, 1.f);
                 const float span = std::max(place.uvMax.x - place.uvMin.x, 1e-6f);
-                const float x = place.screen.x + (std::clamp(s, place.uvMin.x, place.uvMax.x) - place.uvMin.x) / span * place.screen.w;
+                const float x = place.screen.x +
+                                (std::clamp(s, place.uvMin.x, place.uvMax.x) - place.uvMin.x) / span * place.screen.w;
                 dl->AddLine(ImVec2(x, eyeArea_.y), ImVec2(x, eyeArea_.bottom()), IM_COL32(255, 255, 255, 220), 2.f);
                 dl->AddText(ImVec2(x - 18, eyeArea_.y + 4), IM_COL32(255, 255, 255, 230), "A");
                 dl->AddText(ImVec2(x + 8, eyeArea_.y + 4), IM_COL32(255, 255, 255, 230), "B");
@@ -190,11 +194,12 @@ void Dashboard::drawEyePanel() {
                 if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
                 if (ImGui::IsItemActive() && place.screen.w > 0.f)
                     s = std::clamp(s + ImGui::GetIO().MouseDelta.x / place.screen.w * span, 0.f, 1.f);
-                dl->AddRectFilled(ImVec2(x - 4, eyeArea_.y + eyeArea_.h * 0.45f), ImVec2(x + 4, eyeArea_.y + eyeArea_.h * 0.55f),
-                                  IM_COL32(255, 255, 255, 200), 2.f);
+                dl->AddRectFilled(ImVec2(x - 4, eyeArea_.y + eyeArea_.h * 0.45f),
+                                  ImVec2(x + 4, eyeArea_.y + eyeArea_.h * 0.55f), IM_COL32(255, 255, 255, 200), 2.f);
             }
             if (px) {
-                const bool onB = mode == CompareMode::Split && float(px->x) >= state_.views.splitPosition * float(size.width);
+                const bool onB =
+                    mode == CompareMode::Split && float(px->x) >= state_.views.splitPosition * float(size.width);
                 probeEye(onB ? 1 : 0, *px, ViewPanel::Eye);
                 if (clicked) pinned_ = hovered_;
             }
@@ -218,12 +223,13 @@ void Dashboard::drawLightPanel() {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Which split's shadow map the light view shows");
         zoomButtons(state_.imageViews[int(ViewPanel::Light)], "light");
         if (side.renderer) {
-            const GLuint tex = state_.views.unwarped ? side.renderer->unwarpedLightTexture() : side.renderer->lightTexture();
-            const auto px = imageArea(ViewPanel::Light, tex, lightViewSize_, lightViewSize_, lightArea_, false, "light_image");
+            const GLuint tex =
+                state_.views.unwarped ? side.renderer->unwarpedLightTexture() : side.renderer->lightTexture();
+            const auto px =
+                imageArea(ViewPanel::Light, tex, lightViewSize_, lightViewSize_, lightArea_, false, "light_image");
             if (px) {
                 probeLight(*px);
-                if (clickedWithoutDrag())
-                    pinned_ = hovered_;
+                if (clickedWithoutDrag()) pinned_ = hovered_;
             }
         }
     }
@@ -238,7 +244,8 @@ void Dashboard::drawHeatmapPanel() {
         if (ImGui::BeginCombo("##heatmap", std::string(heatmapName(state_.views.heatmap)).c_str())) {
             for (int i = 0; i < int(HeatmapKind::Count); ++i) {
                 const std::string name(heatmapName(HeatmapKind(i)));
-                if (ImGui::Selectable(name.c_str(), int(state_.views.heatmap) == i)) state_.views.heatmap = HeatmapKind(i);
+                if (ImGui::Selectable(name.c_str(), int(state_.views.heatmap) == i))
+                    state_.views.heatmap = HeatmapKind(i);
                 widgetMapRecord("views.heatmap=" + name);
             }
             ImGui::EndCombo();
@@ -254,16 +261,16 @@ void Dashboard::drawHeatmapPanel() {
         const bool needsTruth = state_.views.heatmap == HeatmapKind::Truth && !state_.views.truth;
         const bool needsCompare = state_.views.heatmap == HeatmapKind::Difference && !comparing();
         if (needsTruth || needsCompare)
-            ImGui::GetWindowDrawList()->AddText(ImVec2(heatmapArea_.x + 8, heatmapArea_.y + 8), IM_COL32(255, 255, 255, 255),
-                                                needsTruth ? "turn on ground truth (Views)" : "turn on A/B compare (Views)");
+            ImGui::GetWindowDrawList()->AddText(
+                ImVec2(heatmapArea_.x + 8, heatmapArea_.y + 8), IM_COL32(255, 255, 255, 255),
+                needsTruth ? "turn on ground truth (Views)" : "turn on A/B compare (Views)");
         if (px) {
             probeEye(side, *px, ViewPanel::Heatmap);
-            if (clickedWithoutDrag())
-                pinned_ = hovered_;
+            if (clickedWithoutDrag()) pinned_ = hovered_;
         }
         if (pinned_ && pinned_->panel != ViewPanel::Light)
-            markPixel(ImGui::GetWindowDrawList(), state_.imageViews[int(ViewPanel::Heatmap)], heatmapArea_, heatmap_.width(),
-                      heatmap_.height(), pinned_->pixel);
+            markPixel(ImGui::GetWindowDrawList(), state_.imageViews[int(ViewPanel::Heatmap)], heatmapArea_,
+                      heatmap_.width(), heatmap_.height(), pinned_->pixel);
     }
     ImGui::EndChild();
 }
@@ -316,7 +323,8 @@ void Dashboard::drawStatusBar() {
     ImGui::SetCursorScreenPos(ImVec2(r.x + 6.f, r.y + std::max(0.f, (r.h - ImGui::GetTextLineHeight()) * 0.5f)));
     std::string text = hovered_ ? describeProbe(*hovered_) : std::string("hover a view for exact values, click to pin");
     if (loader_.busy())
-        text = "loading " + loader_.source() + ": " + loader_.stage() + " " + std::to_string(int(loader_.progress() * 100.f)) + "%";
+        text = "loading " + loader_.source() + ": " + loader_.stage() + " " +
+               std::to_string(int(loader_.progress() * 100.f)) + "%";
     if (!status_.empty()) text += "   |   " + status_;
     ImGui::TextUnformatted(text.c_str());
     widgetMapStatus(status_);

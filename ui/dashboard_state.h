@@ -3,9 +3,9 @@
 // comparison), the view options, the camera and light, the layout. The GUI edits it, the headless
 // dashboard takes it as given, and the config file persists part of it.
 #include "dashboard_layout.h"
+#include "geometry/shadow/settings.h"
 #include "image_view.h"
 #include "orbit_camera.h"
-#include "geometry/shadow/settings.h"
 
 #include <array>
 #include <string_view>
@@ -22,24 +22,24 @@ enum class ViewPanel { Eye, Light, Heatmap, Count };
 
 /// What the views show (the dashboard's "Views" group).
 struct ViewSettings {
-    int lightSplit = 0;           // which split's map the light view shows
-    bool overlays = true;         // frusta, B, P drawn over the light view
-    bool unwarped = false;        // the light view without the warp (the same map's texels)
+    int lightSplit = 0;    // which split's map the light view shows
+    bool overlays = true;  // frusta, B, P drawn over the light view
+    bool unwarped = false; // the light view without the warp (the same map's texels)
     HeatmapKind heatmap = HeatmapKind::Aliasing;
-    float heatmapBlend = 0.f;     // eye image under the heatmap: 0 heatmap alone … 1 opaque
-    int texelGrid = 4;            // texels heatmap: a line every N texels
-    bool truth = true;            // ray-traced ground truth for the statistics and the truth view
+    float heatmapBlend = 0.f; // eye image under the heatmap: 0 heatmap alone … 1 opaque
+    int texelGrid = 4;        // texels heatmap: a line every N texels
+    bool truth = true;        // ray-traced ground truth for the statistics and the truth view
     CompareMode compare = CompareMode::Off;
-    float splitPosition = 0.5f;   // split-screen compare: where B starts, 0..1 of the eye view
+    float splitPosition = 0.5f; // split-screen compare: where B starts, 0..1 of the eye view
 };
 
 struct DashboardState {
     std::array<geometry::shadow::ShadowSettings, 2> settings{}; // A, B
-    int editing = 0;                                     // which set the controls edit (0 = A)
+    int editing = 0;                                            // which set the controls edit (0 = A)
     ViewSettings views;
     OrbitCamera camera;
     SunAngles sun;
-    float flySpeed = 10.f;                               // scene units per second in fly mode
+    float flySpeed = 10.f; // scene units per second in fly mode
     LayoutFractions layout;
     std::array<ImageView, static_cast<int>(ViewPanel::Count)> imageViews{};
 };

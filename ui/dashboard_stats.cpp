@@ -60,13 +60,15 @@ void Dashboard::drawStatsTable() {
         const int sides = comparing() ? 2 : 1;
         const float inspectorW = std::min(ImGui::GetContentRegionAvail().x * 0.38f, 30.f * ImGui::GetFontSize());
         ImGui::BeginChild("stats_table", ImVec2(ImGui::GetContentRegionAvail().x - inspectorW, 0), false);
-        const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+        const ImGuiTableFlags flags =
+            ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
         if (ImGui::BeginTable("stats_table", 1 + sides, flags)) {
             ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch, 1.4f);
             ImGui::TableSetupColumn(sides == 2 ? "A" : "value", ImGuiTableColumnFlags_WidthStretch, 1.f);
             if (sides == 2) ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_WidthStretch, 1.f);
             ImGui::TableHeadersRow();
-            const auto row = [&](const char* name, const std::function<std::string(int)>& value, const char* tip = nullptr) {
+            const auto row = [&](const char* name, const std::function<std::string(int)>& value,
+                                 const char* tip = nullptr) {
                 ImGui::TableNextRow();
                 ImGui::TableSetColumnIndex(0);
                 ImGui::TextUnformatted(name);
@@ -88,25 +90,37 @@ void Dashboard::drawStatsTable() {
             row("γ / light–view angle", [&](int i) {
                 return fmt("%.2f°", sides_[i].plan.gammaDeg) + " / " + fmt("%.1f°", sides_[i].plan.lightViewAngleDeg);
             });
-            row("GPU shadow pass", gpu(renderer::Pass::Shadow), "GPU time of the shadow maps (all splits), from a few frames ago");
+            row("GPU shadow pass", gpu(renderer::Pass::Shadow),
+                "GPU time of the shadow maps (all splits), from a few frames ago");
             row("GPU eye pass", gpu(renderer::Pass::Eye), "GPU time of the eye view with filtering and blur");
-            row("GPU light views", gpu(renderer::Pass::LightView), "GPU time of the inspection views (not part of the shadowing)");
-            row("plan (CPU)", [&](int i) { return fmt("%.1f µs", sides_[i].planMicroseconds); }, "geometry::planShadows");
+            row("GPU light views", gpu(renderer::Pass::LightView),
+                "GPU time of the inspection views (not part of the shadowing)");
+            row(
+                "plan (CPU)", [&](int i) { return fmt("%.1f µs", sides_[i].planMicroseconds); },
+                "geometry::planShadows");
             row("dashboard frame (CPU)", [&](int) { return fmt("%.1f ms", cpuFrameMs_); });
-            row("triangles shadow / eye", [&](int i) {
-                const auto* s = stat(i);
-                return s ? std::to_string(s->shadowTriangles) + " / " + std::to_string(s->eyeTriangles) : std::string("–");
-            }, "Triangles submitted per pass after culling (shadow: all splits)");
+            row(
+                "triangles shadow / eye",
+                [&](int i) {
+                    const auto* s = stat(i);
+                    return s ? std::to_string(s->shadowTriangles) + " / " + std::to_string(s->eyeTriangles)
+                             : std::string("–");
+                },
+                "Triangles submitted per pass after culling (shadow: all splits)");
             row("shadow map", [&](int i) {
                 const auto* s = stat(i);
                 return s ? std::to_string(s->shadowResolution) + "² × " + std::to_string(sides_[i].plan.splits.size())
                          : std::string("–");
             });
             const auto insp = [&](int i) { return inspection(i); };
-            row("m mean / p50", [&](int i) {
-                const auto* in = insp(i);
-                return in ? fmt("%.3g", in->aliasing.mean) + " / " + fmt("%.3g", in->aliasing.p50) : std::string("–");
-            }, "Aliasing error m (screen pixels per shadow texel, docs/design.md §4) over receiver pixels");
+            row(
+                "m mean / p50",
+                [&](int i) {
+                    const auto* in = insp(i);
+                    return in ? fmt("%.3g", in->aliasing.mean) + " / " + fmt("%.3g", in->aliasing.p50)
+                              : std::string("–");
+                },
+                "Aliasing error m (screen pixels per shadow texel, docs/design.md §4) over receiver pixels");
             row("m p95 / max", [&](int i) {
                 const auto* in = insp(i);
                 return in ? fmt("%.3g", in->aliasing.p95) + " / " + fmt("%.3g", in->aliasing.max) : std::string("–");
@@ -115,18 +129,25 @@ void Dashboard::drawStatsTable() {
                 const auto* in = insp(i);
                 return in ? fmt("%.1f %%", 100.0 * in->aliasing.undersampled) : std::string("–");
             });
-            row("false shadow / false lit", [&](int i) {
-                const auto* in = insp(i);
-                if (!in || !in->truth) return std::string(state_.views.truth ? "–" : "truth off");
-                return fmt("%.2f %%", 100.0 * in->truth->falseShadow) + " / " + fmt("%.2f %%", 100.0 * in->truth->falseLit);
-            }, "Against ray-traced ground truth: lit pixels shadowed (acne) / shadowed pixels lit (leaks)");
-            row("texel utilization", [&](int i) {
-                const auto* in = insp(i);
-                if (!in) return std::string("–");
-                std::string out;
-                for (double u : in->utilization) out += (out.empty() ? "" : " ") + fmt("%.1f%%", 100.0 * u);
-                return out;
-            }, "Per split: the share of the map's texels that some visible receiver samples");
+            row(
+                "false shadow / false lit",
+                [&](int i) {
+                    const auto* in = insp(i);
+                    if (!in || !in->truth) return std::string(state_.views.truth ? "–" : "truth off");
+                    return fmt("%.2f %%", 100.0 * in->truth->falseShadow) + " / " +
+                           fmt("%.2f %%", 100.0 * in->truth->falseLit);
+                },
+                "Against ray-traced ground truth: lit pixels shadowed (acne) / shadowed pixels lit (leaks)");
+            row(
+                "texel utilization",
+                [&](int i) {
+                    const auto* in = insp(i);
+                    if (!in) return std::string("–");
+                    std::string out;
+                    for (double u : in->utilization) out += (out.empty() ? "" : " ") + fmt("%.1f%%", 100.0 * u);
+                    return out;
+                },
+                "Per split: the share of the map's texels that some visible receiver samples");
             row("splits [n, f] n'", [&](int i) {
                 std::string out;
                 for (const auto& sp : sides_[i].plan.splits)

@@ -7,7 +7,8 @@ namespace ui {
 
 namespace {
 bool usable(const Rect& panel, int width, int height) noexcept {
-    return width > 0 && height > 0 && panel.w > 0.f && panel.h > 0.f && std::isfinite(panel.w) && std::isfinite(panel.h);
+    return width > 0 && height > 0 && panel.w > 0.f && panel.h > 0.f && std::isfinite(panel.w) &&
+           std::isfinite(panel.h);
 }
 float scaleOf(const ImageView& v, const Rect& panel, int width, int height) noexcept {
     if (v.zoom > 0.f && std::isfinite(v.zoom)) return std::clamp(v.zoom, kMinZoom, kMaxZoom);
@@ -44,7 +45,8 @@ ImagePlacement placeImage(const ImageView& view, const Rect& panel, int width, i
     return p;
 }
 
-std::optional<glm::ivec2> pixelAt(const ImageView& view, const Rect& panel, int width, int height, glm::vec2 p) noexcept {
+std::optional<glm::ivec2> pixelAt(const ImageView& view, const Rect& panel, int width, int height,
+                                  glm::vec2 p) noexcept {
     const ImagePlacement place = placeImage(view, panel, width, height);
     if (!place.screen.contains(p.x, p.y) || !std::isfinite(p.x) || !std::isfinite(p.y)) return std::nullopt;
     const glm::vec2 uv = place.uvMin + (p - glm::vec2(place.screen.x, place.screen.y)) /

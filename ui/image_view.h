@@ -11,8 +11,8 @@
 namespace ui {
 
 struct ImageView {
-    float zoom = 0.f;            // screen pixels per image pixel; 0 = fit the panel
-    glm::vec2 centre{0.5f};      // the image point (0..1, top-left origin) shown at the panel centre
+    float zoom = 0.f;       // screen pixels per image pixel; 0 = fit the panel
+    glm::vec2 centre{0.5f}; // the image point (0..1, top-left origin) shown at the panel centre
 };
 
 /// Where an image lands: the on-screen rectangle (clipped to the panel) and the image's
@@ -39,7 +39,8 @@ inline constexpr float kMaxZoom = 64.f;
 [[nodiscard]] ImageView zoomAround(const ImageView& view, const Rect& panel, int width, int height, glm::vec2 cursor,
                                    float factor) noexcept;
 /// Moves the image by `delta` screen pixels (a drag).
-[[nodiscard]] ImageView panBy(const ImageView& view, const Rect& panel, int width, int height, glm::vec2 delta) noexcept;
+[[nodiscard]] ImageView panBy(const ImageView& view, const Rect& panel, int width, int height,
+                              glm::vec2 delta) noexcept;
 /// One image pixel per screen pixel, keeping the centre.
 [[nodiscard]] ImageView oneToOne(const ImageView& view) noexcept;
 

@@ -78,8 +78,7 @@ void ImGuiScope::applyStyleAndFonts() {
     if (bytes > 0)
         io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(shadowscope_font_begin), bytes,
                                        std::round(14.f * scale_), &config, ranges);
-    else
-        io.Fonts->AddFontDefault();
+    else io.Fonts->AddFontDefault();
 }
 
 } // namespace ui

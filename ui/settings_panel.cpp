@@ -5,9 +5,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
-#include <cmath>
 #include <string>
 
 namespace ui {
@@ -64,7 +64,8 @@ bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGr
         // A value typed into a slider's text field (ctrl+click) counts once, when the field closes
         // with an edit: ImGui reports every keystroke, and "9" on the way to "999" must not apply.
         static std::map<std::string, double> typed;
-        if (ImGui::IsItemActive() && ImGui::GetIO().WantTextInput && (info.kind == Kind::Int || info.kind == Kind::Float)) {
+        if (ImGui::IsItemActive() && ImGui::GetIO().WantTextInput &&
+            (info.kind == Kind::Int || info.kind == Kind::Float)) {
             if (edited) typed[label] = value;
             edited = false;
         } else if (const auto it = typed.find(label); it != typed.end()) {
@@ -77,7 +78,8 @@ bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGr
             typed.erase(it);
         }
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s\n%s (ctrl+click to type a value)", std::string(info.help).c_str(), info.rangeText().c_str());
+            ImGui::SetTooltip("%s\n%s (ctrl+click to type a value)", std::string(info.help).c_str(),
+                              info.rangeText().c_str());
         if (!edited) continue;
         if (std::isfinite(value) && value >= info.min && value <= info.max) {
             info.set(settings, value);
@@ -92,6 +94,8 @@ bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGr
     return changed;
 }
 
-bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings) { return drawSettingsWidgets(settings, nullptr, nullptr, nullptr); }
+bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings) {
+    return drawSettingsWidgets(settings, nullptr, nullptr, nullptr);
+}
 
 } // namespace ui

@@ -11,8 +11,8 @@ namespace ui {
 /// Draws the widgets of every key for which `inGroup(key)` holds. Returns true when a value
 /// changed. A typed value outside the key's range (or NaN) is refused: the setting keeps its
 /// value and `error` says why, in one line.
-bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGroup)(std::string_view key, const void* ctx),
-                         const void* ctx, std::string* error);
+bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings,
+                         bool (*inGroup)(std::string_view key, const void* ctx), const void* ctx, std::string* error);
 
 /// Every key.
 bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings);

@@ -6,10 +6,10 @@
 #include "renderer/texture.h"
 
 #include <GLFW/glfw3.h>
-#include <nlohmann/json.hpp>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <csignal>
@@ -33,7 +33,8 @@ float contentScale(GLFWwindow* window) {
 /// WASD/QE as (right, up, forward).
 glm::vec3 flyKeys(GLFWwindow* w) {
     const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.f : 0.f; };
-    return {down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q), down(GLFW_KEY_W) - down(GLFW_KEY_S)};
+    return {down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
+            down(GLFW_KEY_W) - down(GLFW_KEY_S)};
 }
 
 } // namespace
@@ -44,9 +45,9 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
     state.sun = SunAngles::from(scene.file.scene.light.direction);
     WindowGeometry geometry;
     std::string startStatus;
-    const std::filesystem::path configPath =
-        !options.configPath.empty() ? options.configPath
-        : configDirectory().empty() ? std::filesystem::path() : configDirectory() / "dashboard.json";
+    const std::filesystem::path configPath = !options.configPath.empty() ? options.configPath
+                                             : configDirectory().empty() ? std::filesystem::path()
+                                                                         : configDirectory() / "dashboard.json";
     if (options.persist && !configPath.empty()) {
         if (auto error = loadDashboardConfig(configPath, state, geometry)) {
             // Keep the user's broken file next to the fresh one rather than overwriting it.
@@ -113,7 +114,8 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
         FrameInput input;
         input.deltaSeconds = std::chrono::duration<float>(now - last).count();
         last = now;
-        const bool ctrl = glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+        const bool ctrl =
+            glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
         if (ctrl && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
         const bool f12Down = glfwGetKey(w, GLFW_KEY_F12) == GLFW_PRESS;
         input.screenshot = f12Down && !f12WasDown;
@@ -138,11 +140,12 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
         const ImGuiIO& io = ImGui::GetIO();
         const DashboardState& st = dashboard.state();
         std::string key = dashboardToJson(st, geometry).dump() + dashboard.status();
-        for (float v : {st.camera.target.x, st.camera.target.y, st.camera.target.z, st.camera.yawDeg, st.camera.pitchDeg,
-                        st.camera.distance, st.sun.azimuthDeg, st.sun.elevationDeg, io.MousePos.x, io.MousePos.y})
+        for (float v :
+             {st.camera.target.x, st.camera.target.y, st.camera.target.z, st.camera.yawDeg, st.camera.pitchDeg,
+              st.camera.distance, st.sun.azimuthDeg, st.sun.elevationDeg, io.MousePos.x, io.MousePos.y})
             key += ',' + std::to_string(v);
         const bool active = io.MouseWheel != 0.f || io.WantTextInput || ImGui::IsAnyItemActive() || io.MouseDown[0] ||
-                           io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
+                            io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
         quietFrames = key == lastKey && !active ? quietFrames + 1 : 0;
         lastKey = std::move(key);
         if (now - lastSave > std::chrono::seconds(1)) {

@@ -14,10 +14,10 @@ namespace ui {
 struct ViewerOptions {
     std::optional<geometry::shadow::ShadowSettings> settings; // from the command line; else the config's last settings
     std::filesystem::path screenshotDir = "screenshots";
-    std::filesystem::path configPath;                 // empty: configDirectory()/dashboard.json
-    bool persist = true;                              // read and write the config file
+    std::filesystem::path configPath; // empty: configDirectory()/dashboard.json
+    bool persist = true;              // read and write the config file
     std::vector<std::string> sceneChoices, presetChoices;
-    std::string view;                                 // the canonical view opened at
+    std::string view; // the canonical view opened at
 };
 
 /// Runs until the window closes. Returns the process exit code; throws std::runtime_error when

@@ -36,15 +36,16 @@ CasterCoverage casterCoverage(const shadow::ShadowPlan& plan, std::span<const gl
     for (const auto& s : plan.splits) viewProj.emplace_back(s.lightViewProj);
     for (size_t i = 0; i < n; ++i) {
         const glm::vec3 p = positions[i];
-        if (!receiver[i] || !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(aux[i].z))
+        if (!receiver[i] || !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
+            !std::isfinite(aux[i].z))
             continue;
         const long split = std::lround(aux[i].z);
         if (split < 0 || split >= long(plan.splits.size())) continue;
         ++out.count;
         const glm::vec3 end = shadow::exitTowardLight(p, plan.l, plan.sceneBounds);
-        const bool inside = plan.splits[size_t(split)].empty() ? end == p
-                                                               : insideMap(viewProj[size_t(split)], p) &&
-                                                                     insideMap(viewProj[size_t(split)], end);
+        const bool inside = plan.splits[size_t(split)].empty()
+                                ? end == p
+                                : insideMap(viewProj[size_t(split)], p) && insideMap(viewProj[size_t(split)], end);
         if (inside) continue;
         ++out.clippedCount;
         if (!occluded.empty() && occluded[i] && shadow[i] >= 0.5f) ++out.falseLitClippedCount;

@@ -18,9 +18,9 @@ namespace {
 
 // ---- Tuning ---------------------------------------------------------------------------------
 
-constexpr int kLanes = 16;               // rtcOccluded16 / rtcIntersect16: AVX-512 width
-constexpr int kTileSide = 4;             // 4×4 pixel tiles for primary rays
-constexpr size_t kPacketsPerTask = 16;   // 256 rays per grab from the shared work counter
+constexpr int kLanes = 16;             // rtcOccluded16 / rtcIntersect16: AVX-512 width
+constexpr int kTileSide = 4;           // 4×4 pixel tiles for primary rays
+constexpr size_t kPacketsPerTask = 16; // 256 rays per grab from the shared work counter
 constexpr float kRelativeEpsilon = 1e-5f;
 constexpr float kMinEpsilon = 1e-6f;
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -53,8 +53,7 @@ const char* errorName(RTCError code) noexcept {
 /// Runs fn(task) for task in [0, tasks) on `threads` threads (the caller is one of them). Tasks
 /// are handed out through an atomic counter, so the sky-heavy and geometry-heavy parts of an
 /// image balance themselves; results are independent of who runs what.
-template <class Fn>
-void parallelFor(size_t tasks, int threads, const Fn& fn) {
+template <class Fn> void parallelFor(size_t tasks, int threads, const Fn& fn) {
     std::atomic<size_t> next{0};
     const auto worker = [&] {
         for (size_t t = next.fetch_add(1, std::memory_order_relaxed); t < tasks;
@@ -112,8 +111,7 @@ struct TileLayout {
 };
 
 /// Calls fn(packetLanes) for every packet of `layout`, in parallel.
-template <class Layout, class Fn>
-void forEachPacket(const Layout& layout, int threads, const Fn& fn) {
+template <class Layout, class Fn> void forEachPacket(const Layout& layout, int threads, const Fn& fn) {
     const size_t packets = layout.packets();
     const size_t tasks = (packets + kPacketsPerTask - 1) / kPacketsPerTask;
     parallelFor(tasks, resolveThreads(threads), [&](size_t task) {
@@ -130,8 +128,7 @@ RTCIntersectContext coherentContext() noexcept {
 }
 
 /// A lane Embree ignores; filled anyway so no uninitialized or NaN data reaches its SIMD loads.
-template <class Packet>
-void setIdleLane(Packet& ray, int lane) noexcept {
+template <class Packet> void setIdleLane(Packet& ray, int lane) noexcept {
     ray.org_x[lane] = ray.org_y[lane] = ray.org_z[lane] = 0.f;
     ray.dir_x[lane] = ray.dir_z[lane] = 0.f;
     ray.dir_y[lane] = 1.f;
@@ -277,7 +274,8 @@ struct GroundTruth::Impl {
 // ---- GroundTruth ----------------------------------------------------------------------------
 
 size_t PrimaryHits::hitCount() const noexcept {
-    return static_cast<size_t>(std::count_if(points.begin(), points.end(), [](const glm::vec3& p) { return finite(p); }));
+    return static_cast<size_t>(
+        std::count_if(points.begin(), points.end(), [](const glm::vec3& p) { return finite(p); }));
 }
 
 GroundTruth::GroundTruth(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) { impl_->build(scene); }

@@ -59,12 +59,12 @@ Image blankImage(int w, int h) { return Image{w, h, std::vector<uint8_t>(size_t(
 // Layout is computed in font units (one stb_easy_font pixel) and scaled by an integer factor
 // when drawn, so the legend stays crisp.
 
-constexpr int kPad = 5;           // inside the box
-constexpr int kGap = 4;           // between blocks
-constexpr int kTextH = 9;         // stb_easy_font glyphs span y ∈ [0, 9] with descenders
+constexpr int kPad = 5;   // inside the box
+constexpr int kGap = 4;   // between blocks
+constexpr int kTextH = 9; // stb_easy_font glyphs span y ∈ [0, 9] with descenders
 constexpr int kBarW = 150, kBarH = 10, kTickH = 3;
 constexpr int kSwatch = 8, kRowH = 12; // stb_easy_font's own line advance
-constexpr int kMargin = 8;        // box to image edge
+constexpr int kMargin = 8;             // box to image edge
 constexpr glm::vec3 kTextColour{0.97f};
 constexpr glm::vec3 kBoxColour{0.04f, 0.04f, 0.05f};
 constexpr float kBoxAlpha = 0.7f;
@@ -160,8 +160,7 @@ LegendLayout layoutLegend(const Legend& legend) {
     }
     if (!legend.entries.empty()) {
         l.entriesY = block(int(legend.entries.size()) * kRowH - (kRowH - kTextH));
-        for (const auto& e : legend.entries)
-            contentW = std::max(contentW, kSwatch + kPad + textWidth(e.label));
+        for (const auto& e : legend.entries) contentW = std::max(contentW, kSwatch + kPad + textWidth(e.label));
     }
     l.width = contentW + 2 * kPad;
     l.height = y + kPad;
@@ -183,8 +182,7 @@ void drawBar(const Canvas& cv, const Legend& legend, const LegendLayout& l) {
         cv.fillPixels(tickX, cv.oy + tickY * cv.scale, tickX + cv.scale, cv.oy + (tickY + kTickH) * cv.scale,
                       kTextColour);
         const float centre = float(l.barX) + pos * float(kBarW);
-        cv.text(std::round(centre - 0.5f * float(textWidth(t.label))), float(tickY + kTickH + 2), t.label,
-                kTextColour);
+        cv.text(std::round(centre - 0.5f * float(textWidth(t.label))), float(tickY + kTickH + 2), t.label, kTextColour);
     }
 }
 
@@ -250,9 +248,7 @@ int parseSide(const std::string& tok, const std::string& path, const char* what)
     return v;
 }
 
-uint32_t byteSwap(uint32_t x) {
-    return (x >> 24) | ((x >> 8) & 0xff00u) | ((x << 8) & 0xff0000u) | (x << 24);
-}
+uint32_t byteSwap(uint32_t x) { return (x >> 24) | ((x >> 8) & 0xff00u) | ((x << 8) & 0xff0000u) | (x << 24); }
 
 /// Floats travel as raw bits so NaN payloads and infinities survive exactly.
 void swapFloats(std::span<float> v) {
@@ -284,8 +280,7 @@ glm::vec3 splitColour(int i) {
 
 // ---- heatmap images -------------------------------------------------------------------------
 
-Image aliasingHeatmap(std::span<const float> m, std::span<const uint8_t> receiver, int width, int height,
-                      float range) {
+Image aliasingHeatmap(std::span<const float> m, std::span<const uint8_t> receiver, int width, int height, float range) {
     requireImageInput(m.size(), width, height, "aliasingHeatmap");
     requireImageInput(receiver.size(), width, height, "aliasingHeatmap");
     if (!(range > 0.f) || !std::isfinite(range))
@@ -362,8 +357,7 @@ void drawLegend(Image& img, const Legend& legend) {
     for (int y = std::max(r.y, 0); y < std::min(r.y + r.height, img.height); ++y)
         for (int x = std::max(r.x, 0); x < std::min(r.x + r.width, img.width); ++x) {
             uint8_t* p = &img.rgba[4 * (size_t(y) * size_t(img.width) + size_t(x))];
-            for (int c = 0; c < 3; ++c)
-                p[c] = toByte(glm::mix(float(p[c]) / 255.f, kBoxColour[c], kBoxAlpha));
+            for (int c = 0; c < 3; ++c) p[c] = toByte(glm::mix(float(p[c]) / 255.f, kBoxColour[c], kBoxAlpha));
             p[3] = 255;
         }
     const Canvas cv{img, legendScale(img.height), r.x, r.y};
@@ -401,8 +395,7 @@ std::vector<float> readPfm(const std::string& path, int& w, int& h) {
     const int width = parseSide(headerToken(in, path, "width"), path, "width");
     const int height = parseSide(headerToken(in, path, "height"), path, "height");
     const size_t pixels = size_t(width) * size_t(height);
-    if (pixels > kPfmMaxPixels)
-        pfmError(path, "absurd size " + std::to_string(width) + "x" + std::to_string(height));
+    if (pixels > kPfmMaxPixels) pfmError(path, "absurd size " + std::to_string(width) + "x" + std::to_string(height));
     const std::string scaleTok = headerToken(in, path, "scale");
     double scale = 0;
     const auto [end, ec] = std::from_chars(scaleTok.data(), scaleTok.data() + scaleTok.size(), scale);

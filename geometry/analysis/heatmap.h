@@ -30,9 +30,9 @@ inline constexpr glm::vec3 kNonReceiverColour{0.15f, 0.15f, 0.15f};
 /// kInvalidColour.
 [[nodiscard]] glm::vec3 divergingLog2(float m, float range = 4);
 
-/// Shadow factor s (lit fraction) against truth (docs/design.md §4 "Heatmap"): red where truth is lit and s < 0.5, blue where truth is shadowed and s ≥ 0.5,
-/// otherwise a grey whose level follows s (0.3 shadowed … 0.9 lit), so the scene stays readable
-/// under the errors. Non-finite s gives kInvalidColour.
+/// Shadow factor s (lit fraction) against truth (docs/design.md §4 "Heatmap"): red where truth is lit and s < 0.5, blue
+/// where truth is shadowed and s ≥ 0.5, otherwise a grey whose level follows s (0.3 shadowed … 0.9 lit), so the scene
+/// stays readable under the errors. Non-finite s gives kInvalidColour.
 [[nodiscard]] glm::vec3 falseColourTruth(float s, bool occluded);
 inline constexpr glm::vec3 kFalseShadowColour{0.95f, 0.12f, 0.1f};
 inline constexpr glm::vec3 kFalseLitColour{0.15f, 0.4f, 1.f};

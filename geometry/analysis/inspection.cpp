@@ -37,11 +37,14 @@ Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundT
 
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in) {
     const auto& a = in.aliasing;
-    j["aliasing"] = {{"mean", a.mean}, {"p50", a.p50}, {"p95", a.p95}, {"max", a.max},
-                     {"undersampled", a.undersampled}, {"pixels", a.count}};
+    j["aliasing"] = {
+        {"mean", a.mean},   {"p50", a.p50}, {"p95", a.p95}, {"max", a.max}, {"undersampled", a.undersampled},
+        {"pixels", a.count}};
     if (in.truth)
-        j["truth"] = {{"false_shadow", in.truth->falseShadow}, {"false_lit", in.truth->falseLit},
-                      {"mean_abs", in.truth->meanAbs}, {"pixels", in.truth->count}};
+        j["truth"] = {{"false_shadow", in.truth->falseShadow},
+                      {"false_lit", in.truth->falseLit},
+                      {"mean_abs", in.truth->meanAbs},
+                      {"pixels", in.truth->count}};
     for (size_t s = 0; s < in.utilization.size() && s < j["splits"].size(); ++s)
         j["splits"][s]["utilization"] = in.utilization[s];
 }

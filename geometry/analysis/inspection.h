@@ -17,27 +17,27 @@ class GroundTruth;
 
 struct Inspection {
     int width = 0, height = 0;
-    std::vector<float> shadow;          // s per pixel
-    std::vector<float> m;               // aliasing error per pixel (docs/design.md §4)
-    std::vector<glm::vec4> aux;         // map texel u, v, split, map depth
-    std::vector<glm::vec3> positions;   // world
-    std::vector<glm::vec3> normals;     // facing normal
-    std::vector<uint8_t> receiver;      // visible and facing the light (N·L > 0)
+    std::vector<float> shadow;                    // s per pixel
+    std::vector<float> m;                         // aliasing error per pixel (docs/design.md §4)
+    std::vector<glm::vec4> aux;                   // map texel u, v, split, map depth
+    std::vector<glm::vec3> positions;             // world
+    std::vector<glm::vec3> normals;               // facing normal
+    std::vector<uint8_t> receiver;                // visible and facing the light (N·L > 0)
     std::optional<std::vector<uint8_t>> occluded; // ground truth, 1 = shadowed
 
     AliasingStats aliasing;
     std::optional<TruthStats> truth;
-    std::vector<double> utilization;    // per split
+    std::vector<double> utilization; // per split
 };
 
 /// The eye pass's per-pixel outputs, read back once (all top row first, width·height values).
 struct FrameReadback {
     int width = 0;
-    std::vector<float> shadow;         // s
-    std::vector<glm::vec4> aux;        // map texel u, v, split (−1 sky), map depth
-    std::vector<glm::vec4> positions;  // world position, m
-    std::vector<glm::vec4> normals;    // facing normal, N·L
-    std::vector<int> resolutions;      // per split, the map resolution actually drawn
+    std::vector<float> shadow;        // s
+    std::vector<glm::vec4> aux;       // map texel u, v, split (−1 sky), map depth
+    std::vector<glm::vec4> positions; // world position, m
+    std::vector<glm::vec4> normals;   // facing normal, N·L
+    std::vector<int> resolutions;     // per split, the map resolution actually drawn
 };
 
 /// Splits the read-back into per-pixel fields and computes the statistics; `truth` adds the

@@ -54,7 +54,10 @@ AliasingStats aliasingStats(std::span<const float> m, std::span<const uint8_t> r
     size_t under = 0;
     for (size_t i = 0; i < m.size(); ++i) {
         if (!receiver[i]) continue;
-        if (!std::isfinite(m[i])) { ++st.skipped; continue; }
+        if (!std::isfinite(m[i])) {
+            ++st.skipped;
+            continue;
+        }
         values.push_back(m[i]);
         sum += m[i];
         under += m[i] > 1.f;
@@ -77,7 +80,10 @@ TruthStats truthStats(std::span<const float> s, std::span<const uint8_t> occlude
     double absSum = 0;
     for (size_t i = 0; i < s.size(); ++i) {
         if (!receiver[i]) continue;
-        if (!std::isfinite(s[i])) { ++st.skipped; continue; }
+        if (!std::isfinite(s[i])) {
+            ++st.skipped;
+            continue;
+        }
         ++st.count;
         const bool lit = s[i] >= 0.5f; // the rendered verdict; docs/design.md §4 thresholds at 0.5
         const double truth = occluded[i] ? 0.0 : 1.0;

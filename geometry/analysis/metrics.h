@@ -50,8 +50,8 @@ struct TruthStats {
 /// it marks texel (⌊u⌋, ⌊v⌋). Pixels with non-finite u, v or index, or with (u, v) outside
 /// [0, resolution)², mark nothing. resolution must lie in [1, 16384] (std::invalid_argument
 /// otherwise); the texel set is a bit vector, so 16384² costs 32 MiB.
-[[nodiscard]] double texelUtilization(std::span<const glm::vec4> aux, std::span<const uint8_t> receiver,
-                                      int split, int resolution);
+[[nodiscard]] double texelUtilization(std::span<const glm::vec4> aux, std::span<const uint8_t> receiver, int split,
+                                      int resolution);
 
 /// The texel set behind texelUtilization(), one byte per texel (1 used, 0 unused), row v first
 /// (index = v·resolution + u, v = 0 is the map's first row as stored in the GL texture), for

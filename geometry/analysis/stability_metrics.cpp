@@ -19,7 +19,9 @@ void requireSameSize(size_t expected, size_t got, const char* what) {
 }
 
 /// percentile() of the values, 0 when there are none (no pairs: no seam).
-double percentileOrZero(std::vector<double>& v, unsigned pct) { return v.empty() ? 0.0 : percentile(std::span(v), pct); }
+double percentileOrZero(std::vector<double>& v, unsigned pct) {
+    return v.empty() ? 0.0 : percentile(std::span(v), pct);
+}
 
 } // namespace
 
@@ -54,7 +56,7 @@ SeamStats seamStats(std::span<const float> m, std::span<const glm::vec4> aux, st
     requireSameSize(n, receiver.size(), "seamStats receiver");
     requireSameSize(n, positions.size(), "seamStats positions");
     requireSameSize(n, normals.size(), "seamStats normals");
-    constexpr float kSameNormal = 0.99f; // cos 8°
+    constexpr float kSameNormal = 0.99f;     // cos 8°
     constexpr float kPlaneTolerance = 0.01f; // of the distance to the eye
     const auto split = [&](size_t i) -> long {
         if (!receiver[i] || !std::isfinite(m[i]) || !(m[i] > 0.f) || !(m[i] < kSingularM) || !std::isfinite(aux[i].z))

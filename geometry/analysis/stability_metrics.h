@@ -22,9 +22,9 @@ inline constexpr float kSingularM = 1e6f;
 /// renderer's doing: shadow edges swimming with the map's texel grid, acne crawling, splits
 /// moving. Pixels whose truth changes (a shadow edge really moving) are left out of both counts.
 struct FlickerStats {
-    double rate = 0;    // flips / stable; 0 when stable == 0
-    size_t flips = 0;   // stable pixels whose rendered state changed
-    size_t stable = 0;  // pixels counted: receivers in both frames, truth unchanged, s finite
+    double rate = 0;   // flips / stable; 0 when stable == 0
+    size_t flips = 0;  // stable pixels whose rendered state changed
+    size_t stable = 0; // pixels counted: receivers in both frames, truth unchanged, s finite
 };
 
 [[nodiscard]] FlickerStats flickerStats(std::span<const float> sBefore, std::span<const uint8_t> occludedBefore,
@@ -47,11 +47,11 @@ struct FlickerStats {
 /// and max(m_a, m_b)/min(m_a, m_b) of the crossing pairs is reported as the raw ratio.
 /// Medians use the nearest-rank rule of aliasingStats (one of the values, never interpolated).
 struct SeamStats {
-    double median = 0;          // median seam over boundary crossings; 0 when none
-    double p95 = 0;             // 95th percentile of those
-    size_t pairs = 0;           // boundary crossings counted
-    double rawMedian = 0;       // median max(m)/min(m) of the crossing pairs a, b
-    double baselineMedian = 0;  // median of the same measure inside one split
+    double median = 0;         // median seam over boundary crossings; 0 when none
+    double p95 = 0;            // 95th percentile of those
+    size_t pairs = 0;          // boundary crossings counted
+    double rawMedian = 0;      // median max(m)/min(m) of the crossing pairs a, b
+    double baselineMedian = 0; // median of the same measure inside one split
     size_t baselinePairs = 0;
 };
 

@@ -91,8 +91,7 @@ Image differenceView(const Inspection& a, const Inspection& b) {
 
 Image truthView(const Inspection& in, const Image& eye, float blend) {
     if (!in.occluded) throw std::invalid_argument("the truth view needs --truth");
-    Image img =
-        blendOver(truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height), eye, blend);
+    Image img = blendOver(truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height), eye, blend);
     drawLegend(img, truthLegend());
     return img;
 }

@@ -9,8 +9,7 @@
 namespace geometry::analysis {
 
 /// The eye image tinted by the split each pixel uses, with a legend of the splits' ranges.
-[[nodiscard]] Image splitsView(const Image& eye, const Inspection& in,
-                                         const geometry::shadow::ShadowPlan& plan);
+[[nodiscard]] Image splitsView(const Image& eye, const Inspection& in, const geometry::shadow::ShadowPlan& plan);
 /// The shadow map's texel grid (every `every` texels) drawn over the receivers of the eye image.
 [[nodiscard]] Image texelsView(const Image& eye, const Inspection& in, int every = 1);
 /// log2 m heatmap with a legend (docs/design.md §4); `blend` > 0 mixes the eye image in (0 heatmap alone).

@@ -100,24 +100,21 @@ bool fsFileExists(const std::string& path, void*) {
 // URIs come from the file: never expand them (no ~, no environment variables, no shell).
 std::string fsExpandPath(const std::string& path, void*) { return path; }
 
-bool fsReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                     void*) {
+bool fsReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
     std::string problem;
     if (readRegularFile(path, *out, problem)) return true;
     if (err) *err += "'" + path + "': " + problem + "\n";
     return false;
 }
 
-bool fsWriteWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&,
-                      void*) {
+bool fsWriteWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
     if (err) *err += "writing is disabled\n";
     return false;
 }
 
 // Textures are irrelevant to shadows; accepting them undecoded keeps stb_image (and its attack
 // surface, and its memory) out of the loader.
-bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                 const unsigned char*, int, void*) {
+bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
     return true;
 }
 
@@ -187,11 +184,9 @@ Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
     std::string err, warn;
     bool ok = false;
     try {
-        ok = parsed.binary
-                 ? loader.LoadBinaryFromMemory(&parsed.model, &err, &warn, bytes.data(), size, baseDir)
-                 : loader.LoadASCIIFromString(&parsed.model, &err, &warn,
-                                              reinterpret_cast<const char*>(bytes.data()), size,
-                                              baseDir);
+        ok = parsed.binary ? loader.LoadBinaryFromMemory(&parsed.model, &err, &warn, bytes.data(), size, baseDir)
+                           : loader.LoadASCIIFromString(&parsed.model, &err, &warn,
+                                                        reinterpret_cast<const char*>(bytes.data()), size, baseDir);
     } catch (const std::bad_alloc&) {
         throw;
     } catch (const std::exception& e) {
@@ -319,8 +314,7 @@ std::vector<int> rootNodes(const tinygltf::Model& model) {
     std::vector<int> roots;
     for (size_t i = 0; i < model.nodes.size(); ++i)
         if (!isChild[i]) roots.push_back(int(i));
-    if (roots.empty() && !model.nodes.empty())
-        throw GltfError("every node has a parent (cycle in the node hierarchy)");
+    if (roots.empty() && !model.nodes.empty()) throw GltfError("every node has a parent (cycle in the node hierarchy)");
     return roots;
 }
 
@@ -381,7 +375,8 @@ AccessorView viewAccessor(const tinygltf::Model& model, int index) {
     const size_t elementSize = size_t(componentSize) * size_t(components);
     const size_t stride = view.byteStride ? view.byteStride : elementSize;
     if (stride < elementSize)
-        throw GltfError(name + ": byteStride " + str(stride) + " is smaller than an element (" + str(elementSize) + " bytes)");
+        throw GltfError(name + ": byteStride " + str(stride) + " is smaller than an element (" + str(elementSize) +
+                        " bytes)");
 
     if (acc.count > 0) {
         // byteOffset + (count - 1) * stride + elementSize <= byteLength, without overflow.
@@ -390,8 +385,8 @@ AccessorView viewAccessor(const tinygltf::Model& model, int index) {
         if (fits) fits = acc.count - 1 <= (length - acc.byteOffset - elementSize) / stride;
         if (!fits)
             throw GltfError(name + ": " + str(acc.count) + " elements (stride " + str(stride) + ", offset " +
-                            str(acc.byteOffset) + ") exceed buffer view " + std::to_string(acc.bufferView) +
-                            " (" + str(length) + " bytes)");
+                            str(acc.byteOffset) + ") exceed buffer view " + std::to_string(acc.bufferView) + " (" +
+                            str(length) + " bytes)");
     }
     return {buffer.data.data() + view.byteOffset + acc.byteOffset, acc.count, stride, acc.componentType, acc.type};
 }
@@ -434,8 +429,7 @@ std::vector<glm::vec3> readVec3(const AccessorView& v, const std::vector<uint32_
     return out;
 }
 
-template <typename T>
-uint32_t readIndex(const AccessorView& v, size_t i) {
+template <typename T> uint32_t readIndex(const AccessorView& v, size_t i) {
     T value;
     std::memcpy(&value, v.element(i), sizeof(T));
     return uint32_t(value);
@@ -443,8 +437,7 @@ uint32_t readIndex(const AccessorView& v, size_t i) {
 
 /// Index values as stored (before triangle assembly), each checked against the vertex count.
 std::vector<uint32_t> readIndices(const AccessorView& v, size_t vertexCount, const std::string& where) {
-    if (v.type != TINYGLTF_TYPE_SCALAR)
-        throw GltfError(where + ": indices must be SCALAR, not " + typeName(v.type));
+    if (v.type != TINYGLTF_TYPE_SCALAR) throw GltfError(where + ": indices must be SCALAR, not " + typeName(v.type));
     uint32_t (*read)(const AccessorView&, size_t) = nullptr;
     switch (v.componentType) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: read = readIndex<uint8_t>; break;
@@ -494,12 +487,9 @@ std::vector<uint32_t> toTriangleList(std::vector<uint32_t> seq, int mode) {
     if (seq.size() < 3) return out;
     out.reserve((seq.size() - 2) * 3);
     for (size_t i = 0; i + 2 < seq.size(); ++i) {
-        if (mode == TINYGLTF_MODE_TRIANGLE_FAN)
-            out.insert(out.end(), {seq[0], seq[i + 1], seq[i + 2]});
-        else if (i % 2 == 0)
-            out.insert(out.end(), {seq[i], seq[i + 1], seq[i + 2]});
-        else
-            out.insert(out.end(), {seq[i], seq[i + 2], seq[i + 1]});
+        if (mode == TINYGLTF_MODE_TRIANGLE_FAN) out.insert(out.end(), {seq[0], seq[i + 1], seq[i + 2]});
+        else if (i % 2 == 0) out.insert(out.end(), {seq[i], seq[i + 1], seq[i + 2]});
+        else out.insert(out.end(), {seq[i], seq[i + 2], seq[i + 1]});
     }
     return out;
 }
@@ -518,9 +508,8 @@ glm::vec3 baseColor(const tinygltf::Model& model, int material, const std::strin
 
 /// NORMAL is optional and recomputable, so a malformed one is dropped with a note rather than
 /// rejecting the file; an out-of-range one is still an error (the file is corrupt).
-void readNormals(const tinygltf::Model& model, const tinygltf::Primitive& prim, scene::Mesh& mesh,
-                 size_t accessorCount, const std::vector<uint32_t>& vertices,
-                 const std::string& where, std::vector<std::string>& notes) {
+void readNormals(const tinygltf::Model& model, const tinygltf::Primitive& prim, scene::Mesh& mesh, size_t accessorCount,
+                 const std::vector<uint32_t>& vertices, const std::string& where, std::vector<std::string>& notes) {
     const auto it = prim.attributes.find("NORMAL");
     if (it == prim.attributes.end()) return;
     const AccessorView v = viewAccessor(model, it->second);
@@ -536,7 +525,7 @@ void readNormals(const tinygltf::Model& model, const tinygltf::Primitive& prim, 
 
 /// One primitive as an object-space Mesh, or nothing (with a note) when it holds no triangles.
 std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t meshIndex, size_t primIndex,
-                                    std::vector<std::string>& notes) {
+                                           std::vector<std::string>& notes) {
     const tinygltf::Mesh& gltfMesh = model.meshes[meshIndex];
     const tinygltf::Primitive& prim = gltfMesh.primitives[primIndex];
     const std::string where = "mesh " + str(meshIndex) + " primitive " + str(primIndex);
@@ -553,8 +542,8 @@ std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t 
     }
     const AccessorView positions = viewAccessor(model, position->second);
     if (!isFloatVec3(positions))
-        throw GltfError(where + ": POSITION must be FLOAT VEC3, not " + componentName(positions.componentType) +
-                        " " + typeName(positions.type));
+        throw GltfError(where + ": POSITION must be FLOAT VEC3, not " + componentName(positions.componentType) + " " +
+                        typeName(positions.type));
 
     std::vector<uint32_t> sequence; // vertex sequence, as indices into `vertices` once remapped
     std::vector<uint32_t> vertices; // accessor elements this primitive uses, ascending
@@ -637,9 +626,9 @@ void notify(const Progress& progress, float fraction, std::string_view stage) {
 
 /// Decodes and cleans each used mesh once; primitives that cleanup empties are noted and their
 /// reports go to `emptied`.
-CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, const std::vector<Instance>& instances,
-                              size_t fileBytes, const CleanupOptions& options, const Progress& progress,
-                              CleanupReport& emptied, std::vector<std::string>& notes) {
+CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, const std::vector<Instance>& instances, size_t fileBytes,
+                              const CleanupOptions& options, const Progress& progress, CleanupReport& emptied,
+                              std::vector<std::string>& notes) {
     CleanedMeshes cleaned;
     size_t total = 0, done = 0;
     for (const Instance& inst : instances)
@@ -670,8 +659,8 @@ void emitInstances(const std::vector<Instance>& instances, CleanedMeshes& cleane
     for (const Instance& inst : instances)
         for (const CleanPrimitive& prim : cleaned[inst.mesh]) triangles += prim.mesh.triangleCount();
     if (triangles > kMaxInstancedTriangles)
-        throw GltfError("instancing expands to " + str(triangles) + " triangles (limit " +
-                        str(kMaxInstancedTriangles) + ")");
+        throw GltfError("instancing expands to " + str(triangles) + " triangles (limit " + str(kMaxInstancedTriangles) +
+                        ")");
 
     for (size_t i = 0; i < instances.size(); ++i) {
         notify(progress, float(i) / float(instances.size()), "chunking");

@@ -50,7 +50,8 @@ struct Reader {
     [[nodiscard]] json parse(const std::string& text) const {
         const json::parser_callback_t limitDepth = [this](int depth, json::parse_event_t event, json&) {
             const bool opens = event == json::parse_event_t::object_start || event == json::parse_event_t::array_start;
-            if (opens && depth + 1 > maxDepth) throw error("nested deeper than " + std::to_string(maxDepth) + " levels");
+            if (opens && depth + 1 > maxDepth)
+                throw error("nested deeper than " + std::to_string(maxDepth) + " levels");
             return true;
         };
         try {

@@ -64,7 +64,10 @@ std::vector<char> dropNonFinite(const scene::Mesh& mesh, std::vector<Tri>& tris,
     const size_t n = ok.size();
     std::erase_if(tris, [&](const Tri& t) {
         for (uint32_t v : t)
-            if (v >= n) { ++r.degenerateFaces; return true; } // not a face at all
+            if (v >= n) {
+                ++r.degenerateFaces;
+                return true;
+            } // not a face at all
         const bool bad = !ok[t[0]] || !ok[t[1]] || !ok[t[2]];
         r.nonFiniteFaces += bad;
         return bad;
@@ -127,7 +130,10 @@ std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const s
                 for (int dz = lo[2]; dz <= hi[2] && found == kNone; ++dz)
                     for (uint32_t q = heads[find(c[0] + dx, c[1] + dy, c[2] + dz)]; q != kNone; q = next[q]) {
                         const glm::dvec3 d = glm::dvec3(pos[q]) - glm::dvec3(p);
-                        if (glm::dot(d, d) <= tol2) { found = q; break; }
+                        if (glm::dot(d, d) <= tol2) {
+                            found = q;
+                            break;
+                        }
                     }
         if (found != kNone) {
             rep[i] = found;
@@ -136,7 +142,10 @@ std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const s
         }
         const size_t s = find(c[0], c[1], c[2]);
         if (heads[s] == kNone) heads[s] = i;
-        else { next[i] = next[heads[s]]; next[heads[s]] = i; }
+        else {
+            next[i] = next[heads[s]];
+            next[heads[s]] = i;
+        }
     }
     return rep;
 }
@@ -179,7 +188,10 @@ void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupRepor
             return std::tie(keys[a][1], keys[a][2], a) < std::tie(keys[b][1], keys[b][2], b);
         });
         for (auto it = begin + 1; it != end; ++it)
-            if (keys[*it] == keys[*(it - 1)]) { dup[*it] = 1; ++r.duplicateFaces; }
+            if (keys[*it] == keys[*(it - 1)]) {
+                dup[*it] = 1;
+                ++r.duplicateFaces;
+            }
     }
     size_t out = 0;
     for (size_t f = 0; f < tris.size(); ++f)
@@ -230,8 +242,11 @@ void fixOrientation(size_t vertexCount, std::vector<Tri>& tris, CleanupReport& r
                     if (*g == f || seen[*g]) continue;
                     const Tri& u = tris[*g];
                     const int ca = cornerOf(u, a);
-                    if (u[(ca + 1) % 3] == b) { flip[*g] = 1; } // same direction: g is inverted
-                    else if (u[(ca + 2) % 3] != b) continue;     // shares only the vertex
+                    if (u[(ca + 1) % 3] == b) {
+                        flip[*g] = 1;
+                    } // same direction: g is inverted
+                    else if (u[(ca + 2) % 3] != b)
+                        continue; // shares only the vertex
                     seen[*g] = 1;
                     queue.push_back(*g);
                 }
@@ -266,7 +281,10 @@ void clusterCornerNormals(const uint32_t* begin, const uint32_t* end, const std:
         const glm::vec3& n = faceU[begin[i]];
         size_t g = 0;
         while (g < seed.size() && glm::dot(faceU[seed[g]], n) < cosGroup) ++g;
-        if (g == seed.size()) { seed.push_back(begin[i]); sum.emplace_back(0.f); }
+        if (g == seed.size()) {
+            seed.push_back(begin[i]);
+            sum.emplace_back(0.f);
+        }
         group[i] = static_cast<uint32_t>(g);
         sum[g] += faceN[begin[i]];
     }
@@ -318,7 +336,10 @@ void computeNormals(scene::Mesh& mesh, const std::vector<glm::vec3>& pos, std::v
             if (!(glm::dot(cornerN[i], cornerN[i]) > 0.f)) cornerN[i] = glm::vec3(0.f, 0.f, 1.f);
             uint32_t out = kNone;
             for (uint32_t k = base; k < mesh.positions.size(); ++k)
-                if (glm::dot(mesh.normals[k], cornerN[i]) > 0.99999f) { out = k; break; }
+                if (glm::dot(mesh.normals[k], cornerN[i]) > 0.99999f) {
+                    out = k;
+                    break;
+                }
             if (out == kNone) {
                 out = static_cast<uint32_t>(mesh.positions.size());
                 mesh.positions.push_back(pos[v]);

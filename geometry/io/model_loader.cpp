@@ -1,8 +1,8 @@
 // loadModel(): picks the reader by extension, then cleans and chunks.
 #include "geometry/io/model_loader.h"
 
-#include "geometry/scene/chunking.h"
 #include "geometry/io/gltf_loader.h"
+#include "geometry/scene/chunking.h"
 
 #include <algorithm>
 #include <array>
@@ -24,7 +24,8 @@ constexpr glm::vec3 kDefaultGrey{0.7f, 0.7f, 0.72f};
 std::string lowerExtension(std::string_view path) {
     std::string ext = std::filesystem::path(path).extension().string();
     if (!ext.empty()) ext.erase(0, 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext;
 }
 

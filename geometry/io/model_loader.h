@@ -13,21 +13,21 @@
 namespace geometry::io {
 
 struct CleanupOptions {
-    double mergeTolerance = 1e-6;  // duplicate vertices closer than this × the bounds' diagonal merge
-    double creaseAngleDeg = 30.0;  // normals: faces meeting at more than this keep a sharp edge
-    bool fixOrientation = false;   // make face winding consistent per connected component
+    double mergeTolerance = 1e-6; // duplicate vertices closer than this × the bounds' diagonal merge
+    double creaseAngleDeg = 30.0; // normals: faces meeting at more than this keep a sharp edge
+    bool fixOrientation = false;  // make face winding consistent per connected component
 };
 
 /// What cleanup did, step by step (each counter is what that step removed or changed).
 struct CleanupReport {
     size_t inputVertices = 0, inputFaces = 0;
-    size_t nonFiniteVertices = 0;   // NaN/Inf vertices dropped
-    size_t nonFiniteFaces = 0;      // faces dropped with them
-    size_t degenerateFaces = 0;     // repeated indices or zero area
-    size_t mergedVertices = 0;      // duplicates within the tolerance
-    size_t duplicateFaces = 0;      // same three vertices, any order or winding
-    size_t isolatedVertices = 0;    // referenced by no face
-    size_t flippedFaces = 0;        // orientation fix
+    size_t nonFiniteVertices = 0; // NaN/Inf vertices dropped
+    size_t nonFiniteFaces = 0;    // faces dropped with them
+    size_t degenerateFaces = 0;   // repeated indices or zero area
+    size_t mergedVertices = 0;    // duplicates within the tolerance
+    size_t duplicateFaces = 0;    // same three vertices, any order or winding
+    size_t isolatedVertices = 0;  // referenced by no face
+    size_t flippedFaces = 0;      // orientation fix
     size_t outputVertices = 0, outputFaces = 0;
     std::vector<std::string> notes; // e.g. skipped glTF primitive modes
     CleanupReport& operator+=(const CleanupReport& other);
@@ -39,7 +39,7 @@ using Progress = std::function<void(float fraction, std::string_view stage)>;
 struct LoadedModel {
     std::vector<scene::Mesh> meshes; // world transforms applied into Mesh::transform; chunked
     CleanupReport report;
-    std::string format;       // "obj", "stl", "off", "ply", "gltf", "glb"
+    std::string format; // "obj", "stl", "off", "ply", "gltf", "glb"
 };
 
 /// Loads a mesh or glTF file by extension (case-insensitive). Throws std::runtime_error

@@ -61,7 +61,8 @@ std::string_view nextToken(std::string_view& rest) noexcept {
 std::string quoted(std::string_view token) {
     constexpr size_t kShown = 32;
     std::string shown(token.substr(0, kShown));
-    std::replace_if(shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; }, '?');
+    std::replace_if(
+        shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; }, '?');
     return "'" + shown + (token.size() > kShown ? "...'" : "'");
 }
 
@@ -168,7 +169,8 @@ private:
         unsigned bad = 0; // one branch-free (vectorizable) pass first: nearly every line is clean
         for (const char c : s) {
             const unsigned u = static_cast<unsigned char>(c);
-            bad |= (static_cast<unsigned>(u < 0x20) & static_cast<unsigned>(u != '\t')) | static_cast<unsigned>(u == 0x7f);
+            bad |=
+                (static_cast<unsigned>(u < 0x20) & static_cast<unsigned>(u != '\t')) | static_cast<unsigned>(u == 0x7f);
         }
         if (bad == 0) return;
         for (const char c : s) {
@@ -187,13 +189,16 @@ private:
         for (int k = 0; k < needed; ++k) {
             const std::string_view token = nextToken(rest);
             if (token.empty())
-                fail(std::string(what) + " has " + plural(k, "number", "numbers") + ", needs " + std::to_string(needed));
+                fail(std::string(what) + " has " + plural(k, "number", "numbers") + ", needs " +
+                     std::to_string(needed));
             switch (checkCoordinate(token)) {
             case Number::Ok: break;
             case Number::NotANumber: fail(std::string(what) + " " + item + " " + quoted(token) + " is not a number");
             case Number::NotFinite:
-                fail(std::string(what) + " " + item + " " + quoted(token) + " is not finite (OpenMesh cannot read NaN or Inf)");
-            case Number::OutOfRange: fail(std::string(what) + " " + item + " " + quoted(token) + " is out of float range");
+                fail(std::string(what) + " " + item + " " + quoted(token) +
+                     " is not finite (OpenMesh cannot read NaN or Inf)");
+            case Number::OutOfRange:
+                fail(std::string(what) + " " + item + " " + quoted(token) + " is out of float range");
             }
         }
     }
@@ -247,8 +252,8 @@ private:
         if (value == 0 && !huge) fail(std::string(e.index) + " 0 (OBJ indices start at 1)");
         if (negative) {
             if (huge || value < -static_cast<int64_t>(e.count))
-                fail(std::string(e.index) + " " + shownIndex(token) + " out of range (" + plural(e.count, e.one, e.many) +
-                     " before this line)");
+                fail(std::string(e.index) + " " + shownIndex(token) + " out of range (" +
+                     plural(e.count, e.one, e.many) + " before this line)");
         } else if (huge ? e.maxRef != UINT64_MAX : static_cast<uint64_t>(value) > e.maxRef) {
             e.maxRef = huge ? UINT64_MAX : static_cast<uint64_t>(value);
             e.maxRefLine = line_;
@@ -269,8 +274,7 @@ private:
         std::error_code ec;
         const std::filesystem::file_status st = std::filesystem::status(file, ec);
         if (ec || !std::filesystem::exists(st)) return; // OpenMesh cannot open it either: no materials
-        if (!std::filesystem::is_regular_file(st))
-            fail("material library " + quoted(name) + " is not a regular file");
+        if (!std::filesystem::is_regular_file(st)) fail("material library " + quoted(name) + " is not a regular file");
         const uint64_t size = std::filesystem::file_size(file, ec);
         if (ec || size == 0) fail("material library " + quoted(name) + " is empty or not a plain file");
         materialBytes_ += size;

@@ -97,7 +97,10 @@ public:
         const size_t face = faces++;
         for (const VertexHandle& h : vh) {
             if (h.idx() < 0 || static_cast<size_t>(h.idx()) >= positions.size()) {
-                if (badFaces++ == 0) { firstBadIndex = h.idx(); firstBadFace = face; }
+                if (badFaces++ == 0) {
+                    firstBadIndex = h.idx();
+                    firstBadFace = face;
+                }
                 return FaceHandle(static_cast<int>(face));
             }
         }
@@ -121,8 +124,7 @@ public:
     void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<Vec3f>&) override {}
     void set_face_texindex(FaceHandle, int) override {}
     void set_point(VertexHandle vh, const Vec3f& p) override {
-        if (vh.idx() >= 0 && static_cast<size_t>(vh.idx()) < positions.size())
-            positions[vh.idx()] = {p[0], p[1], p[2]};
+        if (vh.idx() >= 0 && static_cast<size_t>(vh.idx()) < positions.size()) positions[vh.idx()] = {p[0], p[1], p[2]};
     }
     void set_halfedge(VertexHandle, HalfedgeHandle) override {}
     void set_normal(VertexHandle, const Vec3f&) override {}
@@ -217,16 +219,14 @@ void checkTextFace(const std::string& path, const std::vector<std::string_view>&
                        " vertex indices (face colours need a COFF header)");
     for (int64_t j = 1; j <= k; ++j) {
         int64_t idx = 0;
-        if (!parseInt(tok[j], idx))
-            fail(path, "face " + std::to_string(face) + " has a non-integer vertex index");
+        if (!parseInt(tok[j], idx)) fail(path, "face " + std::to_string(face) + " has a non-integer vertex index");
         if (idx < 0 || static_cast<uint64_t>(idx) >= vertexCount)
             fail(path, "face " + std::to_string(face) + " references vertex " + std::to_string(idx) +
                            " but the file has only " + std::to_string(vertexCount) + " vertices");
     }
 }
 
-void checkCounts(const std::string& path, uint64_t vertices, uint64_t faces, uint64_t minBytes,
-                 uint64_t available) {
+void checkCounts(const std::string& path, uint64_t vertices, uint64_t faces, uint64_t minBytes, uint64_t available) {
     if (vertices > kMaxVertices || faces > kMaxFaces)
         fail(path, "header claims " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
                        " faces, over the limit of " + std::to_string(kMaxFaces));
@@ -255,8 +255,8 @@ StlKind validateStl(const std::string& path, uint64_t size) {
         if (84 + 50 * n == size) return StlKind::Binary;
     }
     const size_t first = head.find_first_not_of(" \t\r\n");
-    const bool solid = first != std::string::npos && head.size() - first >= 5 &&
-                       strncasecmp(head.c_str() + first, "solid", 5) == 0;
+    const bool solid =
+        first != std::string::npos && head.size() - first >= 5 && strncasecmp(head.c_str() + first, "solid", 5) == 0;
     const bool text = head.find('\0') == std::string::npos;
     if (solid && text) return StlKind::Ascii;
     if (size < 84) fail(path, "too small for a binary STL (" + std::to_string(size) + " bytes) and not ASCII STL");
@@ -316,8 +316,7 @@ void validateOff(const std::string& path, uint64_t size) {
     if (!lines.nextDataLine(line, false)) fail(path, "OFF header has no vertex/face counts (truncated file)");
     tokenize(line, tok);
     int64_t nv = -1, nf = -1, ne = -1;
-    if (tok.size() != 3 || !parseInt(tok[0], nv) || !parseInt(tok[1], nf) || !parseInt(tok[2], ne) || nv < 0 ||
-        nf < 0)
+    if (tok.size() != 3 || !parseInt(tok[0], nv) || !parseInt(tok[1], nf) || !parseInt(tok[2], ne) || nv < 0 || nf < 0)
         fail(path, "OFF counts line is not 'vertices faces edges' (corrupt file)");
     // A vertex needs at least "0 0 0\n", a face at least "3 0 1 2\n".
     checkCounts(path, nv, nf, 6 * uint64_t(nv) + 8 * uint64_t(nf), size - lines.pos);
@@ -342,8 +341,8 @@ void validateOff(const std::string& path, uint64_t size) {
 
 struct PlyProperty {
     std::string name;
-    int size = 0;          // scalar size in bytes, or the list's item size
-    int countSize = 0;     // list count size in bytes; 0 for a scalar
+    int size = 0;      // scalar size in bytes, or the list's item size
+    int countSize = 0; // list count size in bytes; 0 for a scalar
     bool countSigned = false, itemSigned = false;
 };
 struct PlyElement {
@@ -368,7 +367,8 @@ uint64_t readBinaryUint(const char* p, int size, bool bigEndian, bool isSigned, 
         v = (v << 8) | static_cast<unsigned char>(p[b]);
     }
     asSigned = static_cast<int64_t>(v);
-    if (isSigned && size < 8 && (v >> (8 * size - 1)) & 1) asSigned = static_cast<int64_t>(v) - (int64_t(1) << (8 * size));
+    if (isSigned && size < 8 && (v >> (8 * size - 1)) & 1)
+        asSigned = static_cast<int64_t>(v) - (int64_t(1) << (8 * size));
     return v;
 }
 
@@ -407,10 +407,14 @@ void validatePly(const std::string& path, uint64_t size) {
     bool ended = false;
     while (!ended && lines.nextLine(line)) {
         for (const char c : line)
-            if ((c < 32 || c > 126) && c != '\t' && c != '\r') fail(path, "PLY header is not plain text (corrupt file)");
+            if ((c < 32 || c > 126) && c != '\t' && c != '\r')
+                fail(path, "PLY header is not plain text (corrupt file)");
         tokenize(line, tok);
         if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
-        if (tok[0] == "end_header") { ended = true; break; }
+        if (tok[0] == "end_header") {
+            ended = true;
+            break;
+        }
         if (tok[0] == "format") {
             // OpenMesh's header reader loops for ever on a version it cannot parse: accept only
             // the one version PLY has, exactly.
@@ -418,8 +422,7 @@ void validatePly(const std::string& path, uint64_t size) {
                 (tok[1] != "ascii" && tok[1] != "binary_little_endian" && tok[1] != "binary_big_endian"))
                 fail(path, "bad PLY format line (expected 'format ascii|binary_little_endian|binary_big_endian 1.0')");
             format = tok[1];
-        }
-        else if (tok[0] == "element" && tok.size() >= 3) {
+        } else if (tok[0] == "element" && tok.size() >= 3) {
             // OpenMesh's PLY header reader misbehaves (copies without end) on elements it does not
             // know; CAD meshes need only vertices and faces.
             if (tok.size() != 3 || (tok[1] != "vertex" && tok[1] != "face"))
@@ -453,7 +456,8 @@ void validatePly(const std::string& path, uint64_t size) {
         if (e.name == "face") nf = e.count;
         uint64_t perRecord = 0; // smallest possible record: a token per scalar, a count per list
         for (const PlyProperty& p : e.props) perRecord += ascii ? 2 : (p.countSize ? p.countSize : p.size);
-        if (e.count > kMaxVertices + kMaxFaces) fail(path, "element '" + e.name + "' count " + std::to_string(e.count) + " over the limit");
+        if (e.count > kMaxVertices + kMaxFaces)
+            fail(path, "element '" + e.name + "' count " + std::to_string(e.count) + " over the limit");
         minBytes += std::max<uint64_t>(perRecord, 1) * e.count;
     }
     checkCounts(path, nv, nf, minBytes, size - lines.pos);
@@ -466,7 +470,8 @@ void validatePly(const std::string& path, uint64_t size) {
         for (uint64_t r = 0; r < e.count; ++r) {
             if (ascii) {
                 if (!lines.nextDataLine(line, false))
-                    fail(path, "element '" + e.name + "' has " + std::to_string(r) + " of " + std::to_string(e.count) + " records (truncated file)");
+                    fail(path, "element '" + e.name + "' has " + std::to_string(r) + " of " + std::to_string(e.count) +
+                                   " records (truncated file)");
                 tokenize(line, tok);
                 checkPlyTextRecord(path, e, tok, r, nv);
                 continue;
@@ -479,7 +484,8 @@ void validatePly(const std::string& path, uint64_t size) {
                     readBinaryUint(p, prop.countSize, bigEndian, prop.countSigned, k);
                     p += prop.countSize;
                     if (k < 0 || static_cast<uint64_t>(k) > kMaxFaceValence)
-                        fail(path, "list of " + std::to_string(k) + " items in element '" + e.name + "' (corrupt file)");
+                        fail(path,
+                             "list of " + std::to_string(k) + " items in element '" + e.name + "' (corrupt file)");
                     items = static_cast<uint64_t>(k);
                 }
                 if (static_cast<uint64_t>(end - p) < items * prop.size)
@@ -534,8 +540,8 @@ scene::Mesh readThroughOpenMesh(const std::string& path, uint64_t size) {
     if (importer.badFaces > 0)
         fail(path, "face " + std::to_string(importer.firstBadFace) + " references vertex " +
                        std::to_string(importer.firstBadIndex) + " but the file has only " +
-                       std::to_string(importer.positions.size()) + " vertices (" +
-                       std::to_string(importer.badFaces) + " bad faces)");
+                       std::to_string(importer.positions.size()) + " vertices (" + std::to_string(importer.badFaces) +
+                       " bad faces)");
     scene::Mesh mesh;
     mesh.positions = std::move(importer.positions);
     mesh.indices = std::move(importer.indices);
@@ -600,7 +606,8 @@ void saveMesh(const std::string& path, const scene::Mesh& mesh) {
     const std::string ext = [&] {
         std::string e = std::filesystem::path(path).extension().string();
         if (!e.empty()) e.erase(0, 1);
-        std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        std::transform(e.begin(), e.end(), e.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         return e;
     }();
     if (ext != "obj" && ext != "stl" && ext != "off" && ext != "ply")
@@ -616,8 +623,7 @@ void saveMesh(const std::string& path, const scene::Mesh& mesh) {
         om.update_face_normals();
         options += OpenMesh::IO::Options::FaceNormal;
     }
-    if (!OpenMesh::IO::write_mesh(om, path, options))
-        throw std::runtime_error(path + ": cannot write file");
+    if (!OpenMesh::IO::write_mesh(om, path, options)) throw std::runtime_error(path + ": cannot write file");
 }
 
 } // namespace geometry::io

@@ -1,5 +1,5 @@
-#include "geometry/io/json_file.h"
 #include "geometry/io/preset.h"
+#include "geometry/io/json_file.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -39,8 +39,7 @@ double shortestStored(const shadow::SettingInfo& info, const shadow::ShadowSetti
     return info.get(probe) == v ? shorter : v;
 }
 
-template <class Json>
-Json leafValue(const shadow::SettingInfo& info, const shadow::ShadowSettings& s) {
+template <class Json> Json leafValue(const shadow::SettingInfo& info, const shadow::ShadowSettings& s) {
     switch (info.kind) {
     case Kind::Int: return Json(static_cast<long long>(info.get(s)));
     case Kind::Float: return Json(shortestStored(info, s));
@@ -52,8 +51,7 @@ Json leafValue(const shadow::SettingInfo& info, const shadow::ShadowSettings& s)
 
 /// Adds every declared key to `out`, nesting at each '.'. Templated so savePreset can keep the
 /// declaration order (ordered_json) while the public API returns plain json.
-template <class Json>
-Json toJson(const shadow::ShadowSettings& s, Json out) {
+template <class Json> Json toJson(const shadow::ShadowSettings& s, Json out) {
     for (const auto& info : geometry::shadow::settingsDeclaration()) {
         Json* node = &out;
         std::string_view rest = info.key;
@@ -117,7 +115,8 @@ bool isGroup(std::string_view path) {
 
 std::string knownKeys() {
     std::string out;
-    for (const auto& info : geometry::shadow::settingsDeclaration()) out += (out.empty() ? "" : ", ") + std::string(info.key);
+    for (const auto& info : geometry::shadow::settingsDeclaration())
+        out += (out.empty() ? "" : ", ") + std::string(info.key);
     return out;
 }
 
@@ -135,8 +134,10 @@ void applyObject(shadow::ShadowSettings& s, const json& object, const std::strin
             continue;
         }
         const std::string key = prefix.empty() ? name : prefix + "." + name;
-        if (const shadow::SettingInfo* info = geometry::shadow::findSetting(key)) geometry::shadow::applySetting(s, key, leafText(*info, value));
-        else if (!isGroup(key)) throw std::invalid_argument("unknown setting '" + key + "' (known: " + knownKeys() + ")");
+        if (const shadow::SettingInfo* info = geometry::shadow::findSetting(key))
+            geometry::shadow::applySetting(s, key, leafText(*info, value));
+        else if (!isGroup(key))
+            throw std::invalid_argument("unknown setting '" + key + "' (known: " + knownKeys() + ")");
         else if (value.is_object()) applyObject(s, value, key, depth + 1);
         else throw std::invalid_argument(key + ": expected an object (a group of settings), got " + describe(value));
     }
@@ -166,7 +167,8 @@ shadow::ShadowSettings settingsFromJson(const json& j, shadow::ShadowSettings ba
 
 shadow::ShadowSettings loadPreset(const std::string& path, shadow::ShadowSettings base) {
     const json j = geometry::io::readJsonFile(path, "preset " + path, kMaxPresetBytes, kMaxPresetDepth);
-    if (!j.is_object()) throw fileError(path, std::string("expected a JSON object at the top level, got ") + j.type_name());
+    if (!j.is_object())
+        throw fileError(path, std::string("expected a JSON object at the top level, got ") + j.type_name());
     try {
         return applyTopLevel(j, std::move(base));
     } catch (const std::invalid_argument& e) {
@@ -174,7 +176,8 @@ shadow::ShadowSettings loadPreset(const std::string& path, shadow::ShadowSetting
     }
 }
 
-void savePreset(const std::string& path, const shadow::ShadowSettings& s, std::string_view name, std::string_view description) {
+void savePreset(const std::string& path, const shadow::ShadowSettings& s, std::string_view name,
+                std::string_view description) {
     nlohmann::ordered_json j = nlohmann::ordered_json::object();
     if (!name.empty()) j["name"] = std::string(name);
     if (!description.empty()) j["description"] = std::string(description);

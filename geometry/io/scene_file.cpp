@@ -1,5 +1,5 @@
-#include "geometry/io/json_file.h"
 #include "geometry/io/scene_file.h"
+#include "geometry/io/json_file.h"
 
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/chunking.h"
@@ -99,8 +99,9 @@ public:
     uint32_t unsignedInt(const json& v, const std::string& key, uint32_t lo, uint32_t hi) const {
         const std::string range = std::to_string(lo) + ".." + std::to_string(hi);
         if (!v.is_number_integer()) fail(key, "expected an integer in " + range + ", got " + describe(v));
-        const bool inRange = v.is_number_unsigned() ? v.get<uint64_t>() >= lo && v.get<uint64_t>() <= hi
-                                                    : v.get<int64_t>() >= int64_t(lo) && v.get<int64_t>() <= int64_t(hi);
+        const bool inRange = v.is_number_unsigned()
+                                 ? v.get<uint64_t>() >= lo && v.get<uint64_t>() <= hi
+                                 : v.get<int64_t>() >= int64_t(lo) && v.get<int64_t>() <= int64_t(hi);
         if (!inRange) fail(key, "expected an integer in " + range + ", got " + describe(v));
         return static_cast<uint32_t>(v.get<uint64_t>());
     }
@@ -226,7 +227,8 @@ scene::Camera place(scene::Camera c, const Placement& p) {
 
 // ---- Scene pieces ---------------------------------------------------------------------------
 
-scene::Mesh makeGround(const scene::Aabb& meshBounds, std::optional<float> size, std::optional<float> height, glm::vec3 color) {
+scene::Mesh makeGround(const scene::Aabb& meshBounds, std::optional<float> size, std::optional<float> height,
+                       glm::vec3 color) {
     const glm::vec3 e = meshBounds.extent();
     const float footprint = std::max(e.x, e.z);
     if (!size) size = footprint > 0.f ? kGroundFootprintFactor * footprint : 100.f;
@@ -288,14 +290,15 @@ scene::Scene builtinEntry(const Reader& r, const json& e, const std::string& key
         const json& p = e["params"];
         r.checkObject(p, k, {"triangles", "seed"});
         // The upper bound keeps a typo from asking for gigabytes of triangles.
-        if (p.contains("triangles")) params.targetTriangles = r.unsignedInt(p["triangles"], member(k, "triangles"), 1, 20'000'000);
+        if (p.contains("triangles"))
+            params.targetTriangles = r.unsignedInt(p["triangles"], member(k, "triangles"), 1, 20'000'000);
         if (p.contains("seed")) params.seed = r.unsignedInt(p["seed"], member(k, "seed"), 0, UINT32_MAX);
     }
     return scene::makePlatformScene(params);
 }
 
 std::vector<scene::Mesh> fileEntry(const Reader& r, const json& e, const std::string& key, const fs::path& folder,
-                            const Progress& progress) {
+                                   const Progress& progress) {
     const std::string k = member(key, "file");
     const std::string file = r.string(e["file"], k);
     if (file.empty()) r.fail(k, "expected a file name, got an empty string");
@@ -311,7 +314,8 @@ void readMeshEntry(const Reader& r, const json& e, const std::string& key, const
                    const Progress& progress, scene::Scene& scene, Defaults& defaults) {
     r.checkObject(e, key, {"file", "builtin", "params", "translate", "rotate_deg", "scale", "color"});
     if (e.contains("file") == e.contains("builtin")) r.fail(key, "expected exactly one of \"file\" or \"builtin\"");
-    if (e.contains("file") && e.contains("params")) r.fail(member(key, "params"), "only built-in scenes take parameters");
+    if (e.contains("file") && e.contains("params"))
+        r.fail(member(key, "params"), "only built-in scenes take parameters");
     // Check the cheap members before loading anything.
     const Placement placement = readPlacement(r, e, key);
     std::optional<glm::vec3> color;
@@ -479,7 +483,8 @@ scene::DirectionalLight defaultLight() {
 
 SceneFile loadSceneFile(const std::string& path, const Progress& progress) {
     const json j = readJsonFile(path, path, kMaxSceneFileBytes, kMaxSceneFileDepth);
-    if (!j.is_object()) throw fileError(path, std::string("expected a JSON object at the top level, got ") + j.type_name());
+    if (!j.is_object())
+        throw fileError(path, std::string("expected a JSON object at the top level, got ") + j.type_name());
     return readSceneFile(path, j, progress);
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Axis-aligned bounding box; empty() until a point is added.
-#include <glm/glm.hpp>
 #include <array>
+#include <glm/glm.hpp>
 #include <limits>
 
 namespace geometry::scene {
@@ -11,20 +11,25 @@ struct Aabb {
     glm::vec3 hi{std::numeric_limits<float>::lowest()};
 
     [[nodiscard]] bool empty() const noexcept { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
-    void add(const glm::vec3& p) noexcept { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void add(const glm::vec3& p) noexcept {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
     void add(const Aabb& b) noexcept {
-        if (!b.empty()) { add(b.lo); add(b.hi); }
+        if (!b.empty()) {
+            add(b.lo);
+            add(b.hi);
+        }
     }
     [[nodiscard]] glm::vec3 center() const noexcept { return 0.5f * (lo + hi); }
     [[nodiscard]] glm::vec3 extent() const noexcept { return empty() ? glm::vec3(0.f) : hi - lo; }
     [[nodiscard]] bool contains(const glm::vec3& p, float eps = 0.f) const noexcept {
-        return p.x >= lo.x - eps && p.y >= lo.y - eps && p.z >= lo.z - eps &&
-               p.x <= hi.x + eps && p.y <= hi.y + eps && p.z <= hi.z + eps;
+        return p.x >= lo.x - eps && p.y >= lo.y - eps && p.z >= lo.z - eps && p.x <= hi.x + eps && p.y <= hi.y + eps &&
+               p.z <= hi.z + eps;
     }
     [[nodiscard]] std::array<glm::vec3, 8> corners() const noexcept {
         std::array<glm::vec3, 8> c{};
-        for (int i = 0; i < 8; ++i)
-            c[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
+        for (int i = 0; i < 8; ++i) c[i] = {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
         return c;
     }
     /// Bounds of this box after an affine transform.

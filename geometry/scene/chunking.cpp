@@ -40,7 +40,8 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles) {
     std::vector<glm::vec3> centroids(triCount);
     for (uint32_t t = 0; t < triCount; ++t)
         centroids[t] = (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
-                        mesh.positions[mesh.indices[3 * t + 2]]) / 3.f;
+                        mesh.positions[mesh.indices[3 * t + 2]]) /
+                       3.f;
     std::vector<uint32_t> order(triCount);
     std::iota(order.begin(), order.end(), 0u);
     Splitter splitter{centroids, maxTriangles, {}};

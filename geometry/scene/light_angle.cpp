@@ -35,5 +35,4 @@ glm::vec3 lightAtViewAngle(const glm::vec3& vIn, const glm::vec3& reference, flo
     return glm::vec3(glm::normalize(std::cos(a) * v + std::sin(a) * u));
 }
 
-
 } // namespace geometry::scene

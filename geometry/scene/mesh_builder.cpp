@@ -2,9 +2,9 @@
 
 #include "geometry/scene/chunking.h"
 
-#include <glm/gtc/constants.hpp>
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 
 namespace geometry::scene {
 
@@ -103,7 +103,8 @@ void MeshBuilder::addCylinder(const glm::vec3& a, const glm::vec3& b, float radi
         }
         for (int s = 0; s < segments; ++s) {
             const uint32_t p = ring + s, q = ring + (s + 1) % segments;
-            if (end) addTriangle(c, p, q); else addTriangle(c, q, p);
+            if (end) addTriangle(c, p, q);
+            else addTriangle(c, q, p);
         }
     }
 }
@@ -115,8 +116,7 @@ void MeshBuilder::addGroundGrid(const glm::vec3& center, float size, int cells) 
     const glm::vec3 origin = center - glm::vec3(0.5f * size, 0.f, 0.5f * size);
     const uint32_t base = static_cast<uint32_t>(mesh_.positions.size());
     for (int j = 0; j <= cells; ++j)
-        for (int i = 0; i <= cells; ++i)
-            addVertex(origin + glm::vec3(i * step, 0.f, j * step), {0, 1, 0});
+        for (int i = 0; i <= cells; ++i) addVertex(origin + glm::vec3(i * step, 0.f, j * step), {0, 1, 0});
     const uint32_t row = static_cast<uint32_t>(cells + 1);
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {

@@ -33,7 +33,7 @@ constexpr float kJacketBaseHalfX = 26.f, kJacketBaseHalfZ = 21.f; // leg axis (x
 // columns without crossing the module slots.
 constexpr float kDeckHalfX = 20.f, kDeckHalfZ = 15.f;
 constexpr std::array<float, 3> kDeckLevels{31.f, 39.f, 47.f}; // top of the grating
-constexpr float kFrameHalfDepth = 0.3f;                        // primary deck beams
+constexpr float kFrameHalfDepth = 0.3f;                       // primary deck beams
 constexpr float kFrameSpacing = 10.f;
 constexpr float kSlotSize = 10.f; // modules stand in a 4 × 3 grid of 10 m slots
 constexpr int kSlotsX = 4, kSlotsZ = 3;
@@ -69,7 +69,9 @@ constexpr size_t kBeamTriangles = 12;
 class Rng {
 public:
     explicit Rng(uint32_t seed) : gen_(seed) {}
-    float uniform(float lo, float hi) { return lo + (hi - lo) * (static_cast<float>(gen_() >> 8) * (1.f / 16777216.f)); }
+    float uniform(float lo, float hi) {
+        return lo + (hi - lo) * (static_cast<float>(gen_() >> 8) * (1.f / 16777216.f));
+    }
     int below(int n) { return static_cast<int>(gen_() % static_cast<uint32_t>(n)); }
     bool chance(int percent) { return below(100) < percent; }
 
@@ -100,7 +102,8 @@ Detail detailFor(uint32_t targetTriangles) {
     };
     Detail d{};
     // The sea takes ~2 % of the target: 2 · cells² triangles.
-    d.seaCells = std::clamp(static_cast<int>(std::lround(std::sqrt(0.01f * static_cast<float>(targetTriangles)))), 8, 256);
+    d.seaCells =
+        std::clamp(static_cast<int>(std::lround(std::sqrt(0.01f * static_cast<float>(targetTriangles)))), 8, 256);
     d.legSegments = scaled(24.f, 6, 48);
     d.braceSegments = scaled(12.f, 4, 24);
     d.pipeSegments = scaled(16.f, 5, 32);
@@ -155,10 +158,8 @@ void addTruss(MeshBuilder& mb, const glm::vec3& a, const glm::vec3& b, float wid
             mb.addCylinder(corner(k, bay), corner(k, bay + 1), chordRadius, segments, false);
             mb.addBeam(corner(k, bay + 1), corner(k + 1, bay + 1), strutHalfWidth);
             // Alternating diagonals give the N-pattern of a welded truss.
-            if (bay % 2 == 0)
-                mb.addBeam(corner(k, bay), corner(k + 1, bay + 1), strutHalfWidth);
-            else
-                mb.addBeam(corner(k + 1, bay), corner(k, bay + 1), strutHalfWidth);
+            if (bay % 2 == 0) mb.addBeam(corner(k, bay), corner(k + 1, bay + 1), strutHalfWidth);
+            else mb.addBeam(corner(k + 1, bay), corner(k, bay + 1), strutHalfWidth);
         }
 }
 
@@ -169,8 +170,8 @@ struct LegPair {
 };
 
 /// Braced panels between legs: two long faces of two panels each, three transverse frames.
-constexpr std::array<LegPair, 7> kJacketPanels{{{-1, -1, 0, -1}, {0, -1, 1, -1}, {-1, 1, 0, 1}, {0, 1, 1, 1},
-                                                {-1, -1, -1, 1}, {0, -1, 0, 1}, {1, -1, 1, 1}}};
+constexpr std::array<LegPair, 7> kJacketPanels{
+    {{-1, -1, 0, -1}, {0, -1, 1, -1}, {-1, 1, 0, 1}, {0, 1, 1, 1}, {-1, -1, -1, 1}, {0, -1, 0, 1}, {1, -1, 1, 1}}};
 
 void addJacket(MeshBuilder& steel, const Detail& d) {
     const int bays = d.jacketBays;
@@ -206,7 +207,8 @@ void addJacket(MeshBuilder& steel, const Detail& d) {
 /// Primary beams on a 10 m grid under the grating, one beam per grid edge.
 void addDeckFrame(MeshBuilder& frame, float deckY) {
     const float y = deckY - kFrameHalfDepth - 0.05f;
-    const int nx = static_cast<int>(2.f * kDeckHalfX / kFrameSpacing), nz = static_cast<int>(2.f * kDeckHalfZ / kFrameSpacing);
+    const int nx = static_cast<int>(2.f * kDeckHalfX / kFrameSpacing),
+              nz = static_cast<int>(2.f * kDeckHalfZ / kFrameSpacing);
     const auto px = [](int i) { return -kDeckHalfX + kFrameSpacing * static_cast<float>(i); };
     const auto pz = [](int j) { return -kDeckHalfZ + kFrameSpacing * static_cast<float>(j); };
     for (int j = 0; j <= nz; ++j)
@@ -230,7 +232,7 @@ size_t gratingBeams(const GratingSize& g) {
 /// about twice the bearing-bar pitch, as in real pressed grating.
 GratingSize solveGrating(size_t budget) {
     const float crossPerBearing = (2.f * kDeckHalfX) / (2.f * (2.f * kDeckHalfZ)); // pitch ratio 2
-    const size_t perBeam = kDeckLevels.size() * kBeamTriangles; // every deck has the same grating
+    const size_t perBeam = kDeckLevels.size() * kBeamTriangles;                    // every deck has the same grating
     GratingSize best{2, 2};
     size_t bestError = std::numeric_limits<size_t>::max();
     for (int nb = 2;; ++nb) {
@@ -281,7 +283,8 @@ void addRailings(MeshBuilder& rails, float deckY, const Detail& d) {
             const glm::vec3 p = a + (b - a) * (static_cast<float>(k) / static_cast<float>(posts));
             rails.addBeam(p, p + glm::vec3(0.f, topRail, 0.f), 0.03f);
         }
-        for (float h : {midRail, topRail}) rails.addBeam(a + glm::vec3(0.f, h, 0.f), b + glm::vec3(0.f, h, 0.f), 0.025f);
+        for (float h : {midRail, topRail})
+            rails.addBeam(a + glm::vec3(0.f, h, 0.f), b + glm::vec3(0.f, h, 0.f), 0.025f);
     }
 }
 
@@ -297,8 +300,8 @@ void addModules(Rng& rng, MeshBuilder& modules, MeshBuilder& plates, size_t deck
     const float maxHeight = top ? 8.f : 6.f; // lower decks: clear of the deck frame above
     for (int iz = 0; iz < kSlotsZ; ++iz)
         for (int ix = 0; ix < kSlotsX; ++ix) {
-            const bool isReserved = std::any_of(reserved.begin(), reserved.end(),
-                                                [&](const Slot& s) { return s.ix == ix && s.iz == iz; });
+            const bool isReserved =
+                std::any_of(reserved.begin(), reserved.end(), [&](const Slot& s) { return s.ix == ix && s.iz == iz; });
             if (isReserved) continue;
             const float x0 = -kDeckHalfX + kSlotSize * static_cast<float>(ix);
             const float z0 = -kDeckHalfZ + kSlotSize * static_cast<float>(iz);
@@ -332,8 +335,7 @@ void addPipeRun(Rng& rng, MeshBuilder& pipes, MeshBuilder& supports, size_t deck
     const glm::vec3 p0{x0, y, laneZ}, p1{laneX, y, laneZ}, p2{laneX, y, z1};
     pipes.addCylinder(p0, p1, r, segments);
     pipes.addCylinder(p1, p2, r, segments);
-    for (float x = x0 + 3.f; x < laneX - 1.f; x += 6.f)
-        supports.addBeam({x, deckY, laneZ}, {x, y - r, laneZ}, 0.05f);
+    for (float x = x0 + 3.f; x < laneX - 1.f; x += 6.f) supports.addBeam({x, deckY, laneZ}, {x, y - r, laneZ}, 0.05f);
     if (deck > 0 && rng.chance(30)) {
         const glm::vec3 p3 = p2 - glm::vec3(0.f, kDeckLevels[deck] - kDeckLevels[deck - 1], 0.f);
         pipes.addCylinder(p2, p3, r, segments);
@@ -459,7 +461,8 @@ Scene makePlatformScene(const PlatformParams& params) {
     addFlareBoom(steel, pipes, flareTip, d);
 
     // The grating takes what is left of the budget.
-    std::array<MeshBuilder*, 9> structure{&sea, &steel, &frame, &plates, &modules, &helideck, &pipes, &railings, &flareTip};
+    std::array<MeshBuilder*, 9> structure{&sea,      &steel, &frame,    &plates,  &modules,
+                                          &helideck, &pipes, &railings, &flareTip};
     size_t used = 0;
     for (const MeshBuilder* mb : structure) used += mb->triangleCount();
     const size_t target = params.targetTriangles;

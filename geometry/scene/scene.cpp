@@ -1,8 +1,8 @@
 #include "geometry/scene/scene.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace geometry::scene {
 
@@ -22,7 +22,8 @@ glm::mat4 Camera::view() const noexcept {
     const glm::vec3 v = viewDir();
     // Keep lookAt well defined when looking straight along `up`.
     glm::vec3 u = up;
-    if (std::abs(glm::dot(glm::normalize(u), v)) > 0.999f) u = std::abs(v.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+    if (std::abs(glm::dot(glm::normalize(u), v)) > 0.999f)
+        u = std::abs(v.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
     return glm::lookAt(eye, eye + v, u);
 }
 
@@ -40,8 +41,7 @@ Aabb Scene::bounds() const noexcept {
     for (const auto& m : meshes) {
         if (!m.chunks.empty())
             for (const auto& c : m.chunks) b.add(c.bounds);
-        else
-            b.add(m.worldBounds());
+        else b.add(m.worldBounds());
     }
     return b;
 }

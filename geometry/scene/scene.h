@@ -23,8 +23,8 @@ struct Mesh {
     std::vector<glm::vec3> normals;   // object space, one per position
     std::vector<uint32_t> indices;    // triangles
     glm::vec3 color{0.7f};
-    glm::mat4 transform{1.f};         // object → world
-    std::vector<Chunk> chunks;        // filled by chunkMesh()
+    glm::mat4 transform{1.f};  // object → world
+    std::vector<Chunk> chunks; // filled by chunkMesh()
     /// Holds open surfaces (quads, grids) that must cast from both faces. Solids cast from their
     /// faces towards the light alone, which halves shadow-pass rasterization.
     bool twoSided = true;

@@ -4,7 +4,7 @@ namespace geometry::shadow {
 
 struct ErrorModel {
     double n = 1, f = 100, phi = 0.5235987755982988; // eye near, far, vertical half fov
-    double gamma = 1.5707963267948966;              // γ, radians
+    double gamma = 1.5707963267948966;               // γ, radians
     double screenRes = 1080;                         // res_screen_y
     double mapRes = 2048;                            // res_map
 };

@@ -1,8 +1,8 @@
 #pragma once
 // Focus body B (Scherzer §4.1, Zhang 003 eq 5): the part of a (sub-)frustum inside the scene
 // bounds S, extruded towards the light until it leaves S.
-#include "geometry/shadow/convex_body.h"
 #include "geometry/scene/scene.h"
+#include "geometry/shadow/convex_body.h"
 
 #include <array>
 #include <vector>
@@ -11,7 +11,8 @@ namespace geometry::shadow {
 
 /// World-space corners of the camera frustum between view distances `near` and `far`, indexed
 /// by bits (x: right, y: top, z: far) as ConvexBody::fromCorners expects.
-[[nodiscard]] std::array<glm::vec3, 8> frustumCorners(const scene::Camera& cam, float aspect, float near, float far) noexcept;
+[[nodiscard]] std::array<glm::vec3, 8> frustumCorners(const scene::Camera& cam, float aspect, float near,
+                                                      float far) noexcept;
 
 /// Where the ray from p towards the light (direction −l) leaves the box; p itself if p is
 /// outside or the ray is degenerate.

@@ -37,7 +37,8 @@ void addOutline(std::vector<OverlaySegment>& out, const std::vector<glm::vec2>& 
 
 std::vector<glm::vec2> convexHull2D(std::vector<glm::vec2> p) {
     // Andrew's monotone chain.
-    std::sort(p.begin(), p.end(), [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::sort(p.begin(), p.end(),
+              [](const glm::vec2& a, const glm::vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     p.erase(std::unique(p.begin(), p.end()), p.end());
     if (p.size() < 3) return p;
     const auto cross = [](const glm::vec2& o, const glm::vec2& a, const glm::vec2& b) {

@@ -44,7 +44,9 @@ SettingInfo choice(std::string_view key, std::string_view help, std::vector<std:
     info.min = 0;
     info.max = double(names.size() - 1);
     info.choices = std::move(names);
-    info.get = [field](const ShadowSettings& s) { return double(static_cast<int>(field(const_cast<ShadowSettings&>(s)))); };
+    info.get = [field](const ShadowSettings& s) {
+        return double(static_cast<int>(field(const_cast<ShadowSettings&>(s))));
+    };
     info.set = [field](ShadowSettings& s, double v) {
         auto& ref = field(s);
         ref = static_cast<std::remove_reference_t<decltype(ref)>>(static_cast<int>(v));
@@ -88,75 +90,111 @@ std::string SettingInfo::rangeText() const {
 
 const std::vector<SettingInfo>& settingsDeclaration() {
     static const std::vector<SettingInfo> table = {
-        number("shadow_map.resolution", "Shadow-map side in texels (first split)", Kind::Int, 16, 16384,
-               [](ShadowSettings& s) -> auto& { return s.resolution; }, true),
-        choice("bias.type",
-               "Bias: none, constant (z_offset along the light), slope (polygon offset), second_depth (back faces "
-               "into the map), midpoint and dual_depth (two-layer depth peeling), normal_offset (receiver along "
-               "its normal)",
-               {"none", "constant", "slope", "second_depth", "midpoint", "dual_depth", "normal_offset"},
-               [](ShadowSettings& s) -> auto& { return s.bias.type; }),
-        number("bias.constant", "Constant depth offset z_offset, in scene units along the light (Barroso Table 1)",
-               Kind::Float, -10, 10, [](ShadowSettings& s) -> auto& { return s.bias.constant; }),
-        number("bias.slope", "slope: polygon-offset factor (scales with the depth slope)", Kind::Float, 0, 32,
-               [](ShadowSettings& s) -> auto& { return s.bias.slope; }),
-        number("bias.units", "slope: polygon-offset units (smallest depth steps)", Kind::Float, 0, 1024,
-               [](ShadowSettings& s) -> auto& { return s.bias.units; }),
-        number("bias.z_max", "dual_depth: cap on the offset z1 + min((z2-z1)/2, z_max), scene units", Kind::Float, 0,
-               100, [](ShadowSettings& s) -> auto& { return s.bias.zMax; }),
-        number("bias.normal_offset", "normal_offset: receiver moved along its normal by this many world-space texels",
-               Kind::Float, 0, 16, [](ShadowSettings& s) -> auto& { return s.bias.normalOffset; }),
-        number("bias.linear_z", "Store linear light depth in the maps instead of post-perspective depth (Scherzer "
-               "4.2)", Kind::Bool, 0, 1, [](ShadowSettings& s) -> auto& { return s.bias.linearZ; }),
-        number("bias.tangent_plane", "Filter taps compare against the receiver's tangent plane (Barroso 2.2)",
-               Kind::Bool, 0, 1, [](ShadowSettings& s) -> auto& { return s.bias.tangentPlane; }),
-        choice("filter.type", "Filter: none (one tap), hw2x2 (hardware bilinear compare), pcf (k x k texels), disk "
-               "(rotated disk taps), vsm (variance shadow maps)",
-               {"none", "hw2x2", "pcf", "disk", "vsm"}, [](ShadowSettings& s) -> auto& { return s.filter.type; }),
-        oddNumber("filter.kernel", "pcf: k x k taps one texel apart; vsm: blur width (odd)", 1, 9,
-                  [](ShadowSettings& s) -> auto& { return s.filter.kernel; }),
-        number("filter.taps", "disk: number of taps", Kind::Int, 1, 64,
-               [](ShadowSettings& s) -> auto& { return s.filter.taps; }),
-        number("filter.radius", "disk: radius in texels", Kind::Float, 0.5, 16,
-               [](ShadowSettings& s) -> auto& { return s.filter.radius; }),
-        number("filter.bleed_reduction", "vsm: light-bleeding reduction (cuts the Chebyshev tail)", Kind::Float, 0,
-               0.95, [](ShadowSettings& s) -> auto& { return s.filter.bleedReduction; }),
-        number("filter.eye_blur.iterations", "Eye-space blur of the shadow mask, stronger near the viewer "
-               "(Scherzer 4.3); 0 = off", Kind::Int, 0, 8,
-               [](ShadowSettings& s) -> auto& { return s.filter.eyeBlurIterations; }),
-        number("filter.eye_blur.falloff", "Eye-space blur: taps 1/(1 + falloff * view depth) pixels apart, 3 each side, per "
-               "iteration", Kind::Float, 0, 10, [](ShadowSettings& s) -> auto& { return s.filter.eyeBlurFalloff; },
-               true),
-        choice("warp.method",
-               "Warp: uniform (none), psm (n' = n / sin(gamma)), lispsm (Wimmer), glispsm (Barroso eqs 13-18), gmnpr (Zhang eq 8), "
-               "manual (warp.n_prime)",
-               {"uniform", "psm", "lispsm", "glispsm", "gmnpr", "manual"},
-               [](ShadowSettings& s) -> auto& { return s.warp.method; }),
-        choice("warp.direction", "Warp direction V_P: standard (view projected onto the light plane) or middle "
-               "(Scherzer's middle vector over the focus body)",
-               {"standard", "middle"}, [](ShadowSettings& s) -> auto& { return s.direction; }),
-        choice("warp.falloff", "glispsm below gamma_lim: eq18 (default) or eq17", {"eq18", "eq17"},
-               [](ShadowSettings& s) -> auto& { return s.warp.falloff; }),
-        number("warp.n_prime", "manual: n' at gamma = 90 deg (scaled by 1/sin(gamma) like LiSPSM)", Kind::Float, 1e-4,
-               1e6, [](ShadowSettings& s) -> auto& { return s.warp.manualNPrime; }, true),
-        number("warp.multiplier", "Multiplies the chosen method's n' (weaker warp above 1, stronger below)",
-               Kind::Float, 1e-3, 1e3, [](ShadowSettings& s) -> auto& { return s.warp.multiplier; }, true),
-        number("warp.visible_far", "lispsm: visible far depth capping n + dz (Scherzer); 0 = off", Kind::Float, 0, 1e7,
-               [](ShadowSettings& s) -> auto& { return s.warp.visibleFar; }),
-        number("splits.count", "Number of z-partitions (split shadow maps)", Kind::Int, 1, kMaxSplits,
-               [](ShadowSettings& s) -> auto& { return s.splits.count; }),
-        choice("splits.scheme", "Split scheme: uniform, log (Lloyd), practical (log/uniform blend), pssm "
-               "(geometric lengths), adaptive (Barroso eq 19)",
-               {"uniform", "log", "practical", "pssm", "adaptive"},
-               [](ShadowSettings& s) -> auto& { return s.splits.scheme; }),
-        number("splits.lambda", "practical: weight of the log scheme", Kind::Float, 0, 1,
-               [](ShadowSettings& s) -> auto& { return s.splits.lambda; }),
-        number("splits.ratio", "pssm: length ratio of consecutive splits", Kind::Float, 1, 16,
-               [](ShadowSettings& s) -> auto& { return s.splits.ratio; }),
-        number("splits.alpha", "adaptive: f_i/n_i at gamma = 0 (Barroso: <= 4 without PCF, <= 2 with PCF)",
-               Kind::Float, 1, 1000, [](ShadowSettings& s) -> auto& { return s.splits.alpha; }, true),
-        number("splits.resolution_falloff", "Halve the shadow-map resolution for each further split", Kind::Bool, 0,
-               1, [](ShadowSettings& s) -> auto& { return s.splits.resolutionFalloff; }),
+        number(
+            "shadow_map.resolution", "Shadow-map side in texels (first split)", Kind::Int, 16, 16384,
+            [](ShadowSettings & s) -> auto& { return s.resolution; }, true),
+        choice(
+            "bias.type",
+            "Bias: none, constant (z_offset along the light), slope (polygon offset), second_depth (back faces "
+            "into the map), midpoint and dual_depth (two-layer depth peeling), normal_offset (receiver along "
+            "its normal)",
+            {"none", "constant", "slope", "second_depth", "midpoint", "dual_depth", "normal_offset"},
+            [](ShadowSettings & s) -> auto& { return s.bias.type; }),
+        number(
+            "bias.constant", "Constant depth offset z_offset, in scene units along the light (Barroso Table 1)",
+            Kind::Float, -10, 10, [](ShadowSettings & s) -> auto& { return s.bias.constant; }),
+        number(
+            "bias.slope", "slope: polygon-offset factor (scales with the depth slope)", Kind::Float, 0, 32,
+            [](ShadowSettings & s) -> auto& { return s.bias.slope; }),
+        number(
+            "bias.units", "slope: polygon-offset units (smallest depth steps)", Kind::Float, 0, 1024,
+            [](ShadowSettings & s) -> auto& { return s.bias.units; }),
+        number(
+            "bias.z_max", "dual_depth: cap on the offset z1 + min((z2-z1)/2, z_max), scene units", Kind::Float, 0, 100,
+            [](ShadowSettings & s) -> auto& { return s.bias.zMax; }),
+        number(
+            "bias.normal_offset", "normal_offset: receiver moved along its normal by this many world-space texels",
+            Kind::Float, 0, 16, [](ShadowSettings & s) -> auto& { return s.bias.normalOffset; }),
+        number(
+            "bias.linear_z",
+            "Store linear light depth in the maps instead of post-perspective depth (Scherzer "
+            "4.2)",
+            Kind::Bool, 0, 1, [](ShadowSettings & s) -> auto& { return s.bias.linearZ; }),
+        number(
+            "bias.tangent_plane", "Filter taps compare against the receiver's tangent plane (Barroso 2.2)", Kind::Bool,
+            0, 1, [](ShadowSettings & s) -> auto& { return s.bias.tangentPlane; }),
+        choice(
+            "filter.type",
+            "Filter: none (one tap), hw2x2 (hardware bilinear compare), pcf (k x k texels), disk "
+            "(rotated disk taps), vsm (variance shadow maps)",
+            {"none", "hw2x2", "pcf", "disk", "vsm"}, [](ShadowSettings & s) -> auto& { return s.filter.type; }),
+        oddNumber(
+            "filter.kernel", "pcf: k x k taps one texel apart; vsm: blur width (odd)", 1, 9,
+            [](ShadowSettings & s) -> auto& { return s.filter.kernel; }),
+        number(
+            "filter.taps", "disk: number of taps", Kind::Int, 1, 64,
+            [](ShadowSettings & s) -> auto& { return s.filter.taps; }),
+        number(
+            "filter.radius", "disk: radius in texels", Kind::Float, 0.5, 16,
+            [](ShadowSettings & s) -> auto& { return s.filter.radius; }),
+        number(
+            "filter.bleed_reduction", "vsm: light-bleeding reduction (cuts the Chebyshev tail)", Kind::Float, 0, 0.95,
+            [](ShadowSettings & s) -> auto& { return s.filter.bleedReduction; }),
+        number(
+            "filter.eye_blur.iterations",
+            "Eye-space blur of the shadow mask, stronger near the viewer "
+            "(Scherzer 4.3); 0 = off",
+            Kind::Int, 0, 8, [](ShadowSettings & s) -> auto& { return s.filter.eyeBlurIterations; }),
+        number(
+            "filter.eye_blur.falloff",
+            "Eye-space blur: taps 1/(1 + falloff * view depth) pixels apart, 3 each side, per "
+            "iteration",
+            Kind::Float, 0, 10, [](ShadowSettings & s) -> auto& { return s.filter.eyeBlurFalloff; }, true),
+        choice(
+            "warp.method",
+            "Warp: uniform (none), psm (n' = n / sin(gamma)), lispsm (Wimmer), glispsm (Barroso eqs 13-18), gmnpr "
+            "(Zhang eq 8), "
+            "manual (warp.n_prime)",
+            {"uniform", "psm", "lispsm", "glispsm", "gmnpr", "manual"},
+            [](ShadowSettings & s) -> auto& { return s.warp.method; }),
+        choice(
+            "warp.direction",
+            "Warp direction V_P: standard (view projected onto the light plane) or middle "
+            "(Scherzer's middle vector over the focus body)",
+            {"standard", "middle"}, [](ShadowSettings & s) -> auto& { return s.direction; }),
+        choice(
+            "warp.falloff", "glispsm below gamma_lim: eq18 (default) or eq17", {"eq18", "eq17"},
+            [](ShadowSettings & s) -> auto& { return s.warp.falloff; }),
+        number(
+            "warp.n_prime", "manual: n' at gamma = 90 deg (scaled by 1/sin(gamma) like LiSPSM)", Kind::Float, 1e-4, 1e6,
+            [](ShadowSettings & s) -> auto& { return s.warp.manualNPrime; }, true),
+        number(
+            "warp.multiplier", "Multiplies the chosen method's n' (weaker warp above 1, stronger below)", Kind::Float,
+            1e-3, 1e3, [](ShadowSettings & s) -> auto& { return s.warp.multiplier; }, true),
+        number(
+            "warp.visible_far", "lispsm: visible far depth capping n + dz (Scherzer); 0 = off", Kind::Float, 0, 1e7,
+            [](ShadowSettings & s) -> auto& { return s.warp.visibleFar; }),
+        number(
+            "splits.count", "Number of z-partitions (split shadow maps)", Kind::Int, 1, kMaxSplits,
+            [](ShadowSettings & s) -> auto& { return s.splits.count; }),
+        choice(
+            "splits.scheme",
+            "Split scheme: uniform, log (Lloyd), practical (log/uniform blend), pssm "
+            "(geometric lengths), adaptive (Barroso eq 19)",
+            {"uniform", "log", "practical", "pssm", "adaptive"},
+            [](ShadowSettings & s) -> auto& { return s.splits.scheme; }),
+        number(
+            "splits.lambda", "practical: weight of the log scheme", Kind::Float, 0, 1,
+            [](ShadowSettings & s) -> auto& { return s.splits.lambda; }),
+        number(
+            "splits.ratio", "pssm: length ratio of consecutive splits", Kind::Float, 1, 16,
+            [](ShadowSettings & s) -> auto& { return s.splits.ratio; }),
+        number(
+            "splits.alpha", "adaptive: f_i/n_i at gamma = 0 (Barroso: <= 4 without PCF, <= 2 with PCF)", Kind::Float, 1,
+            1000, [](ShadowSettings & s) -> auto& { return s.splits.alpha; }, true),
+        number(
+            "splits.resolution_falloff", "Halve the shadow-map resolution for each further split", Kind::Bool, 0, 1,
+            [](ShadowSettings & s) -> auto& { return s.splits.resolutionFalloff; }),
     };
     return table;
 }

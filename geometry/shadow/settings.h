@@ -31,16 +31,16 @@ enum class FilterType { None, Hw2x2, Pcf, Disk, Vsm };
 
 struct FilterSettings {
     FilterType type = FilterType::Hw2x2;
-    int kernel = 3;              // filter.kernel: k×k PCF taps / VSM blur width, odd
-    int taps = 16;               // filter.taps: disk taps
-    float radius = 2.f;          // filter.radius: disk radius, texels
-    float bleedReduction = 0.2f; // filter.bleed_reduction: VSM light-bleeding cut
-    int eyeBlurIterations = 0;   // filter.eye_blur.iterations: Scherzer's eye-space blur, 0 = off
+    int kernel = 3;               // filter.kernel: k×k PCF taps / VSM blur width, odd
+    int taps = 16;                // filter.taps: disk taps
+    float radius = 2.f;           // filter.radius: disk radius, texels
+    float bleedReduction = 0.2f;  // filter.bleed_reduction: VSM light-bleeding cut
+    int eyeBlurIterations = 0;    // filter.eye_blur.iterations: Scherzer's eye-space blur, 0 = off
     float eyeBlurFalloff = 0.05f; // filter.eye_blur.falloff: how fast the blur shrinks with view depth
 };
 
 struct ShadowSettings {
-    int resolution = 2048;      // shadow_map.resolution
+    int resolution = 2048; // shadow_map.resolution
     BiasSettings bias;
     FilterSettings filter;
     WarpParams warp{WarpMethod::Uniform};
@@ -53,10 +53,10 @@ struct SettingInfo {
     std::string_view key;
     std::string_view help;
     Kind kind = Kind::Float;
-    double min = 0, max = 0;                // Int, Float: valid range (inclusive)
-    bool odd = false;                       // Int: only odd values
-    std::vector<std::string_view> choices;  // Choice: names in enum order
-    bool logScale = false;                  // a hint for widgets
+    double min = 0, max = 0;                          // Int, Float: valid range (inclusive)
+    bool odd = false;                                 // Int: only odd values
+    std::vector<std::string_view> choices;            // Choice: names in enum order
+    bool logScale = false;                            // a hint for widgets
     std::function<double(const ShadowSettings&)> get; // Choice: index; Bool: 0/1
     std::function<void(ShadowSettings&, double)> set;
 

@@ -2,9 +2,9 @@
 
 #include "geometry/shadow/focus.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace geometry::shadow {
 
@@ -25,7 +25,10 @@ dvec3 perpendicular(const dvec3& l) noexcept {
 
 struct Box {
     dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
-    void add(const dvec3& p) noexcept { lo = glm::min(lo, p); hi = glm::max(hi, p); }
+    void add(const dvec3& p) noexcept {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
 };
 
 /// Maps `box` onto the cube [−1, 1]³, with a small margin so boundary points stay inside.
@@ -80,7 +83,8 @@ std::array<glm::vec3, 8> unitCubeInWorld(const dmat4& viewProj) noexcept {
 
 /// Orthographic light view over every B_i, the eye and the warp centres, a little larger.
 glm::mat4 unwarpedView(const ShadowPlan& plan) noexcept {
-    const dmat4 view = glm::lookAt(dvec3(0.0), dvec3(plan.l), std::abs(plan.l.y) < 0.9f ? dvec3(0, 1, 0) : dvec3(1, 0, 0));
+    const dmat4 view =
+        glm::lookAt(dvec3(0.0), dvec3(plan.l), std::abs(plan.l.y) < 0.9f ? dvec3(0, 1, 0) : dvec3(1, 0, 0));
     Box box;
     const auto add = [&](const glm::vec3& p) { box.add(dvec3(view * dvec4(dvec3(p), 1.0))); };
     add(plan.eye);
@@ -88,8 +92,9 @@ glm::mat4 unwarpedView(const ShadowPlan& plan) noexcept {
         for (const auto& p : s.body) add(p);
         if (s.warped()) add(s.warpCentre);
     }
-    for (const auto& c : plan.sceneBounds.corners()) box.lo.z = std::min(box.lo.z, dvec3(view * dvec4(dvec3(c), 1.0)).z),
-                                                     box.hi.z = std::max(box.hi.z, dvec3(view * dvec4(dvec3(c), 1.0)).z);
+    for (const auto& c : plan.sceneBounds.corners())
+        box.lo.z = std::min(box.lo.z, dvec3(view * dvec4(dvec3(c), 1.0)).z),
+        box.hi.z = std::max(box.hi.z, dvec3(view * dvec4(dvec3(c), 1.0)).z);
     // Square, centred, 10 % margin, so the picture is not stretched.
     const glm::dvec2 centre = 0.5 * (glm::dvec2(box.lo) + glm::dvec2(box.hi));
     const double half = 0.55 * std::max({box.hi.x - box.lo.x, box.hi.y - box.lo.y, 1e-3});
@@ -104,9 +109,9 @@ glm::mat4 unwarpedView(const ShadowPlan& plan) noexcept {
 }
 
 struct SplitFrame {
-    dmat4 lightView;   // world → light space L
-    dmat4 lightProj;   // L → shadow clip space
-    dvec3 warpCentre;  // world
+    dmat4 lightView;  // world → light space L
+    dmat4 lightProj;  // L → shadow clip space
+    dvec3 warpCentre; // world
     double nPrime;
     double d;
 };
@@ -226,8 +231,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
             lo = std::min(lo, t);
             hi = std::max(hi, t);
         }
-        const double nPrime = degenerate ? kUniform
-                                         : warpNPrime(settings.warp, c[i], c[i + 1], phi, gamma, hi - lo);
+        const double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, c[i], c[i + 1], phi, gamma, hi - lo);
         const SplitFrame frame = frameForSplit(split.body, l, vp, eye, S, nPrime);
         const dmat4 viewProj = frame.lightProj * frame.lightView;
         split.lightView = glm::mat4(frame.lightView);
@@ -245,15 +249,15 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         for (const auto& p : split.body) centre += dvec3(p);
         centre /= double(split.body.size());
         const double step = std::max(1e-3 * frame.d, 1e-3);
-        split.depthPerUnit = float(std::max(0.0, (depth01(viewProj, centre + step * l) - depth01(viewProj, centre)) / step));
+        split.depthPerUnit =
+            float(std::max(0.0, (depth01(viewProj, centre + step * l) - depth01(viewProj, centre)) / step));
         plan.splits.push_back(std::move(split));
     }
     // Derived once here so that no pass recomputes them.
     plan.linearDepth = settings.bias.linearZ || settings.filter.type == FilterType::Vsm;
     for (auto& split : plan.splits) {
         split.linearDepthScale = 1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f);
-        split.dualDepthCap =
-            settings.bias.zMax * (settings.bias.linearZ ? split.linearDepthScale : split.depthPerUnit);
+        split.dualDepthCap = settings.bias.zMax * (settings.bias.linearZ ? split.linearDepthScale : split.depthPerUnit);
     }
     plan.unwarpedViewProj = unwarpedView(plan);
     return plan;

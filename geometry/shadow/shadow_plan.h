@@ -16,24 +16,24 @@ struct Viewport {
 };
 
 struct SplitPlan {
-    float near = 0.f, far = 0.f;       // [n_i, f_i], view distance
-    std::vector<glm::vec3> body;       // focus body B_i (world space); empty when V_i misses S
-    glm::mat4 lightView{1.f};          // world → light space (rotation looking along l, +y = V_P)
-    glm::mat4 lightProj{1.f};          // light space → shadow clip space: warp P, then fit to the unit cube
+    float near = 0.f, far = 0.f; // [n_i, f_i], view distance
+    std::vector<glm::vec3> body; // focus body B_i (world space); empty when V_i misses S
+    glm::mat4 lightView{1.f};    // world → light space (rotation looking along l, +y = V_P)
+    glm::mat4 lightProj{1.f};    // light space → shadow clip space: warp P, then fit to the unit cube
     glm::mat4 lightViewProj{1.f};
     int resolution = 0;
-    double nPrime = kUniform;          // n'_i; +∞ = uniform (no warp)
-    double lambda = 0.0;               // Zhang's λ_i = n'_i / (f'−n'); 0 for uniform
-    glm::vec3 warpDir{0.f, 0.f, -1.f}; // V_P, ⊥ l
-    glm::vec3 warpCentre{0.f};         // projection centre c of P (world), when warped
-    float warpDepth = 0.f;             // d: extent of B_i along V_P
-    std::array<glm::vec3, 8> frustum{}; // V_i's corners (bits x: right, y: top, z: far)
+    double nPrime = kUniform;             // n'_i; +∞ = uniform (no warp)
+    double lambda = 0.0;                  // Zhang's λ_i = n'_i / (f'−n'); 0 for uniform
+    glm::vec3 warpDir{0.f, 0.f, -1.f};    // V_P, ⊥ l
+    glm::vec3 warpCentre{0.f};            // projection centre c of P (world), when warped
+    float warpDepth = 0.f;                // d: extent of B_i along V_P
+    std::array<glm::vec3, 8> frustum{};   // V_i's corners (bits x: right, y: top, z: far)
     std::array<glm::vec3, 8> mapVolume{}; // world corners of the map's unit cube (the warp frustum P as fitted)
-    glm::vec2 bodyDepthRange{0.f, 1.f}; // depth of B_i in this map, for display
+    glm::vec2 bodyDepthRange{0.f, 1.f};   // depth of B_i in this map, for display
     glm::vec2 linearDepthRange{0.f, 1.f}; // [lo, hi] of l·x over B_i and the casters up to S (linear z)
-    float linearDepthScale = 1.f;      // 1/(hi − lo): linear depth = (l·x − lo)·scale (Scherzer §4.2)
-    float depthPerUnit = 0.f;          // map depth per scene unit along l, at B_i's centre
-    float dualDepthCap = 0.f;          // bias.z_max in this map's depth units (dual depth's cap)
+    float linearDepthScale = 1.f;         // 1/(hi − lo): linear depth = (l·x − lo)·scale (Scherzer §4.2)
+    float depthPerUnit = 0.f;             // map depth per scene unit along l, at B_i's centre
+    float dualDepthCap = 0.f;             // bias.z_max in this map's depth units (dual depth's cap)
     [[nodiscard]] bool empty() const noexcept { return body.empty(); }
     [[nodiscard]] bool warped() const noexcept { return nPrime < kUniform; }
 };
@@ -45,7 +45,7 @@ struct ShadowPlan {
     float lightViewAngleDeg = 0.f; // acos(v·l): 0 light behind the eye, 180 facing it
     glm::mat4 eyeView{1.f}, eyeProj{1.f};
     std::array<glm::vec3, 8> viewFrustum{}; // V's corners, near to far
-    scene::Aabb sceneBounds;                        // S
+    scene::Aabb sceneBounds;                // S
     glm::vec3 eye{0.f};
     /// An orthographic view from the light framing every B_i, the eye and P's projection centres,
     /// for the unwarped light view (what the warp does, seen without it).
@@ -53,7 +53,7 @@ struct ShadowPlan {
     /// Constant bias: receivers are tested as if moved this far towards the light (scene units),
     /// which is the same offset in every split whatever its warp.
     float receiverOffset = 0.f;
-    BiasSettings bias;     // what the renderer applies, as chosen in the settings
+    BiasSettings bias; // what the renderer applies, as chosen in the settings
     FilterSettings filter;
     /// The maps the eye pass compares against hold linear light depth (bias.linear_z, or VSM's
     /// moments, which are always of linear depth).

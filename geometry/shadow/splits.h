@@ -12,11 +12,11 @@ enum class SplitScheme { Uniform, Log, Practical, Pssm, Adaptive };
 inline constexpr int kMaxSplits = 8;
 
 struct SplitParams {
-    int count = 1;                 // k, 1..kMaxSplits
+    int count = 1; // k, 1..kMaxSplits
     SplitScheme scheme = SplitScheme::Practical;
-    double lambda = 0.5;           // practical: weight of the log scheme
-    double ratio = 2.0;            // pssm: each split this much longer than the one before
-    double alpha = 2.0;            // adaptive: f_i / n_i at γ = 0 (Barroso eq 19)
+    double lambda = 0.5;            // practical: weight of the log scheme
+    double ratio = 2.0;             // pssm: each split this much longer than the one before
+    double alpha = 2.0;             // adaptive: f_i / n_i at γ = 0 (Barroso eq 19)
     bool resolutionFalloff = false; // res_i = res_1 / 2^(i−1)
 };
 

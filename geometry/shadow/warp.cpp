@@ -27,7 +27,7 @@ double nPrimeGlispsm(double n, double f, double phi, double gamma, GlispsmFallof
     if (gamma >= gLim) return nPrimeGlispsm1(n, f, phi, gamma);
     const double t = gamma / gLim;
     const double r = falloff == GlispsmFalloff::Eq18 ? std::pow(1.0 + std::sin((t - 1.0) * kHalfPi), 2.0) // eq 18
-                                                     : std::sin(t * kHalfPi);                              // eq 17
+                                                     : std::sin(t * kHalfPi);                             // eq 17
     return nPrimeGlispsm1(n, f, phi, gLim) / r; // eq 16; r → 0 as γ → 0 gives n' → ∞
 }
 

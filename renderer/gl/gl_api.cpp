@@ -8,8 +8,8 @@ namespace renderer::gl {
 
 const char* loadFunctions(ProcAddressFn getProc) noexcept {
     const char* missing = nullptr;
-#define SSGL_FN(type, name)                                                          \
-    ssgl_##name = reinterpret_cast<type>(getProc(#name));                            \
+#define SSGL_FN(type, name)                                                                                            \
+    ssgl_##name = reinterpret_cast<type>(getProc(#name));                                                              \
     if (!ssgl_##name && !missing) missing = #name;
 #include "gl_functions.inc"
 #undef SSGL_FN

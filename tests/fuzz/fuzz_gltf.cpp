@@ -9,7 +9,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string path = fuzz::writeTemp(data + 1, size - 1, (data[0] & 1) ? ".glb" : ".gltf");
     try {
         (void)geometry::io::loadModel(path);
-    } catch (const std::exception&) {
-    }
+    } catch (const std::exception&) {}
     return 0;
 }

@@ -22,8 +22,6 @@ constexpr int kErrorSamples = 200; // enough for a smooth log-log curve, small e
 
 double radians(double deg) { return deg * std::numbers::pi / 180.0; }
 
-
-
 } // namespace
 
 /// Shortest text that reads back as the same double (so CSV consumers see exact values);
@@ -35,7 +33,6 @@ std::string formatNumber(double v) {
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
     return std::string(buf, r.ptr);
 }
-
 
 namespace {
 
@@ -82,7 +79,6 @@ static std::vector<double> logSamples(double n, double f, int count) {
     return z;
 }
 
-
 std::vector<ErrorRow> errorRows(const CurveParams& o) {
     const Frustum fr = frustumOf(o);
     const double gamma = radians(o.gammaDeg);
@@ -92,7 +88,8 @@ std::vector<ErrorRow> errorRows(const CurveParams& o) {
     std::vector<ErrorRow> rows;
     for (const double z : logSamples(fr.n, fr.f, kErrorSamples))
         for (size_t k = 0; k < kWarpMethods.size(); ++k)
-            rows.push_back({z, kWarpMethods[k], geometry::shadow::aliasingErrorZ(model, nPrimes[k], z)}); // Barroso eq 12
+            rows.push_back(
+                {z, kWarpMethods[k], geometry::shadow::aliasingErrorZ(model, nPrimes[k], z)}); // Barroso eq 12
     return rows;
 }
 
@@ -107,7 +104,6 @@ std::vector<SplitRow> splitRows(const CurveParams& o) {
     return rows;
 }
 
-
 std::vector<double> gammaSamplesDeg(double stepDeg) {
     std::vector<double> g;
     // i·step rather than a running sum, so 0.1-degree steps do not drift.
@@ -120,11 +116,11 @@ std::vector<double> gammaSamplesDeg(double stepDeg) {
     return g;
 }
 
-
 namespace {
 
 std::string frustumText(const CurveParams& o) {
-    return "n = " + formatNumber(o.near) + ", f = " + formatNumber(o.far) + ", fov-y = " + formatNumber(o.fovYDeg) + "°";
+    return "n = " + formatNumber(o.near) + ", f = " + formatNumber(o.far) + ", fov-y = " + formatNumber(o.fovYDeg) +
+           "°";
 }
 
 /// One series per method, x and y picked from the rows.
@@ -133,7 +129,12 @@ std::vector<ChartSeries> methodSeries(const std::vector<Row>& rows, X x, Y y, bo
     std::vector<ChartSeries> series;
     for (size_t k = 0; k < kWarpMethods.size(); ++k) {
         if (skipUniform && kWarpMethods[k] == WarpMethod::Uniform) continue;
-        ChartSeries s{std::string(geometry::shadow::warpMethodName(kWarpMethods[k])), paletteColour(int(k)), {}, SeriesStyle::Lines, 3.f, {}};
+        ChartSeries s{std::string(geometry::shadow::warpMethodName(kWarpMethods[k])),
+                      paletteColour(int(k)),
+                      {},
+                      SeriesStyle::Lines,
+                      3.f,
+                      {}};
         for (const Row& r : rows)
             if (r.method == kWarpMethods[k]) s.points.push_back({x(r), y(r)});
         series.push_back(std::move(s));
@@ -146,7 +147,12 @@ std::vector<ChartSeries> methodSeries(const std::vector<Row>& rows, X x, Y y, bo
 namespace {
 void addMarker(Chart& c, std::optional<double> markerGammaDeg, double lo, double hi) {
     if (!markerGammaDeg || !std::isfinite(*markerGammaDeg)) return;
-    ChartSeries m{"current γ = " + formatNumber(std::round(*markerGammaDeg * 10.0) / 10.0) + "°", Rgb{0, 0, 0}, {}, SeriesStyle::Lines, 3.f, {}};
+    ChartSeries m{"current γ = " + formatNumber(std::round(*markerGammaDeg * 10.0) / 10.0) + "°",
+                  Rgb{0, 0, 0},
+                  {},
+                  SeriesStyle::Lines,
+                  3.f,
+                  {}};
     m.points = {{*markerGammaDeg, lo}, {*markerGammaDeg, hi}};
     c.series.push_back(std::move(m));
 }
@@ -165,7 +171,8 @@ Chart warpChart(const std::vector<WarpRow>& rows, const CurveParams& o, std::opt
     c.title = "Warp parameter n'(γ), " + frustumText(o) + " (uniform: n' = ∞, not drawn)";
     c.x = {"γ (degrees)", false, 0.0, 90.0};
     c.y = {"n'", true, std::nullopt, std::nullopt};
-    c.series = methodSeries(rows, [](const WarpRow& r) { return r.gammaDeg; }, [](const WarpRow& r) { return r.nPrime; }, true);
+    c.series = methodSeries(
+        rows, [](const WarpRow& r) { return r.gammaDeg; }, [](const WarpRow& r) { return r.nPrime; }, true);
     const auto [lo, hi] = yExtent(c);
     addMarker(c, markerGammaDeg, lo, hi);
     return c;
@@ -176,7 +183,8 @@ Chart lambdaChart(const std::vector<WarpRow>& rows, const CurveParams& o, std::o
     c.title = "Zhang's λ(θ) = n'/(f'−n'), " + frustumText(o) + " (uniform: λ = 0, not drawn)";
     c.x = {"θ = γ (degrees)", false, 0.0, 90.0};
     c.y = {"λ", true, std::nullopt, std::nullopt};
-    c.series = methodSeries(rows, [](const WarpRow& r) { return r.gammaDeg; }, [](const WarpRow& r) { return r.lambda; }, true);
+    c.series = methodSeries(
+        rows, [](const WarpRow& r) { return r.gammaDeg; }, [](const WarpRow& r) { return r.lambda; }, true);
     const auto [lo, hi] = yExtent(c);
     addMarker(c, markerGammaDeg, lo, hi);
     return c;
@@ -188,7 +196,8 @@ Chart errorChart(const std::vector<ErrorRow>& rows, const CurveParams& o) {
               std::to_string(o.screenRes) + " px / " + std::to_string(o.mapRes) + " texels";
     c.x = {"z (eye depth)", true, std::nullopt, std::nullopt};
     c.y = {"m_z (pixels per texel)", true, std::nullopt, std::nullopt};
-    c.series = methodSeries(rows, [](const ErrorRow& r) { return r.z; }, [](const ErrorRow& r) { return r.mz; }, false);
+    c.series = methodSeries(
+        rows, [](const ErrorRow& r) { return r.z; }, [](const ErrorRow& r) { return r.mz; }, false);
     return c;
 }
 
@@ -229,8 +238,8 @@ std::vector<Chart> splitCharts(const std::vector<SplitRow>& rows, const CurvePar
 }
 
 std::string splitChartsTitle(const CurveParams& o) {
-    return "Split boundaries against γ, k = " + std::to_string(std::max(1, o.settings.splits.count)) + ", " + frustumText(o);
+    return "Split boundaries against γ, k = " + std::to_string(std::max(1, o.settings.splits.count)) + ", " +
+           frustumText(o);
 }
-
 
 } // namespace ui::charts

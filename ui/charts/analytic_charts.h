@@ -3,10 +3,10 @@
 // (Barroso Fig 7, Zhang Fig 5), m_z(z) for every warp at one γ (Zhang Fig 6), split boundaries
 // against γ. The `curves` command writes them as CSV/SVG; the dashboard's Charts panel draws the
 // same charts live with ImGui.
-#include "ui/charts/chart.h"
 #include "geometry/shadow/settings.h"
 #include "geometry/shadow/splits.h"
 #include "geometry/shadow/warp.h"
+#include "ui/charts/chart.h"
 
 #include <optional>
 #include <string>
@@ -16,12 +16,12 @@ namespace ui::charts {
 
 /// The frustum and model parameters the curves are drawn for.
 struct CurveParams {
-    double near = 1, far = 100, fovYDeg = 60; // eye frustum
-    double gammaStepDeg = 1;                  // sampling of γ for the warp and split tables
-    double gammaDeg = 60;                     // γ of the error table
-    int screenRes = 1080;                     // res_screen_y of the error model
-    int mapRes = 2048;                        // res_map of the error model
-    geometry::shadow::ShadowSettings settings;        // warp options, split count and scheme options
+    double near = 1, far = 100, fovYDeg = 60;  // eye frustum
+    double gammaStepDeg = 1;                   // sampling of γ for the warp and split tables
+    double gammaDeg = 60;                      // γ of the error table
+    int screenRes = 1080;                      // res_screen_y of the error model
+    int mapRes = 2048;                         // res_map of the error model
+    geometry::shadow::ShadowSettings settings; // warp options, split count and scheme options
 };
 
 struct WarpRow {

@@ -32,7 +32,7 @@ struct ChartSeries {
     Rgb colour;
     std::vector<ChartPoint> points; // Lines: in x order; non-plottable points break the line
     SeriesStyle style = SeriesStyle::Lines;
-    float markerRadius = 3.f;       // Markers: dot radius in pixels
+    float markerRadius = 3.f;        // Markers: dot radius in pixels
     std::vector<std::string> labels; // Markers: optional text beside each point (empty: none)
 };
 
@@ -87,10 +87,14 @@ struct ChartFrame {
     double left = 0, top = 0, right = 0, bottom = 0; // the plot area
     AxisRange x, y;
     std::vector<ChartTick> xTicks, yTicks;
-    double legendLeft = 0, legendTop = 0;            // first legend entry
+    double legendLeft = 0, legendTop = 0; // first legend entry
     double titleX = 0, titleY = 0, xLabelY = 0, yLabelX = 0;
-    [[nodiscard]] double px(double v, bool log) const noexcept { return left + axisFraction(v, x, log) * (right - left); }
-    [[nodiscard]] double py(double v, bool log) const noexcept { return bottom - axisFraction(v, y, log) * (bottom - top); }
+    [[nodiscard]] double px(double v, bool log) const noexcept {
+        return left + axisFraction(v, x, log) * (right - left);
+    }
+    [[nodiscard]] double py(double v, bool log) const noexcept {
+        return bottom - axisFraction(v, y, log) * (bottom - top);
+    }
 };
 inline constexpr double kLegendRowHeight = 18;
 /// The frame of `chart` drawn in the panel [left, right] × [top, bottom]. Compact frames (small

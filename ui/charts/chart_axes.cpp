@@ -17,9 +17,7 @@ constexpr double kSlack = 1e-9;
 
 /// m × 10^e, computed so that negative exponents divide by an exact power of ten: 3 × 10^-1
 /// becomes 3 / 10 = 0.3 rather than 3 × 0.1 = 0.30000000000000004.
-double scaled(double m, int e) {
-    return e >= 0 ? m * std::pow(10.0, e) : m / std::pow(10.0, -e);
-}
+double scaled(double m, int e) { return e >= 0 ? m * std::pow(10.0, e) : m / std::pow(10.0, -e); }
 
 /// A nice linear step (1, 2 or 5 × 10^e) for [lo, hi], as (mantissa, exponent): the smallest step
 /// giving at most maxTicks ticks. `widened` counts the ticks of the range widened outwards to the
@@ -85,7 +83,10 @@ std::vector<double> logTicks(double lo, double hi, int maxTicks) {
         for (const double m : {1.0, 2.0, 5.0})
             if (const double v = scaled(m, e); insideLog(v, lo, hi)) ticks.push_back(v);
     if (ticks.size() > static_cast<size_t>(maxTicks)) {
-        std::erase_if(ticks, [](double v) { const double l = std::log10(v); return std::abs(l - std::round(l)) > 1e-9; });
+        std::erase_if(ticks, [](double v) {
+            const double l = std::log10(v);
+            return std::abs(l - std::round(l)) > 1e-9;
+        });
     }
     // Inside one decade (e.g. 2..5) the 1-2-5 ticks are too sparse: plain linear ticks read better.
     if (ticks.size() < 2) return linearTicks(lo, hi, maxTicks);
@@ -96,9 +97,15 @@ std::vector<double> logTicks(double lo, double hi, int maxTicks) {
 
 Rgb paletteColour(int i) noexcept {
     // Tableau 10: distinguishable, and readable on white.
-    static constexpr std::array<Rgb, 10> kPalette{{{0x4e, 0x79, 0xa7}, {0xf2, 0x8e, 0x2b}, {0xe1, 0x57, 0x59},
-                                                   {0x76, 0xb7, 0xb2}, {0x59, 0xa1, 0x4f}, {0xed, 0xc9, 0x48},
-                                                   {0xb0, 0x7a, 0xa1}, {0xff, 0x9d, 0xa7}, {0x9c, 0x75, 0x5f},
+    static constexpr std::array<Rgb, 10> kPalette{{{0x4e, 0x79, 0xa7},
+                                                   {0xf2, 0x8e, 0x2b},
+                                                   {0xe1, 0x57, 0x59},
+                                                   {0x76, 0xb7, 0xb2},
+                                                   {0x59, 0xa1, 0x4f},
+                                                   {0xed, 0xc9, 0x48},
+                                                   {0xb0, 0x7a, 0xa1},
+                                                   {0xff, 0x9d, 0xa7},
+                                                   {0x9c, 0x75, 0x5f},
                                                    {0xba, 0xb0, 0xac}}};
     const int n = static_cast<int>(kPalette.size());
     return kPalette[static_cast<size_t>(((i % n) + n) % n)];
@@ -219,8 +226,10 @@ ChartFrame chartFrame(const Chart& c, double left, double top, double right, dou
     const int yTicks = std::max(2, static_cast<int>(f.bottom - f.top) / kPixelsPerYTick);
     f.x = axisRange(c, true, xTicks);
     f.y = axisRange(c, false, yTicks);
-    for (const double t : niceTicks(f.x.lo, f.x.hi, c.x.log, xTicks)) f.xTicks.push_back({t, f.px(t, c.x.log), formatTick(t)});
-    for (const double t : niceTicks(f.y.lo, f.y.hi, c.y.log, yTicks)) f.yTicks.push_back({t, f.py(t, c.y.log), formatTick(t)});
+    for (const double t : niceTicks(f.x.lo, f.x.hi, c.x.log, xTicks))
+        f.xTicks.push_back({t, f.px(t, c.x.log), formatTick(t)});
+    for (const double t : niceTicks(f.y.lo, f.y.hi, c.y.log, yTicks))
+        f.yTicks.push_back({t, f.py(t, c.y.log), formatTick(t)});
     f.legendLeft = f.right + 14;
     f.legendTop = f.top + 8;
     f.titleX = (left + right) / 2;

@@ -17,7 +17,8 @@ constexpr ImU32 kInk = IM_COL32(51, 51, 51, 255), kGrid = IM_COL32(228, 228, 228
 void text(ImDrawList* dl, float size, float x, float y, const std::string& s, float anchor, ImU32 colour = kInk) {
     ImFont* font = ImGui::GetFont();
     const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.f, s.c_str());
-    dl->AddText(font, size, ImVec2(std::round(x - anchor * extent.x), std::round(y - extent.y * 0.75f)), colour, s.c_str());
+    dl->AddText(font, size, ImVec2(std::round(x - anchor * extent.x), std::round(y - extent.y * 0.75f)), colour,
+                s.c_str());
 }
 
 } // namespace
@@ -49,7 +50,9 @@ void drawChart(ImDrawList* dl, const Chart& c, const PlotArea& area, const float
     ChartPoint bestPoint;
     std::string bestLabel;
     for (const ChartSeries& s : c.series) {
-        const auto px = [&](const ChartPoint& p) { return ImVec2(float(f.px(p.x, c.x.log)), float(f.py(p.y, c.y.log))); };
+        const auto px = [&](const ChartPoint& p) {
+            return ImVec2(float(f.px(p.x, c.x.log)), float(f.py(p.y, c.y.log)));
+        };
         const auto consider = [&](const ChartPoint& p, const std::string& label) {
             if (!mouse) return;
             const ImVec2 q = px(p);
@@ -62,7 +65,8 @@ void drawChart(ImDrawList* dl, const Chart& c, const PlotArea& area, const float
                 if (!plottable(p.x, c.x.log) || !plottable(p.y, c.y.log)) continue;
                 dl->AddCircleFilled(px(p), s.markerRadius, col(s.colour), 16);
                 const std::string label = i < s.labels.size() ? s.labels[i] : std::string();
-                if (!label.empty()) text(dl, 12.f, px(p).x + s.markerRadius + 3, px(p).y - s.markerRadius - 2, label, 0.f);
+                if (!label.empty())
+                    text(dl, 12.f, px(p).x + s.markerRadius + 3, px(p).y - s.markerRadius - 2, label, 0.f);
                 consider(p, label);
             }
             continue;
@@ -81,7 +85,8 @@ void drawChart(ImDrawList* dl, const Chart& c, const PlotArea& area, const float
         if (s.style == SeriesStyle::Markers)
             dl->AddCircleFilled(ImVec2(float(f.legendLeft + 11), float(y)), s.markerRadius, col(s.colour), 16);
         else
-            dl->AddLine(ImVec2(float(f.legendLeft), float(y)), ImVec2(float(f.legendLeft + 22), float(y)), col(s.colour), 3.f);
+            dl->AddLine(ImVec2(float(f.legendLeft), float(y)), ImVec2(float(f.legendLeft + 22), float(y)),
+                        col(s.colour), 3.f);
         text(dl, 13.f, float(f.legendLeft + 28), float(y + 4), s.name, 0.f);
         y += kLegendRowHeight;
     }
@@ -93,8 +98,10 @@ void drawChart(ImDrawList* dl, const Chart& c, const PlotArea& area, const float
         const ImVec2 q(float(f.px(bestPoint.x, c.x.log)), float(f.py(bestPoint.y, c.y.log)));
         dl->AddCircle(q, 6.f, kInk, 16, 1.5f);
         const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(13.f, FLT_MAX, 0.f, buf);
-        const float bx = std::min(q.x + 10.f, float(f.right) - size.x - 6.f), by = std::max(q.y - size.y - 12.f, float(f.top) + 2.f);
-        dl->AddRectFilled(ImVec2(bx - 4, by - 2), ImVec2(bx + size.x + 4, by + size.y + 2), IM_COL32(255, 255, 230, 240));
+        const float bx = std::min(q.x + 10.f, float(f.right) - size.x - 6.f),
+                    by = std::max(q.y - size.y - 12.f, float(f.top) + 2.f);
+        dl->AddRectFilled(ImVec2(bx - 4, by - 2), ImVec2(bx + size.x + 4, by + size.y + 2),
+                          IM_COL32(255, 255, 230, 240));
         dl->AddText(ImGui::GetFont(), 13.f, ImVec2(bx, by), kInk, buf);
     }
 }

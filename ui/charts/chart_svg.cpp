@@ -41,7 +41,6 @@ std::string colour(const Rgb& c) {
     return buf;
 }
 
-
 struct Box {
     double left, top, right, bottom;
     [[nodiscard]] double width() const { return right - left; }
@@ -79,7 +78,8 @@ std::string axesSvg(const ChartFrame& f) {
 /// One <polyline> per run of plottable points (a single point becomes a dot), or one dot per point
 /// for marker series (with their labels), clipped to the plot.
 std::string seriesSvg(const Chart& c, const ChartFrame& f, const std::string& clipId) {
-    std::string out = "<g clip-path=\"url(#" + clipId + ")\" fill=\"none\" stroke-width=\"2\" stroke-linejoin=\"round\">\n";
+    std::string out =
+        "<g clip-path=\"url(#" + clipId + ")\" fill=\"none\" stroke-width=\"2\" stroke-linejoin=\"round\">\n";
     std::string labels;
     for (const ChartSeries& s : c.series) {
         const std::string stroke = colour(s.colour);
@@ -118,8 +118,7 @@ std::string legendSvg(const Chart& c, const ChartFrame& f) {
         if (s.style == SeriesStyle::Markers)
             out += "<circle cx=\"" + num(f.legendLeft + 11) + "\" cy=\"" + num(y) + "\" r=\"" + num(s.markerRadius) +
                    "\" fill=\"" + colour(s.colour) + "\"/>\n";
-        else
-            out += line(f.legendLeft, y, f.legendLeft + 22, y, colour(s.colour).c_str(), 3);
+        else out += line(f.legendLeft, y, f.legendLeft + 22, y, colour(s.colour).c_str(), 3);
         out += text(f.legendLeft + 28, y + 4, s.name, 12, "start");
         y += kLegendRowHeight;
     }
@@ -131,7 +130,8 @@ std::string panelSvg(const Chart& c, const Box& panel, const std::string& id) {
     const ChartFrame f = chartFrame(c, panel.left, panel.top, panel.right, panel.bottom);
     const std::string clipId = "plot-" + id;
     std::string out = "<g>\n<clipPath id=\"" + clipId + "\"><rect x=\"" + num(f.left) + "\" y=\"" + num(f.top) +
-                      "\" width=\"" + num(f.right - f.left) + "\" height=\"" + num(f.bottom - f.top) + "\"/></clipPath>\n";
+                      "\" width=\"" + num(f.right - f.left) + "\" height=\"" + num(f.bottom - f.top) +
+                      "\"/></clipPath>\n";
     out += text(f.titleX, f.titleY, c.title, 14, "middle", " font-weight=\"bold\"");
     out += axesSvg(f);
     out += seriesSvg(c, f, clipId);

@@ -10,10 +10,10 @@
 namespace ui::charts {
 
 struct TradeoffPoint {
-    std::string label;   // e.g. "paper filter.kernel=5"
-    std::string preset;  // preset file stem, "" for none ("ssm" and "paper" are highlighted)
-    double frameMs = 0;  // x
-    double p95 = 0;      // y: aliasing p95 m
+    std::string label;  // e.g. "paper filter.kernel=5"
+    std::string preset; // preset file stem, "" for none ("ssm" and "paper" are highlighted)
+    double frameMs = 0; // x
+    double p95 = 0;     // y: aliasing p95 m
 };
 
 [[nodiscard]] Chart tradeoffChart(const std::vector<TradeoffPoint>& points, const std::string& timeLabel);
