@@ -1,3 +1,12 @@
+// Index
+//   [SECTION] GL helpers ................ makeSampler, bindTexture, needsPeeling
+//   [SECTION] Set-up and shared state ... Renderer, ~Renderer, setScene, warnOnce, depthProgram, uploadShadowBlock
+//   [SECTION] The frame ................. render, waitForTimings
+//   [SECTION] Shadow maps ............... drawCasters, shadowPass, peelAndCombine, momentsPass
+//   [SECTION] Eye view .................. eyePass, eyeBlurAndCompose
+//   [SECTION] Light views ............... lightViewPass, unwarpedViewPass
+//   [SECTION] Reading back .............. readShadowMask, readShadowDepth, readAux, readPositions, readNormals
+
 #include "renderer.h"
 
 #include "geometry/shadow/culling.h"
@@ -15,6 +24,8 @@ using geometry::shadow::FilterType;
 
 namespace {
 const glm::vec3 kSky{0.62f, 0.72f, 0.85f};
+
+// ---- [SECTION] GL helpers -------------------------------------------------------------------
 
 GLuint makeSampler(GLenum filter, bool compare) {
     GLuint s = 0;
@@ -38,6 +49,8 @@ bool needsPeeling(const geometry::shadow::ShadowPlan& plan) {
     return plan.bias.type == BiasType::Midpoint || plan.bias.type == BiasType::DualDepth;
 }
 } // namespace
+
+// ---- [SECTION] Set-up and shared state ------------------------------------------------------
 
 Renderer::Renderer(const geometry::scene::Scene& scene, RendererLimits limits)
     : scene_(std::make_unique<GpuScene>(scene)), limits_(limits) {
@@ -89,6 +102,8 @@ void Renderer::uploadShadowBlock(const geometry::shadow::ShadowPlan& plan) {
     glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlockBuffer_);
 }
 
+// ---- [SECTION] The frame --------------------------------------------------------------------
+
 void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
                       const ViewOptions& options) {
     ViewOptions views = options;
@@ -114,6 +129,8 @@ const PassTimes& Renderer::waitForTimings() noexcept {
     stats_.gpu = timers_.waitForAll();
     return stats_.gpu;
 }
+
+// ---- [SECTION] Shadow maps ------------------------------------------------------------------
 
 void Renderer::drawCasters(const geometry::shadow::SplitPlan& split, Program& program, int index, bool backFacesOnly) {
     program.set("uSplit", index);
@@ -258,6 +275,8 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
     sampledDepth_ = moments_.depthTexture();
 }
 
+// ---- [SECTION] Eye view ---------------------------------------------------------------------
+
 void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport) {
     // 58 bytes per pixel over eight targets; refuse before the driver fails (or swaps) on a huge size.
     const double bytes = 58.0 * viewport.width * viewport.height;
@@ -351,6 +370,8 @@ void Renderer::eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan) {
     glEnable(GL_DEPTH_TEST);
 }
 
+// ---- [SECTION] Light views ------------------------------------------------------------------
+
 void Renderer::lightViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views) {
     const int split = std::clamp(views.lightSplit, 0, int(plan.splits.size()) - 1);
     light_.ensure(views.lightViewSize, views.lightViewSize);
@@ -388,6 +409,8 @@ void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const 
     }
     if (views.overlays) lines_.draw(geometry::shadow::unwarpedViewOverlays(plan), plan.unwarpedViewProj);
 }
+
+// ---- [SECTION] Reading back -----------------------------------------------------------------
 
 std::vector<float> Renderer::readShadowMask() const {
     const int w = eyeBuffers_.width(), h = eyeBuffers_.height();

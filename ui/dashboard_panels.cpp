@@ -1,5 +1,12 @@
 // The dashboard's view panels (eye, light, heatmap) with zoom, pan and the pixel inspector; the
 // splitters between panels; the status bar.
+//
+// Index
+//   [SECTION] Drawing helpers ................ drawImage, markPixel, panelBegin, zoomButtons, clickedWithoutDrag
+//   [SECTION] Image areas and pixel probes ... imageArea, probeEye, probeLight
+//   [SECTION] View panels .................... drawEyePanel, drawLightPanel, drawHeatmapPanel
+//   [SECTION] Splitters ...................... drawSplitters
+//   [SECTION] Status bar ..................... describeProbe, drawStatusBar
 #include "dashboard.h"
 
 #include "widget_map.h"
@@ -13,6 +20,8 @@
 namespace ui {
 
 namespace {
+
+// ---- [SECTION] Drawing helpers --------------------------------------------------------------
 
 ImTextureID textureId(GLuint t) { return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t)); }
 ImVec2 iv(glm::vec2 v) { return {v.x, v.y}; }
@@ -65,6 +74,8 @@ bool clickedWithoutDrag() {
 }
 
 } // namespace
+
+// ---- [SECTION] Image areas and pixel probes -------------------------------------------------
 
 std::optional<glm::ivec2> Dashboard::imageArea(ViewPanel panel, GLuint texture, int w, int h, const Rect& area,
                                                bool cameraControls, const char* id) {
@@ -143,6 +154,8 @@ void Dashboard::probeLight(glm::ivec2 px) {
     }
     hovered_ = p;
 }
+
+// ---- [SECTION] View panels ------------------------------------------------------------------
 
 void Dashboard::drawEyePanel() {
     if (panelBegin("eye_panel", rects_.eye)) {
@@ -275,6 +288,8 @@ void Dashboard::drawHeatmapPanel() {
     ImGui::EndChild();
 }
 
+// ---- [SECTION] Splitters --------------------------------------------------------------------
+
 void Dashboard::drawSplitters(float width, float height) {
     for (int i = 0; i < int(Splitter::Count); ++i) {
         const Rect& r = rects_.splitters[i];
@@ -294,6 +309,8 @@ void Dashboard::drawSplitters(float width, float height) {
         ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.right(), r.bottom()), colour);
     }
 }
+
+// ---- [SECTION] Status bar -------------------------------------------------------------------
 
 std::string describeProbe(const PixelProbe& p) {
     char buf[512];

@@ -1,3 +1,10 @@
+// Index
+//   [SECTION] Small helpers ............................... finite, maxAbs, resolveThreads, errorName, parallelFor
+//   [SECTION] Packet layouts .............................. RunLayout, TileLayout, forEachPacket, setLane, checkInputs
+//   [SECTION] Impl: device, scene and the error channel ... onError, throwIfError, addMesh, build
+//   [SECTION] GroundTruth ................................. PrimaryHits::hitCount, GroundTruth, epsilon
+//   [SECTION] Tracing rays ................................ traceOccluded, occluded, primaryHits
+
 #include "geometry/analysis/ground_truth.h"
 
 #include <embree3/rtcore.h>
@@ -26,7 +33,7 @@ constexpr float kMinEpsilon = 1e-6f;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr size_t kNoPoint = std::numeric_limits<size_t>::max();
 
-// ---- Small helpers --------------------------------------------------------------------------
+// ---- [SECTION] Small helpers ----------------------------------------------------------------
 
 bool finite(const glm::vec3& v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -67,7 +74,7 @@ template <class Fn> void parallelFor(size_t tasks, int threads, const Fn& fn) {
     worker();
 }
 
-// ---- Packet layouts: which point each lane of packet k traces -------------------------------
+// ---- [SECTION] Packet layouts: which point each lane of packet k traces ---------------------
 
 using Lanes = std::array<size_t, kLanes>;
 
@@ -166,7 +173,7 @@ void checkInputs(const std::vector<glm::vec3>& points, const std::vector<glm::ve
 
 } // namespace
 
-// ---- Impl: device, scene and the error channel ----------------------------------------------
+// ---- [SECTION] Impl: device, scene and the error channel ------------------------------------
 
 struct GroundTruth::Impl {
     RTCDevice device = nullptr;
@@ -271,7 +278,7 @@ struct GroundTruth::Impl {
     }
 };
 
-// ---- GroundTruth ----------------------------------------------------------------------------
+// ---- [SECTION] GroundTruth ------------------------------------------------------------------
 
 size_t PrimaryHits::hitCount() const noexcept {
     return static_cast<size_t>(
@@ -289,6 +296,8 @@ float GroundTruth::epsilon(const glm::vec3& p) const noexcept {
     const float scale = impl_ ? impl_->epsilonScale : 0.f;
     return std::max(kMinEpsilon, kRelativeEpsilon * std::max(maxAbs(p), scale));
 }
+
+// ---- [SECTION] Tracing rays -----------------------------------------------------------------
 
 namespace {
 

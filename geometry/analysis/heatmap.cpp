@@ -1,3 +1,12 @@
+// Index
+//   [SECTION] Colour helpers ... toByte, setPixel, diverging, requireImageInput, blankImage
+//   [SECTION] Legend drawing ... textWidth, Canvas, layoutLegend, drawBar, drawEntries, shortNumber
+//   [SECTION] PFM helpers ...... headerToken, parseSide, swapFloats
+//   [SECTION] Colour maps ...... divergingLog2, falseColourTruth, splitColour
+//   [SECTION] Heatmap images ... aliasingHeatmap, truthHeatmap
+//   [SECTION] Legends .......... aliasingLegend, truthLegend, splitLegend, legendRect, drawLegend
+//   [SECTION] PFM files ........ writePfm, readPfm
+
 #include "geometry/analysis/heatmap.h"
 
 // stb_easy_font is all `static` functions; the ones we don't call would warn.
@@ -19,7 +28,7 @@
 namespace geometry::analysis {
 namespace {
 
-// ---- colour helpers -------------------------------------------------------------------------
+// ---- [SECTION] Colour helpers ---------------------------------------------------------------
 
 uint8_t toByte(float c) { return uint8_t(std::lround(std::clamp(c, 0.f, 1.f) * 255.f)); }
 
@@ -55,7 +64,7 @@ void requireImageInput(size_t n, int w, int h, const char* what) {
 
 Image blankImage(int w, int h) { return Image{w, h, std::vector<uint8_t>(size_t(w) * size_t(h) * 4, 0)}; }
 
-// ---- legend drawing -------------------------------------------------------------------------
+// ---- [SECTION] Legend drawing ---------------------------------------------------------------
 // Layout is computed in font units (one stb_easy_font pixel) and scaled by an integer factor
 // when drawn, so the legend stays crisp.
 
@@ -211,7 +220,7 @@ std::string shortNumber(float x) {
     return buf;
 }
 
-// ---- PFM ------------------------------------------------------------------------------------
+// ---- [SECTION] PFM helpers ------------------------------------------------------------------
 
 constexpr int kPfmMaxSide = 65536;
 constexpr size_t kPfmMaxPixels = size_t(1) << 28;
@@ -257,7 +266,7 @@ void swapFloats(std::span<float> v) {
 
 } // namespace
 
-// ---- colour maps ----------------------------------------------------------------------------
+// ---- [SECTION] Colour maps ------------------------------------------------------------------
 
 glm::vec3 divergingLog2(float m, float range) {
     if (!std::isfinite(m) || !(m > 0.f) || !(range > 0.f) || !std::isfinite(range)) return kInvalidColour;
@@ -278,7 +287,7 @@ glm::vec3 splitColour(int i) {
     return kSplits[size_t(((i % 8) + 8) % 8)];
 }
 
-// ---- heatmap images -------------------------------------------------------------------------
+// ---- [SECTION] Heatmap images ---------------------------------------------------------------
 
 Image aliasingHeatmap(std::span<const float> m, std::span<const uint8_t> receiver, int width, int height, float range) {
     requireImageInput(m.size(), width, height, "aliasingHeatmap");
@@ -308,7 +317,7 @@ Image truthHeatmap(std::span<const float> s, std::span<const uint8_t> occluded, 
     return img;
 }
 
-// ---- legends --------------------------------------------------------------------------------
+// ---- [SECTION] Legends ----------------------------------------------------------------------
 
 Legend aliasingLegend(float range) {
     if (!(range > 0.f) || !std::isfinite(range)) range = 4;
@@ -366,7 +375,7 @@ void drawLegend(Image& img, const Legend& legend) {
     drawEntries(cv, legend, l);
 }
 
-// ---- PFM ------------------------------------------------------------------------------------
+// ---- [SECTION] PFM files --------------------------------------------------------------------
 
 void writePfm(const std::string& path, std::span<const float> values, int width, int height) {
     requireImageInput(values.size(), width, height, "writePfm");

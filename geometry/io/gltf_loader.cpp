@@ -1,6 +1,15 @@
 // glTF 2.0 loading (see gltf_loader.h). tinygltf parses the JSON / GLB container and resolves
 // buffers; everything it leaves unchecked (accessor ranges, component types, index values, the
 // shape of the node graph) is validated here before any element is read.
+//
+// Index
+//   [SECTION] Errors .................... GltfError, oneLine, str
+//   [SECTION] Files ..................... readRegularFile, fsReadWholeFile, looksLikeJson, nestingWithinLimit, parse
+//   [SECTION] Node hierarchy ............ localMatrix, NodeWalker, rootNodes, collectInstances
+//   [SECTION] Accessors ................. viewAccessor, componentName, typeName, readVec3, readIndices
+//   [SECTION] Primitives ................ toTriangleList, baseColor, readNormals, decodePrimitive
+//   [SECTION] Cleaning and instancing ... decodeCost, checkDecodeBudget, cleanUsedMeshes, emitInstances
+//   [SECTION] Loading ................... loadChecked, loadGltf
 #include "geometry/io/gltf_loader.h"
 
 #include "geometry/scene/chunking.h"
@@ -41,6 +50,9 @@ constexpr glm::vec3 kDefaultColor{0.8f};
 
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "positions are copied as packed floats");
 
+// ---------------------------------------------------------------------------------------------
+// [SECTION] Errors
+
 /// A problem with the file's content; loadGltf() prefixes the path.
 struct GltfError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -64,7 +76,7 @@ std::string oneLine(std::string_view text) {
 std::string str(size_t n) { return std::to_string(n); }
 
 // ---------------------------------------------------------------------------------------------
-// Files
+// [SECTION] Files
 
 /// Reads a regular file whole. Devices, FIFOs and directories are refused, so a buffer URI
 /// naming /dev/zero or a pipe cannot hang the loader or grow without bound.
@@ -202,7 +214,7 @@ Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Node hierarchy
+// [SECTION] Node hierarchy
 
 void requireFinite(const std::vector<double>& values, const std::string& what) {
     for (double v : values)
@@ -332,7 +344,7 @@ std::vector<Instance> collectInstances(const tinygltf::Model& model, std::vector
 }
 
 // ---------------------------------------------------------------------------------------------
-// Accessors
+// [SECTION] Accessors
 
 /// A bounds-checked window on an accessor's elements: element(i) is valid for i < count.
 struct AccessorView {
@@ -456,7 +468,7 @@ std::vector<uint32_t> readIndices(const AccessorView& v, size_t vertexCount, con
 }
 
 // ---------------------------------------------------------------------------------------------
-// Primitives
+// [SECTION] Primitives
 
 std::string modeName(int mode) {
     switch (mode) {
@@ -580,6 +592,9 @@ std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t 
     return mesh;
 }
 
+// ---------------------------------------------------------------------------------------------
+// [SECTION] Cleaning and instancing
+
 /// A primitive decoded and cleaned once, however many nodes instance it.
 struct CleanPrimitive {
     scene::Mesh mesh;
@@ -677,6 +692,9 @@ void emitInstances(const std::vector<Instance>& instances, CleanedMeshes& cleane
     }
     notify(progress, 1.f, "chunking");
 }
+
+// ---------------------------------------------------------------------------------------------
+// [SECTION] Loading
 
 LoadedModel loadChecked(const std::string& path, const CleanupOptions& options, const Progress& progress) {
     notify(progress, 0.f, "reading");

@@ -1,5 +1,13 @@
 // Mesh cleanup on flat arrays (positions/indices). A halfedge structure cannot hold the
 // non-manifold edges CAD exports are full of, and flat arrays keep every step O(n).
+//
+// Index
+//   [SECTION] Cleanup report ............. CleanupReport::operator+=
+//   [SECTION] Small helpers .............. mix, tableSize, triangles, finite
+//   [SECTION] Bad faces and duplicates ... dropNonFinite, mergeDuplicates, dropDegenerate, dropDuplicateFaces
+//   [SECTION] Orientation ................ VertexFaces, cornerOf, fixOrientation
+//   [SECTION] Normals .................... clusterCornerNormals, computeNormals
+//   [SECTION] Cleaning a mesh ............ cleanMesh
 #include "geometry/io/model_loader.h"
 
 #include <algorithm>
@@ -10,6 +18,8 @@
 #include <tuple>
 
 namespace geometry::io {
+
+// ---- [SECTION] Cleanup report ---------------------------------------------------------------
 
 CleanupReport& CleanupReport::operator+=(const CleanupReport& o) {
     inputVertices += o.inputVertices;
@@ -28,6 +38,8 @@ CleanupReport& CleanupReport::operator+=(const CleanupReport& o) {
 }
 
 namespace {
+
+// ---- [SECTION] Small helpers ----------------------------------------------------------------
 
 constexpr uint32_t kNone = ~0u;
 using Tri = std::array<uint32_t, 3>;
@@ -54,6 +66,8 @@ std::vector<Tri> triangles(const scene::Mesh& mesh) {
 }
 
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// ---- [SECTION] Bad faces and duplicates -----------------------------------------------------
 
 /// Drops faces with an index out of range or touching a NaN/Inf vertex. Returns the
 /// finite-vertex mask.
@@ -199,6 +213,8 @@ void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupRepor
     tris.resize(out);
 }
 
+// ---- [SECTION] Orientation ------------------------------------------------------------------
+
 /// Vertex → incident faces, compressed (counting sort).
 struct VertexFaces {
     std::vector<uint32_t> offset, faces;
@@ -263,6 +279,8 @@ void fixOrientation(size_t vertexCount, std::vector<Tri>& tris, CleanupReport& r
     for (size_t f = 0; f < tris.size(); ++f)
         if (flip[f]) std::swap(tris[f][1], tris[f][2]);
 }
+
+// ---- [SECTION] Normals ----------------------------------------------------------------------
 
 /// Above this many faces around one vertex (fans of huge cones, hostile input) per-corner
 /// averaging is quadratic; faces are grouped instead.
@@ -355,6 +373,8 @@ void computeNormals(scene::Mesh& mesh, const std::vector<glm::vec3>& pos, std::v
 }
 
 } // namespace
+
+// ---- [SECTION] Cleaning a mesh --------------------------------------------------------------
 
 CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options) {
     CleanupReport r;

@@ -3,6 +3,13 @@
 // token is the keyword; vertices in a first pass, faces in a second), so that what passes here
 // is what OpenMesh will read. Stricter than OpenMesh where that is simpler to keep safe: every
 // face corner and index must be well formed, where OpenMesh skips some garbage silently.
+//
+// Index
+//   [SECTION] Tokens and messages ........ isBlank, trim, nextToken, quoted, shownIndex, plural
+//   [SECTION] Numbers and face corners ... checkCoordinate, splitCorner
+//   [SECTION] The validator .............. Elements, ObjValidator::line, lineTooLong, finish
+//   [SECTION] Checks per line ............ checkText, vertex, texcoord, face, checkIndex, materialLibrary
+//   [SECTION] Reading the file ........... validateObjFile
 #include "geometry/io/obj_validate.h"
 
 #include <algorithm>
@@ -34,6 +41,8 @@ constexpr size_t kBlockBytes = size_t(1) << 20;
 // OpenMesh reads every file an `mtllib` line names, once per line, whole.
 constexpr uint64_t kMaxMaterialLibraries = 64;
 constexpr uint64_t kMaxMaterialBytes = uint64_t(64) << 20; // all of them together
+
+// ---- [SECTION] Tokens and messages ----------------------------------------------------------
 
 /// Whitespace as OpenMesh's trimString and operator>> see it in text that passed checkText
 /// (the other C whitespace, \v and \f, is refused there as control characters).
@@ -76,6 +85,8 @@ std::string plural(uint64_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
+// ---- [SECTION] Numbers and face corners -----------------------------------------------------
+
 enum class Number { Ok, NotANumber, NotFinite, OutOfRange };
 
 /// A coordinate that OpenMesh's `stream >> float` reads whole and without failing. from_chars
@@ -107,6 +118,8 @@ bool splitCorner(std::string_view token, std::array<std::string_view, 3>& part) 
     }
     return false; // a fourth component
 }
+
+// ---- [SECTION] The validator ----------------------------------------------------------------
 
 /// Vertices, texture coordinates or normals: how many so far, and the largest positive index
 /// a face used (checked at the end: OpenMesh reads all vertices before any face).
@@ -162,6 +175,8 @@ private:
         throw std::runtime_error(path_ + ": line " + std::to_string(line) + ": " + problem);
     }
     [[noreturn]] void fail(const std::string& problem) const { failAt(line_, problem); }
+
+    // ---- [SECTION] Checks per line ----------------------------------------------------------
 
     /// No control characters but tab: NUL bytes or binary data would reach OpenMesh's string
     /// handling (a NUL cuts an `mtllib` name short), and a lone CR is no line ending it knows.
@@ -292,6 +307,8 @@ private:
 };
 
 } // namespace
+
+// ---- [SECTION] Reading the file -------------------------------------------------------------
 
 void validateObjFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

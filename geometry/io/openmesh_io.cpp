@@ -7,6 +7,16 @@
 // OpenMesh's readers trust their input (they reserve and loop by header counts and per-face
 // valences), so every file is validated here first, against its real size, before a reader sees
 // it (OBJ in obj_validate.cpp). Every error is a std::runtime_error "PATH: problem" on one line.
+//
+// Index
+//   [SECTION] Files ...................... fail, checkedFileSize, readAll, readHead
+//   [SECTION] Importer ................... FlatImporter
+//   [SECTION] Text scanning .............. LineScanner, tokenize, parseInt, checkTextFace, checkCounts
+//   [SECTION] STL ........................ validateStl, binaryStlHasNonFinite, readBinaryStlDirect
+//   [SECTION] OFF ........................ validateOff
+//   [SECTION] PLY ........................ plyTypeSize, readBinaryUint, checkPlyTextRecord, validatePly
+//   [SECTION] Reading through OpenMesh ... QuietOpenMesh, readThroughOpenMesh, readOpenMeshFile
+//   [SECTION] Saving ..................... toOpenMesh, saveMesh
 #include "geometry/io/model_loader.h"
 #include "geometry/io/obj_validate.h"
 
@@ -41,6 +51,8 @@ constexpr uint64_t kMaxVertices = 50'000'000;
 constexpr uint64_t kMaxFaces = 50'000'000;
 constexpr uint64_t kMaxFaceValence = 1'000'000;
 
+// ---- [SECTION] Files ------------------------------------------------------------------------
+
 [[noreturn]] void fail(const std::string& path, const std::string& problem) {
     throw std::runtime_error(path + ": " + problem);
 }
@@ -71,7 +83,7 @@ std::string readHead(const std::string& path, uint64_t size, size_t n) {
     return readAll(path, std::min<uint64_t>(size, n)); // reads the first n bytes only
 }
 
-// ---- importer --------------------------------------------------------------------------------
+// ---- [SECTION] Importer ---------------------------------------------------------------------
 
 using namespace OpenMesh;
 
@@ -160,7 +172,7 @@ private:
     uint64_t fileSize_;
 };
 
-// ---- text scanning ---------------------------------------------------------------------------
+// ---- [SECTION] Text scanning ----------------------------------------------------------------
 
 /// Splits text into lines and lines into whitespace-separated tokens without copying.
 struct LineScanner {
@@ -236,7 +248,7 @@ void checkCounts(const std::string& path, uint64_t vertices, uint64_t faces, uin
                        " bytes (truncated or corrupt file)");
 }
 
-// ---- STL -------------------------------------------------------------------------------------
+// ---- [SECTION] STL --------------------------------------------------------------------------
 
 enum class StlKind { Ascii, Binary };
 
@@ -293,7 +305,7 @@ scene::Mesh readBinaryStlDirect(const std::string& data) {
     return mesh;
 }
 
-// ---- OFF -------------------------------------------------------------------------------------
+// ---- [SECTION] OFF --------------------------------------------------------------------------
 
 void validateOff(const std::string& path, uint64_t size) {
     const std::string data = readAll(path, size);
@@ -337,7 +349,7 @@ void validateOff(const std::string& path, uint64_t size) {
     }
 }
 
-// ---- PLY -------------------------------------------------------------------------------------
+// ---- [SECTION] PLY --------------------------------------------------------------------------
 
 struct PlyProperty {
     std::string name;
@@ -505,7 +517,7 @@ void validatePly(const std::string& path, uint64_t size) {
     }
 }
 
-// ---- reading through OpenMesh ------------------------------------------------------------------
+// ---- [SECTION] Reading through OpenMesh -----------------------------------------------------
 
 } // namespace
 
@@ -570,6 +582,8 @@ scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext) {
 }
 
 } // namespace geometry::io::detail
+
+// ---- [SECTION] Saving -----------------------------------------------------------------------
 
 namespace geometry::io {
 

@@ -1,3 +1,10 @@
+// Index
+//   [SECTION] Typed values with key paths ... member, element, describe, Reader
+//   [SECTION] Placement ..................... rotationXyz, readPlacement, reboundChunks, place
+//   [SECTION] Scene pieces .................. makeGround, framedCamera, meshBounds, endsWithIgnoreCase
+//   [SECTION] The scene file ................ builtinEntry, readMeshEntry, readViews, readPaths, readSceneFile
+//   [SECTION] Public functions .............. frameCamera, defaultLight, loadSceneFile, resolveScene
+
 #include "geometry/io/scene_file.h"
 #include "geometry/io/json_file.h"
 
@@ -41,7 +48,7 @@ std::runtime_error fileError(const std::string& path, const std::string& problem
     return std::runtime_error(path + ": " + problem);
 }
 
-// ---- Typed values with key paths ------------------------------------------------------------
+// ---- [SECTION] Typed values with key paths --------------------------------------------------
 
 std::string member(const std::string& key, const std::string& name) { return key.empty() ? name : key + "." + name; }
 std::string element(const std::string& key, size_t i) { return key + "[" + std::to_string(i) + "]"; }
@@ -158,7 +165,7 @@ private:
     std::string file_;
 };
 
-// ---- Placement ------------------------------------------------------------------------------
+// ---- [SECTION] Placement --------------------------------------------------------------------
 
 /// T·R·S of a mesh entry, applied after the mesh's own transform.
 struct Placement {
@@ -225,7 +232,7 @@ scene::Camera place(scene::Camera c, const Placement& p) {
     return c;
 }
 
-// ---- Scene pieces ---------------------------------------------------------------------------
+// ---- [SECTION] Scene pieces -----------------------------------------------------------------
 
 scene::Mesh makeGround(const scene::Aabb& meshBounds, std::optional<float> size, std::optional<float> height,
                        glm::vec3 color) {
@@ -264,7 +271,7 @@ bool endsWithIgnoreCase(std::string_view s, std::string_view suffix) {
     });
 }
 
-// ---- The scene file -------------------------------------------------------------------------
+// ---- [SECTION] The scene file ---------------------------------------------------------------
 
 /// What the mesh entries contribute besides meshes: the first built-in scene's camera and light.
 struct Defaults {
@@ -454,6 +461,8 @@ SceneFile modelScene(const std::string& path, const Progress& progress) {
 }
 
 } // namespace
+
+// ---- [SECTION] Public functions -------------------------------------------------------------
 
 scene::Camera frameCamera(const scene::Aabb& bounds, float fovYDeg) {
     scene::Camera c;

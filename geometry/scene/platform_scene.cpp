@@ -11,6 +11,16 @@
 // of the target. Grating bars are all the same kind, so their count is exact arithmetic and no
 // trial builds are needed. Below ~10k triangles the target cannot be met: the structure alone
 // is ~7k at its lowest detail.
+//
+// Index
+//   [SECTION] Randomness and detail ..... Rng, detailFor
+//   [SECTION] Small geometry helpers .... legPoint, bayLevel, perpendicularBasis, addTruss
+//   [SECTION] Jacket and deck columns ... addJacket
+//   [SECTION] Decks ..................... addDeckFrame, solveGrating, addGrating, addRailings, addModules
+//   [SECTION] Pipes ..................... addPipeRun, addRiser
+//   [SECTION] Top-deck equipment ........ addHelideck, addCrane, addFlareBoom
+//   [SECTION] Camera and light .......... defaultCamera, defaultLight
+//   [SECTION] Building the scene ........ makePlatformScene
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/mesh_builder.h"
 
@@ -62,7 +72,7 @@ const glm::vec3 kFlareTipColor{0.90f, 0.50f, 0.10f};
 // Triangles per MeshBuilder::addBeam.
 constexpr size_t kBeamTriangles = 12;
 
-// ---- Randomness ---------------------------------------------------------------------------
+// ---- [SECTION] Randomness and detail --------------------------------------------------------
 
 /// mt19937 with hand-rolled mappings: the std distributions differ between standard libraries,
 /// and the scene must be the same everywhere for a given seed.
@@ -115,7 +125,7 @@ Detail detailFor(uint32_t targetTriangles) {
     return d;
 }
 
-// ---- Small geometry helpers ------------------------------------------------------------------
+// ---- [SECTION] Small geometry helpers -------------------------------------------------------
 
 /// Axis of jacket leg (ix ∈ {-1, 0, 1}, iz ∈ {-1, 1}) at height y: tapers up to the jacket top,
 /// vertical above it (deck columns).
@@ -163,7 +173,7 @@ void addTruss(MeshBuilder& mb, const glm::vec3& a, const glm::vec3& b, float wid
         }
 }
 
-// ---- Jacket and deck columns -----------------------------------------------------------------
+// ---- [SECTION] Jacket and deck columns ------------------------------------------------------
 
 struct LegPair {
     int ix0, iz0, ix1, iz1;
@@ -202,7 +212,7 @@ void addJacket(MeshBuilder& steel, const Detail& d) {
             steel.addCylinder(legPoint(ix, iz, kJacketTop), legPoint(ix, iz, columnTop), kLegRadius, d.legSegments);
 }
 
-// ---- Decks --------------------------------------------------------------------------------
+// ---- [SECTION] Decks ------------------------------------------------------------------------
 
 /// Primary beams on a 10 m grid under the grating, one beam per grid edge.
 void addDeckFrame(MeshBuilder& frame, float deckY) {
@@ -320,7 +330,7 @@ void addModules(Rng& rng, MeshBuilder& modules, MeshBuilder& plates, size_t deck
         }
 }
 
-// ---- Pipes --------------------------------------------------------------------------------
+// ---- [SECTION] Pipes ------------------------------------------------------------------------
 
 /// A run along a pipe corridor (slot edges are kept free): along x, an elbow into z out to the
 /// deck edge, and sometimes a drop there to the deck below. Short posts carry it above the deck.
@@ -359,7 +369,7 @@ void addRiser(Rng& rng, MeshBuilder& pipes, MeshBuilder& clamps, const Detail& d
     }
 }
 
-// ---- Top-deck equipment -------------------------------------------------------------------
+// ---- [SECTION] Top-deck equipment -----------------------------------------------------------
 
 /// Raised helideck over the -x/-z corner: a plate on a beam grid on four columns, which stand
 /// inside the corner slot, clear of the pipe corridors.
@@ -402,7 +412,7 @@ void addFlareBoom(MeshBuilder& steel, MeshBuilder& pipes, MeshBuilder& flareTip,
     flareTip.addCylinder(end + glm::vec3(0.f, 0.4f, 0.f), end + glm::vec3(0.f, 4.f, 0.f), 0.6f, d.pipeSegments);
 }
 
-// ---- Camera and light -----------------------------------------------------------------------
+// ---- [SECTION] Camera and light -------------------------------------------------------------
 
 /// Standing on the top deck near its -x/+z corner, looking along the deck (15° to the left of
 /// the +z edge, 6° down): railings, pipes and grating close by, the lower decks through the
@@ -427,6 +437,8 @@ DirectionalLight defaultLight() {
 }
 
 } // namespace
+
+// ---- [SECTION] Building the scene -----------------------------------------------------------
 
 Scene makePlatformScene(const PlatformParams& params) {
     const Detail d = detailFor(params.targetTriangles);
