@@ -1,5 +1,7 @@
 #include "bench_command.h"
 
+#include "app/resources.h"
+
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/io/preset.h"
 #include "geometry/io/scene_file.h"
@@ -66,7 +68,7 @@ std::vector<BenchConfiguration> benchConfigurations(const BenchOptions& o) {
     }
     std::vector<std::pair<std::string, geometry::shadow::ShadowSettings>> bases;
     if (o.common.presets.empty()) bases.emplace_back("", geometry::shadow::ShadowSettings{});
-    for (const auto& p : o.common.presets) bases.emplace_back(p, geometry::io::loadPreset(p));
+    for (const auto& p : o.common.presets) bases.emplace_back(p, geometry::io::loadPreset(findResource(p)));
     if (bases.size() * combinations > 4096) throw std::invalid_argument("bench: more than 4096 configurations");
     std::vector<BenchConfiguration> out;
     for (const auto& [path, base] : bases) {
@@ -139,7 +141,7 @@ ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, con
 
 int runBench(const BenchOptions& o) {
     const std::vector<BenchConfiguration> configs = benchConfigurations(o);
-    geometry::io::SceneFile file = geometry::io::resolveScene(o.common.scene);
+    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene));
     std::vector<std::pair<std::string, geometry::io::CanonicalView>> views;
     if (o.common.views.empty())
         for (const auto& v : file.views) views.emplace_back(v);

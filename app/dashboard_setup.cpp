@@ -1,28 +1,15 @@
 #include "dashboard_setup.h"
 
+#include "app/resources.h"
+
 #include "geometry/scene/builtin_scenes.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <system_error>
 
 namespace app {
 
 namespace fs = std::filesystem;
-
-fs::path resourceDirectory() {
-    std::error_code ec;
-    const auto usable = [&](const fs::path& p) { return !p.empty() && fs::is_directory(p / "presets", ec); };
-    if (const char* env = std::getenv("SHADOWSCOPE_RESOURCES"); env && *env && usable(env)) return env;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec)
-        for (fs::path dir = exe.parent_path(); !dir.empty() && dir != dir.root_path(); dir = dir.parent_path())
-            if (usable(dir / "resources")) return dir / "resources";
-#ifdef SHADOWSCOPE_SOURCE_DIR
-    if (usable(fs::path(SHADOWSCOPE_SOURCE_DIR) / "resources")) return fs::path(SHADOWSCOPE_SOURCE_DIR) / "resources";
-#endif
-    return {};
-}
 
 namespace {
 std::vector<std::string> jsonFiles(const fs::path& dir) {

@@ -10,10 +10,6 @@
 
 namespace app {
 
-/// resources/ of this installation: $SHADOWSCOPE_RESOURCES, else next to the executable
-/// (bin/../resources or a bundle's resources/), else the source tree's; empty when none exists.
-[[nodiscard]] std::filesystem::path resourceDirectory();
-
 /// The scene picker's entries: built-in names, then resources/scenes/*.json (sorted).
 [[nodiscard]] std::vector<std::string> sceneChoices();
 /// The preset picker's entries: resources/presets/*.json (sorted).

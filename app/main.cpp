@@ -5,16 +5,21 @@
 #include "mesh_command.h"
 #include "render_command.h"
 #include "sweep_command.h"
+#include "version.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdlib>
 #include <iostream>
+#include <string>
 
 int main(int argc, char** argv) {
     CLI::App cli{"shadowscope: inspect and tune real-time shadows on CAD models.\n"
                  "Without a command, opens the GUI (or renders headless into ./out when there is no display)."};
     cli.set_help_all_flag("--help-all", "Help for every command");
+    cli.set_version_flag("--version",
+                         "shadowscope " + std::string(app::kVersion) + " (" + std::string(app::kRevision) + ")",
+                         "Print the version and the git revision it was built from");
     cli.require_subcommand(0, 1);
 
     app::RenderOptions guiOptions;
@@ -53,6 +58,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
+        return cli.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "shadowscope: error: " << e.what() << '\n';

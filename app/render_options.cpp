@@ -1,5 +1,7 @@
 #include "render_options.h"
 
+#include "app/resources.h"
+
 #include "geometry/io/preset.h"
 
 #include "geometry/io/scene_file.h"
@@ -94,7 +96,7 @@ struct SettingSources {
 
     void rebuild() const {
         geometry::shadow::ShadowSettings s = base;
-        for (const auto& path : presets->results()) s = geometry::io::loadPreset(path, s);
+        for (const auto& path : presets->results()) s = geometry::io::loadPreset(findResource(path), s);
         if (shadowRes->count() > 0)
             geometry::shadow::applySetting(s, "shadow_map.resolution", std::to_string(shadowRes->as<int>()));
         for (const auto& a : assignments->results()) geometry::shadow::applyAssignment(s, a);
@@ -234,7 +236,7 @@ geometry::io::SceneFile loadSceneFile(const RenderOptions& o) {
     geometry::io::SceneFile file;
     {
         LoadProgress progress(std::filesystem::path(o.scene).filename().string());
-        file = geometry::io::resolveScene(o.scene, std::ref(progress));
+        file = geometry::io::resolveScene(findResource(o.scene), std::ref(progress));
     }
     geometry::scene::Scene& scene = file.scene;
     if (!o.view.empty()) {

@@ -1,5 +1,6 @@
 // `shadowscope sweep path`: a camera or light path of a scene file, frame by frame, with the
 // flicker and seam measures of geometry/analysis/stability_metrics.h.
+#include "app/resources.h"
 #include "sweep_command.h"
 #include "sweep_frame.h"
 
@@ -89,7 +90,7 @@ int runSweepPath(const SweepPathOptions& o) {
         throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " must be within 1.." +
                                     std::to_string(kMaxPathFrames));
     geometry::shadow::validateOrThrow(o.render.settings);
-    geometry::io::SceneFile file = geometry::io::resolveScene(o.render.scene);
+    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.render.scene));
     const auto it = file.paths.find(o.path);
     if (it == file.paths.end()) {
         std::string names;

@@ -91,9 +91,12 @@ TEST(SweepGamma, EveryMethodPassesTheCheckAtCiSize) {
         if (angle == 0 || angle == 180 || method == "uniform") EXPECT_TRUE(std::isinf(num(row, "n_prime")));
         else EXPECT_TRUE(std::isfinite(num(row, "n_prime")));
         // γ = 90°: GLiSPSM and GMNPR both give n' = n + √(f·n) (Barroso eq 13, Zhang eq 8).
-        if (angle == 90 && (method == "glispsm" || method == "gmnpr"))
+        if (angle == 90 && (method == "glispsm" || method == "gmnpr")) {
             EXPECT_NEAR(num(row, "n_prime"), n + std::sqrt(f * n), 1e-6);
-        if (angle == 90 && method == "psm") EXPECT_NEAR(num(row, "n_prime"), n, 1e-9);
+        }
+        if (angle == 90 && method == "psm") {
+            EXPECT_NEAR(num(row, "n_prime"), n, 1e-9);
+        }
     }
     // At 90°, a warp beats uniform by far (p95 m).
     double uniform90 = 0, glispsm90 = 0;
