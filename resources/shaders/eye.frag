@@ -94,10 +94,13 @@ void main() {
     vec2 texel = p.xy * res;   // texel-space position within this split's map
     vec2 uvArray = p.xy * shadow.splits[split].mapScale;
 
-    // Receiver plane (Barroso §2.2): depth gradient per texel from screen derivatives, taken in
-    // uniform control flow.
-    vec2 dTdx = dFdx(texel), dTdy = dFdy(texel);
-    float dzdx = dFdx(p.z), dzdy = dFdy(p.z);
+    // Texel-space derivatives (for the receiver plane, Barroso §2.2, and for J below) through this
+    // pixel's split matrix, from screen derivatives of the receiver's world position taken in
+    // uniform control flow: a 2×2 block that straddles a split boundary does not mix two maps.
+    vec3 dPdx = dFdx(receiver), dPdy = dFdy(receiver);
+    vec3 px = mapCoords(receiver + dPdx, split), py = mapCoords(receiver + dPdy, split);
+    vec2 dTdx = (px.xy - p.xy) * res, dTdy = (py.xy - p.xy) * res;
+    float dzdx = px.z - p.z, dzdy = py.z - p.z;
     float det = dTdx.x * dTdy.y - dTdx.y * dTdy.x;
     vec2 dzdt = abs(det) > 1e-12 ? vec2(dzdx * dTdy.y - dzdy * dTdx.y, dzdy * dTdx.x - dzdx * dTdy.x) / det : vec2(0.0);
     if (shadow.tangentPlane == 0) dzdt = vec2(0.0);
