@@ -45,7 +45,10 @@ constexpr Column kColumns[] = {
     {"p95_uniform", &SweepRecord::p95Uniform},
     {"clipped_casters", &SweepRecord::clippedCasters},
     {"false_lit_clipped", &SweepRecord::falseLitClipped},
+    {"singular", &SweepRecord::singular},
 };
+/// Columns an older sweep.csv may lack (read as 0).
+bool optionalColumn(std::string_view name) { return name == "singular"; }
 
 /// The warp's gain over uniform shadow mapping at the same angle (< 1: fewer pixels per texel).
 double gain(const SweepRecord& r) { return r.p95 / r.p95Uniform; }
@@ -107,10 +110,12 @@ std::vector<std::string> checkSweep(const std::vector<SweepRecord>& rows, const 
             const double step = b.angleDeg - a.angleDeg;
             if (!(step > 0 && step <= t.continuityStepDeg)) continue;
             if (!(a.receivers >= t.minReceivers && b.receivers >= t.minReceivers)) continue;
-            // A p95 at the shader's cap for singular J (receivers edge-on to the light, e.g. the sea
-            // as the sun crosses the horizon) is no measurement of the warp: not judged.
+            // Frames where more than 5 % of the receivers have a singular J (edge-on to the light, e.g.
+            // the sea as the sun crosses the horizon) measure the scene's geometry, not the warp: not
+            // judged. (Older CSVs, whose p95 still included those pixels, show them as a p95 at the cap.)
             const auto capped = [](const SweepRecord& r) {
-                return r.p95 >= geometry::analysis::kSingularM || r.p95Uniform >= geometry::analysis::kSingularM;
+                return r.singular > 0.05 || r.p95 >= geometry::analysis::kSingularM ||
+                       r.p95Uniform >= geometry::analysis::kSingularM;
             };
             if (capped(a) || capped(b)) continue;
             const double ga = gain(a), gb = gain(b);
@@ -157,7 +162,9 @@ std::vector<SweepRecord> parseSweepCsv(std::string_view text) {
     };
     const size_t angle = column("angle_deg"), method = column("method");
     std::vector<std::pair<size_t, double SweepRecord::*>> numeric;
-    for (const Column& c : kColumns) numeric.emplace_back(column(c.name), c.member);
+    for (const Column& c : kColumns)
+        if (!optionalColumn(c.name) || std::find(header.begin(), header.end(), c.name) != header.end())
+            numeric.emplace_back(column(c.name), c.member);
     std::vector<SweepRecord> rows;
     for (size_t i = 1; i < lines.size(); ++i) {
         const auto f = splitFields(lines[i]);

@@ -25,6 +25,7 @@ struct SweepRecord {
     double p95Uniform = 0;      // p95 m of uniform shadow mapping at the same angle (the reference)
     double clippedCasters = 0;  // receivers whose caster segment leaves their split's map (caster_coverage.h)
     double falseLitClipped = 0; // receivers false lit with such a segment: shadows lost to the plan
+    double singular = 0;        // fraction of receivers with a singular J (not in the m figures); 0 in older CSVs
 };
 
 struct SweepThresholds {

@@ -49,6 +49,7 @@ SweepRecord record(double angleDeg, const std::string& method, const SweepFrame&
     r.max = a.max;
     r.mean = a.mean;
     r.receivers = double(a.count);
+    r.singular = a.singular;
     r.falseLit = f.in.truth->falseLit;
     r.falseShadow = f.in.truth->falseShadow;
     r.glErrors = f.glErrors.empty() ? 0 : 1;

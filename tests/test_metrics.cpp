@@ -209,3 +209,20 @@ TEST(Statistics, NearestRankPercentileAndMedian) {
     EXPECT_TRUE(std::isnan(percentile(std::span(none), 50)));
     EXPECT_TRUE(std::isnan(median(std::span(none))));
 }
+
+// Pixels with a singular J carry the shader's cap, not a measurement: counted apart, left out of
+// the mean, the percentiles and the maximum.
+TEST(Metrics, SingularPixelsDoNotChangeTheFigures) {
+    const std::vector<float> m{1.f, 2.f, 3.f, 4.f};
+    const std::vector<uint8_t> all(4, 1);
+    const AliasingStats plain = aliasingStats(m, all);
+    std::vector<float> withCap = m;
+    withCap.insert(withCap.end(), {1e10f, kSingularM});
+    const AliasingStats capped = aliasingStats(withCap, std::vector<uint8_t>(6, 1));
+    EXPECT_EQ(capped.mean, plain.mean);
+    EXPECT_EQ(capped.p95, plain.p95);
+    EXPECT_EQ(capped.max, 4.0);
+    EXPECT_EQ(capped.count, 4u);
+    EXPECT_DOUBLE_EQ(capped.singular, 2.0 / 6.0);
+    EXPECT_EQ(plain.singular, 0.0);
+}

@@ -108,6 +108,14 @@ TEST(SweepCheck, GainJumpFailsForContinuityMethodsOnly) {
     rows = clean();
     rows[8].p95 = rows[9].p95Uniform = 1e10;
     EXPECT_TRUE(app::checkSweep(rows, at15()).empty());
+    // Nor is a frame where more than 5 % of the receivers have a singular J (their m is left out
+    // of p95, which then describes a different set of pixels).
+    rows = clean();
+    rows[9].p95 = 60;
+    rows[9].singular = 0.2;
+    EXPECT_TRUE(app::checkSweep(rows, at15()).empty());
+    rows[9].singular = 0.01;
+    EXPECT_FALSE(app::checkSweep(rows, at15()).empty());
     // At 1° steps the default applies: a 3.5× change of the gain fails.
     std::vector<app::SweepRecord> fine{row(150, "uniform", 100), row(150, "gmnpr", 20), row(151, "uniform", 100),
                                        row(151, "gmnpr", 70)};
@@ -145,6 +153,24 @@ TEST(SweepCheck, CsvRoundTripsAndStartsWithTheAgreedColumns) {
     EXPECT_TRUE(std::isinf(back[0].nPrime));
     EXPECT_EQ(back[1].method, "lispsm");
     EXPECT_EQ(back[5].p95Uniform, 100);
+}
+
+// A sweep.csv written before the `singular` column existed still reads (as 0).
+TEST(SweepCheck, CsvWithoutTheSingularColumnReads) {
+    std::string text = app::sweepCsvHeader() + "\n";
+    for (const auto& r : clean()) text += app::sweepCsvRow(r) + "\n";
+    std::string header = text.substr(0, text.find('\n'));
+    ASSERT_EQ(header.substr(header.size() - 9), ",singular");
+    std::string old;
+    for (size_t start = 0; start < text.size();) {
+        const size_t end = text.find('\n', start);
+        const std::string line = text.substr(start, end - start);
+        old += line.substr(0, line.rfind(',')) + "\n"; // drop the last column
+        start = end + 1;
+    }
+    const auto rows = app::parseSweepCsv(old);
+    ASSERT_EQ(rows.size(), clean().size());
+    EXPECT_EQ(rows[0].singular, 0.0);
 }
 
 TEST(SweepCheck, BrokenCsvIsAOneLineError) {

@@ -130,6 +130,14 @@ void Dashboard::drawStatsTable() {
                 return in ? fmt("%.1f %%", 100.0 * in->aliasing.undersampled) : std::string("–");
             });
             row(
+                "singular J",
+                [&](int i) {
+                    const auto* in = insp(i);
+                    return in ? fmt("%.2f %%", 100.0 * in->aliasing.singular) : std::string("–");
+                },
+                "Receiver pixels whose texel Jacobian is singular (surfaces edge-on to the light): m is not "
+                "measured there and they are left out of the figures above");
+            row(
                 "false shadow / false lit",
                 [&](int i) {
                     const auto* in = insp(i);

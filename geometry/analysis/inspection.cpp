@@ -38,8 +38,8 @@ Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundT
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in) {
     const auto& a = in.aliasing;
     j["aliasing"] = {
-        {"mean", a.mean},   {"p50", a.p50}, {"p95", a.p95}, {"max", a.max}, {"undersampled", a.undersampled},
-        {"pixels", a.count}};
+        {"mean", a.mean},         {"p50", a.p50},     {"p95", a.p95}, {"max", a.max}, {"undersampled", a.undersampled},
+        {"singular", a.singular}, {"pixels", a.count}};
     if (in.truth)
         j["truth"] = {{"false_shadow", in.truth->falseShadow},
                       {"false_lit", in.truth->falseLit},

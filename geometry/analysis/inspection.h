@@ -44,7 +44,7 @@ struct FrameReadback {
 /// ground-truth verdicts (light direction l).
 [[nodiscard]] Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundTruth* truth);
 
-/// metrics.json fields: aliasing{mean,p50,p95,max,undersampled}, truth{false_shadow,false_lit,mean_abs}.
+/// metrics.json fields: aliasing{mean,p50,p95,max,undersampled,singular}, truth{false_shadow,false_lit,mean_abs}.
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in);
 
 } // namespace geometry::analysis

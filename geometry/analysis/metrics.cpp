@@ -52,10 +52,15 @@ AliasingStats aliasingStats(std::span<const float> m, std::span<const uint8_t> r
     std::vector<float> values;
     double sum = 0;
     size_t under = 0;
+    size_t singular = 0;
     for (size_t i = 0; i < m.size(); ++i) {
         if (!receiver[i]) continue;
         if (!std::isfinite(m[i])) {
             ++st.skipped;
+            continue;
+        }
+        if (!(m[i] < kSingularM)) {
+            ++singular;
             continue;
         }
         values.push_back(m[i]);
@@ -63,6 +68,7 @@ AliasingStats aliasingStats(std::span<const float> m, std::span<const uint8_t> r
         under += m[i] > 1.f;
     }
     st.count = values.size();
+    if (st.count + singular > 0) st.singular = double(singular) / double(st.count + singular);
     if (st.count == 0) return st;
     st.mean = sum / double(st.count);
     st.undersampled = double(under) / double(st.count);

@@ -15,12 +15,19 @@
 
 namespace geometry::analysis {
 
+/// The eye shader floors σ_min(J) at 1e-10 (m = 1e10) where J is singular, e.g. on a surface
+/// edge-on to the light; m at or above this bound is that cap, not a measured value.
+inline constexpr float kSingularM = 1e6f;
+
 /// Aliasing error m (docs/design.md §4: m = 1/σ_min(J), screen pixels per texel along the worst
-/// direction; m > 1 undersampled) summarized over receiver pixels.
+/// direction; m > 1 undersampled) summarized over receiver pixels. Pixels whose J is singular
+/// (m ≥ kSingularM: the shader's cap, not a measurement) are counted in `singular` and left out of
+/// every other figure, so a few edge-on pixels cannot turn the mean into 1e6.
 struct AliasingStats {
     double mean = 0, p50 = 0, p95 = 0, max = 0;
     double undersampled = 0; // fraction of counted pixels with m > 1
-    size_t count = 0;        // receiver pixels with a finite m
+    double singular = 0;     // fraction of receiver pixels with a finite m whose J is singular
+    size_t count = 0;        // receiver pixels with a finite, non-singular m
     size_t skipped = 0;      // receiver pixels with a non-finite m
 };
 

@@ -9,11 +9,9 @@
 #include <cstdint>
 #include <span>
 
-namespace geometry::analysis {
+#include "geometry/analysis/metrics.h"
 
-/// The eye shader floors σ_min(J) at 1e-10 (m = 1e10) where J is singular, e.g. on a surface
-/// edge-on to the light; m at or above this bound is that cap, not a measured value.
-inline constexpr float kSingularM = 1e6f;
+namespace geometry::analysis {
 
 /// Flicker between two consecutive frames of a camera or light path: of the pixels that are
 /// receivers in both frames, have a finite shadow factor s in both and whose ray-traced truth
