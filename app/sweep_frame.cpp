@@ -39,9 +39,7 @@ SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& setting
     const bool same = f.plan.eyeView == truthView_ && f.plan.eyeProj == truthProj_ && f.plan.l == truthLight_ &&
                       truthOccluded_.size() == f.in.positions.size();
     if (!same) {
-        truthOccluded_ = truth_.occluded(f.in.positions, f.in.normals, f.plan.l);
-        for (size_t i = 0; i < truthOccluded_.size(); ++i)
-            if (!f.in.receiver[i]) truthOccluded_[i] = 0;
+        truthOccluded_ = geometry::analysis::truthOcclusion(f.in, f.plan.eye, f.plan.l, truth_);
         truthView_ = f.plan.eyeView;
         truthProj_ = f.plan.eyeProj;
         truthLight_ = f.plan.l;

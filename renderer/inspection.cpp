@@ -12,6 +12,7 @@ geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow
     frame.aux = r.readAux();
     frame.positions = r.readPositions();
     frame.normals = r.readNormals();
+    frame.eye = plan.eye;
     for (const auto& split : plan.splits)
         frame.resolutions.push_back(std::min(split.resolution, r.stats().shadowResolution));
     return geometry::analysis::makeInspection(std::move(frame), plan.l, truth);

@@ -299,6 +299,28 @@ TEST(GroundTruthTriangle, PrimaryHitNormalsFaceTheCamera) {
     }
 }
 
+// The truth judges a receiver with the geometric normal of its surface, whatever shading normal
+// the renderer interpolated: surfaceNormals() finds the triangle under each point.
+TEST(GroundTruthTriangle, SurfaceNormalsAreGeometricAndFallBackOffTheSurface) {
+    const GroundTruth truth(trianglesScene(kRoof));
+    const glm::vec3 eye{0.5f, 6.f, 0.3f};
+    const glm::vec3 tilted = glm::normalize(glm::vec3(0.8f, 0.6f, 0.f)); // a smooth-shading normal
+    const std::vector<glm::vec3> points{
+        {0.f, 1.f, 0.f}, {0.5f, 1.f, -1.f}, {0.f, 3.f, 0.f}, {5.f, 1.f, 5.f}, glm::vec3(kNaN)};
+    const std::vector<glm::vec3> shading(points.size(), tilted);
+    const auto n = truth.surfaceNormals(eye, points, shading);
+    ASSERT_EQ(n.size(), points.size());
+    EXPECT_NEAR(glm::distance(n[0], kUp), 0.f, 1e-5f) << "on the roof, seen from above: +y";
+    EXPECT_NEAR(glm::distance(n[1], kUp), 0.f, 1e-5f);
+    EXPECT_EQ(n[2], tilted) << "in the air above the roof: no surface, the given normal stays";
+    EXPECT_EQ(n[3], tilted) << "off the roof";
+    EXPECT_EQ(n[4], tilted) << "not finite";
+    // Seen from below, the same point's geometric normal faces down (towards that eye).
+    const auto below = truth.surfaceNormals({0.f, -3.f, 0.f}, {points[0]}, {tilted});
+    EXPECT_NEAR(glm::distance(below[0], -kUp), 0.f, 1e-5f);
+    EXPECT_THROW((void)truth.surfaceNormals(eye, points, {kUp}), std::invalid_argument);
+}
+
 TEST(GroundTruthTriangle, PrimaryHitsClipAtNearAndFar) {
     // Roof at y = 1 over a floor at y = 0; the camera looks straight down from y = 5 (depth 4 to
     // the roof, 5 to the floor).

@@ -3,7 +3,7 @@
 //   [SECTION] Packet layouts .............................. RunLayout, TileLayout, forEachPacket, setLane, checkInputs
 //   [SECTION] Impl: device, scene and the error channel ... onError, throwIfError, addMesh, build
 //   [SECTION] GroundTruth ................................. PrimaryHits::hitCount, GroundTruth, epsilon
-//   [SECTION] Tracing rays ................................ traceOccluded, occluded, primaryHits
+//   [SECTION] Tracing rays ................................ traceOccluded, occluded, surfaceNormals, primaryHits
 
 #include "geometry/analysis/ground_truth.h"
 
@@ -344,6 +344,54 @@ std::vector<uint8_t> GroundTruth::occluded(const std::vector<glm::vec3>& points,
     auto result = traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads);
     impl_->throwIfError("tracing shadow rays");
     return result;
+}
+
+std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const std::vector<glm::vec3>& points,
+                                                   const std::vector<glm::vec3>& fallback, int threads) const {
+    if (points.size() != fallback.size())
+        throw std::invalid_argument("GroundTruth::surfaceNormals: " + std::to_string(points.size()) + " points but " +
+                                    std::to_string(fallback.size()) + " normals");
+    if (!finite(eye)) throw std::invalid_argument("GroundTruth::surfaceNormals: the eye is not finite");
+    if (!impl_) throw std::logic_error("GroundTruth::surfaceNormals on a moved-from object");
+    std::vector<glm::vec3> out = fallback;
+    forEachPacket(RunLayout{points.size()}, threads, [&](const Lanes& lanes) {
+        RTCRayHit16 rh;
+        alignas(64) std::array<int, kLanes> valid{};
+        std::array<float, kLanes> distance{};
+        bool any = false;
+        for (int i = 0; i < kLanes; ++i) {
+            const size_t idx = lanes[i];
+            const glm::vec3 p = idx != kNoPoint ? points[idx] : glm::vec3(0.f);
+            const float d = glm::length(p - eye);
+            if (idx == kNoPoint || !finite(p) || !(d > 0.f) || !std::isfinite(d)) {
+                setIdleLane(rh.ray, i);
+                continue;
+            }
+            distance[i] = d;
+            const float reach = std::max(4.f * epsilon(p), 1e-4f * d);
+            setLane(rh.ray, i, eye, (p - eye) / d, 0.f, d + reach);
+            rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+            valid[i] = -1;
+            any = true;
+        }
+        if (!any) return;
+        RTCIntersectContext ctx = coherentContext();
+        rtcIntersect16(valid.data(), impl_->scene, &ctx, &rh);
+        for (int i = 0; i < kLanes; ++i) {
+            if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+            const size_t idx = lanes[i];
+            const float reach = std::max(4.f * epsilon(points[idx]), 1e-4f * distance[i]);
+            if (!(std::abs(rh.ray.tfar[i] - distance[i]) <= reach)) continue; // another surface: keep the fallback
+            glm::vec3 n(rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]);
+            const float len = glm::length(n);
+            if (!(len > 0.f) || !std::isfinite(len)) continue;
+            n /= len;
+            const glm::vec3 dir(rh.ray.dir_x[i], rh.ray.dir_y[i], rh.ray.dir_z[i]);
+            out[idx] = glm::dot(n, dir) > 0.f ? -n : n; // face the eye
+        }
+    });
+    impl_->throwIfError("tracing surface normals");
+    return out;
 }
 
 PrimaryHits GroundTruth::primaryHits(const scene::Camera& camera, int width, int height, int threads) const {

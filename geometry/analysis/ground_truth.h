@@ -52,6 +52,15 @@ public:
                                                 const std::vector<glm::vec3>& normals, const glm::vec3& l,
                                                 int threads = 0) const;
 
+    /// The unit geometric normal of the surface under each point, as seen from `eye`: a ray from the
+    /// eye towards the point; where its nearest hit lies within max(4·epsilon(p), 1e-4·distance) of
+    /// the point, that triangle's normal, turned to face the eye. Elsewhere (the point is on no
+    /// triangle, something nearer hides it, or it is not finite) fallback[i], as given. Use it to
+    /// give occluded() the geometric normals it documents when a renderer supplies shading ones.
+    /// Throws std::invalid_argument if points.size() != fallback.size() or eye is not finite.
+    [[nodiscard]] std::vector<glm::vec3> surfaceNormals(const glm::vec3& eye, const std::vector<glm::vec3>& points,
+                                                        const std::vector<glm::vec3>& fallback, int threads = 0) const;
+
     /// Casts one ray per pixel centre of a width × height image from `camera` (aspect
     /// width/height, as Camera::projection) and returns the nearest hits between the near and far
     /// planes (view depth, as GL clips). Throws std::invalid_argument for a non-positive size.

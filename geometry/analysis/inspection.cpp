@@ -27,12 +27,19 @@ Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundT
     for (int s = 0; s < int(frame.resolutions.size()); ++s)
         in.utilization.push_back(texelUtilization(in.aux, in.receiver, s, frame.resolutions[s]));
     if (truth) {
-        in.occluded = truth->occluded(in.positions, in.normals, l);
-        for (size_t i = 0; i < n; ++i)
-            if (!in.receiver[i]) (*in.occluded)[i] = 0;
+        in.occluded = truthOcclusion(in, frame.eye, l, *truth);
         in.truth = truthStats(in.shadow, *in.occluded, in.receiver);
     }
     return in;
+}
+
+std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
+                                    const GroundTruth& truth) {
+    std::vector<uint8_t> occluded =
+        truth.occluded(in.positions, truth.surfaceNormals(eye, in.positions, in.normals), l);
+    for (size_t i = 0; i < occluded.size(); ++i)
+        if (!in.receiver[i]) occluded[i] = 0;
+    return occluded;
 }
 
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in) {

@@ -38,11 +38,19 @@ struct FrameReadback {
     std::vector<glm::vec4> positions; // world position, m
     std::vector<glm::vec4> normals;   // facing normal, N·L
     std::vector<int> resolutions;     // per split, the map resolution actually drawn
+    glm::vec3 eye{0.f};               // the camera's position
 };
 
 /// Splits the read-back into per-pixel fields and computes the statistics; `truth` adds the
-/// ground-truth verdicts (light direction l).
+/// ground-truth verdicts (light direction l) through truthOcclusion().
 [[nodiscard]] Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundTruth* truth);
+
+/// Ground truth for the receiver pixels of `in` (1 = shadowed; 0 for non-receivers): each traced
+/// with the geometric normal of the surface under it (GroundTruth::surfaceNormals), as
+/// docs/design.md §4 "Ground truth" says, not with the renderer's interpolated shading normal,
+/// which on smooth-shaded facets would make the verdict at the terminator stripe with the facets.
+[[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
+                                                  const GroundTruth& truth);
 
 /// metrics.json fields: aliasing{mean,p50,p95,max,undersampled,singular}, truth{false_shadow,false_lit,mean_abs}.
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in);
