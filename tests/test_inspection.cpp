@@ -130,3 +130,34 @@ TEST(Inspection, TexelUtilizationFallsWithResolution) {
         EXPECT_TRUE(std::isfinite(in.aliasing.p95));
     }
 }
+
+// Planted acne (a constant bias of −0.5 m pulls receivers into their own surface) shows as interior
+// false shadow, not as edge error (docs/design.md §4 "Truth classes").
+TEST(Inspection, PlantedAcneIsInteriorFalseShadow) {
+    const Scene scene = makePlaneScene();
+    auto context = renderer::createOSMesaContext();
+    renderer::Renderer r(scene);
+    const GroundTruth truth(scene);
+    ShadowSettings s;
+    s.resolution = 1024;
+    s.bias.type = BiasType::Constant;
+    s.bias.constant = -0.5f;
+    s.filter.type = FilterType::None;
+    const Viewport vp{320, 240};
+    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    r.render(plan, vp, renderer::ViewOptions{});
+    const Inspection in = renderer::inspect(r, plan, &truth);
+    ASSERT_TRUE(in.truthClasses);
+    const TruthClasses& t = *in.truthClasses;
+    EXPECT_GT(t.interiorFalseShadow, 0.3) << "edge " << t.edgeError;
+    EXPECT_LT(t.edgeError, t.interiorFalseShadow / 10);
+    EXPECT_LT(t.interiorFalseLit, 0.01);
+    ASSERT_FALSE(in.splitTruthClasses.empty());
+    EXPECT_NEAR(in.splitTruthClasses[0].interiorFalseShadow, t.interiorFalseShadow, 1e-12) << "one split: the same";
+    // A sane bias leaves almost nothing interior.
+    s.bias.constant = 0.05f;
+    const ShadowPlan good = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    r.render(good, vp, renderer::ViewOptions{});
+    const Inspection clean = renderer::inspect(r, good, &truth);
+    EXPECT_LT(clean.truthClasses->interiorFalseShadow, 0.005);
+}

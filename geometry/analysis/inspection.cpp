@@ -4,6 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+#include <limits>
+
 namespace geometry::analysis {
 
 Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundTruth* truth) {
@@ -26,32 +29,81 @@ Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundT
     in.aliasing = aliasingStats(in.m, in.receiver);
     for (int s = 0; s < int(frame.resolutions.size()); ++s)
         in.utilization.push_back(texelUtilization(in.aux, in.receiver, s, frame.resolutions[s]));
-    if (truth) {
-        in.occluded = truthOcclusion(in, frame.eye, l, *truth);
-        in.truth = truthStats(in.shadow, *in.occluded, in.receiver);
-    }
+    if (truth) addTruth(in, frame.eye, l, *truth);
     return in;
 }
 
-std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
-                                    const GroundTruth& truth) {
-    std::vector<uint8_t> occluded =
-        truth.occluded(in.positions, truth.surfaceNormals(eye, in.positions, in.normals), l);
+std::vector<uint8_t> truthOcclusion(const Inspection& in, const std::vector<glm::vec3>& geometricNormals,
+                                    const glm::vec3& l, const GroundTruth& truth) {
+    std::vector<uint8_t> occluded = truth.occluded(in.positions, geometricNormals, l);
     for (size_t i = 0; i < occluded.size(); ++i)
         if (!in.receiver[i]) occluded[i] = 0;
     return occluded;
 }
+
+std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
+                                    const GroundTruth& truth) {
+    return truthOcclusion(in, truth.surfaceNormals(eye, in.positions, in.normals), l, truth);
+}
+
+void addTruth(Inspection& in, const glm::vec3& eye, const glm::vec3& l, const GroundTruth& truth) {
+    in.geometricNormals = truth.surfaceNormals(eye, in.positions, in.normals);
+    in.occluded = truthOcclusion(in, in.geometricNormals, l, truth);
+    const size_t n = in.positions.size();
+    const glm::vec3 toLight = -glm::normalize(l);
+    in.coverage.assign(n, 1.f);
+    in.ambiguity.assign(n, uint8_t(Ambiguity::None));
+    std::vector<float> texelsPerPixel(n, std::numeric_limits<float>::quiet_NaN());
+    std::vector<int> split(n, -1);
+    for (size_t i = 0; i < n; ++i) {
+        in.coverage[i] = (*in.occluded)[i] ? 0.f : 1.f;
+        if (in.m[i] > 0.f && in.m[i] < kSingularM) texelsPerPixel[i] = 1.f / in.m[i];
+        if (!in.receiver[i]) continue;
+        split[i] = int(std::lround(in.aux[i].z));
+        const float geometric = glm::dot(in.geometricNormals[i], toLight);
+        const float shading = glm::dot(in.normals[i], toLight);
+        if (std::abs(geometric) < 0.1f) in.ambiguity[i] = uint8_t(Ambiguity::Terminator);
+        else if ((geometric > 0.f) != (shading > 0.f)) in.ambiguity[i] = uint8_t(Ambiguity::NormalFlip);
+    }
+    in.truth = truthStats(in.shadow, *in.occluded, in.receiver);
+    const TruthClassInput input{in.width, in.shadow, in.coverage, in.receiver, in.ambiguity, texelsPerPixel};
+    in.truthClasses = truthClasses(input, &in.classes);
+    in.splitTruthClasses.clear();
+    for (int s = 0; s < int(in.utilization.size()); ++s)
+        in.splitTruthClasses.push_back(truthClassesWhere(input, split, s));
+}
+
+namespace {
+
+nlohmann::json classesJson(const TruthClasses& c) {
+    return {{"interior_false_shadow", c.interiorFalseShadow},
+            {"interior_false_lit", c.interiorFalseLit},
+            {"edge_error", c.edgeError},
+            {"edge_displacement_px", {{"median", c.edgeDisplacementPxMedian}, {"p95", c.edgeDisplacementPxP95}}},
+            {"edge_displacement_texels",
+             {{"median", c.edgeDisplacementTexelsMedian}, {"p95", c.edgeDisplacementTexelsP95}}},
+            {"ambiguous", c.ambiguous},
+            {"penumbra_mean_abs", c.penumbraMeanAbs},
+            {"pixels", c.count}};
+}
+
+} // namespace
 
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in) {
     const auto& a = in.aliasing;
     j["aliasing"] = {
         {"mean", a.mean},         {"p50", a.p50},     {"p95", a.p95}, {"max", a.max}, {"undersampled", a.undersampled},
         {"singular", a.singular}, {"pixels", a.count}};
-    if (in.truth)
+    if (in.truth) {
         j["truth"] = {{"false_shadow", in.truth->falseShadow},
                       {"false_lit", in.truth->falseLit},
                       {"mean_abs", in.truth->meanAbs},
-                      {"pixels", in.truth->count}};
+                      {"pixels", in.truth->count},
+                      {"samples_per_pixel", 1}};
+        if (in.truthClasses) j["truth"].update(classesJson(*in.truthClasses));
+        for (size_t s = 0; s < in.splitTruthClasses.size() && s < j["splits"].size(); ++s)
+            j["splits"][s]["truth"] = classesJson(in.splitTruthClasses[s]);
+    }
     for (size_t s = 0; s < in.utilization.size() && s < j["splits"].size(); ++s)
         j["splits"][s]["utilization"] = in.utilization[s];
 }

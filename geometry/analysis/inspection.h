@@ -3,6 +3,7 @@
 // factor, map coordinates, aliasing error, receivers, optional ray-traced truth, and the
 // statistics over them. Built from the renderer's read-backs (renderer/inspection.h).
 #include "geometry/analysis/metrics.h"
+#include "geometry/analysis/truth_classes.h"
 #include "geometry/shadow/shadow_plan.h"
 
 #include <glm/glm.hpp>
@@ -24,10 +25,18 @@ struct Inspection {
     std::vector<glm::vec3> normals;               // facing normal
     std::vector<uint8_t> receiver;                // visible and facing the light (N·L > 0)
     std::optional<std::vector<uint8_t>> occluded; // ground truth, 1 = shadowed
+    // With truth (addTruth): the geometric normal under each pixel, the truth's lit fraction c, why
+    // a pixel's truth is ambiguous (Ambiguity), and each pixel's TruthClass.
+    std::vector<glm::vec3> geometricNormals;
+    std::vector<float> coverage;
+    std::vector<uint8_t> ambiguity;
+    std::vector<TruthClass> classes;
 
     AliasingStats aliasing;
     std::optional<TruthStats> truth;
-    std::vector<double> utilization; // per split
+    std::optional<TruthClasses> truthClasses;    // over all receivers
+    std::vector<TruthClasses> splitTruthClasses; // per split
+    std::vector<double> utilization;             // per split
 };
 
 /// The eye pass's per-pixel outputs, read back once (all top row first, width·height values).
@@ -45,12 +54,21 @@ struct FrameReadback {
 /// ground-truth verdicts (light direction l) through truthOcclusion().
 [[nodiscard]] Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundTruth* truth);
 
+/// Adds ground truth to `in`: occlusion traced with geometric normals (truthOcclusion), c = 1 − occluded
+/// (one sample per pixel), the ambiguity of each receiver (|N·L| < 0.1 by the geometric normal: the
+/// terminator; shading and geometric normal on different sides of the light: a normal flip), the
+/// TruthStats and the TruthClasses, overall and per split (docs/design.md §4 "Truth classes").
+void addTruth(Inspection& in, const glm::vec3& eye, const glm::vec3& l, const GroundTruth& truth);
+
 /// Ground truth for the receiver pixels of `in` (1 = shadowed; 0 for non-receivers): each traced
 /// with the geometric normal of the surface under it (GroundTruth::surfaceNormals), as
 /// docs/design.md §4 "Ground truth" says, not with the renderer's interpolated shading normal,
 /// which on smooth-shaded facets would make the verdict at the terminator stripe with the facets.
 [[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
                                                   const GroundTruth& truth);
+/// The same with the geometric normals already found (GroundTruth::surfaceNormals).
+[[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const std::vector<glm::vec3>& geometricNormals,
+                                                  const glm::vec3& l, const GroundTruth& truth);
 
 /// metrics.json fields: aliasing{mean,p50,p95,max,undersampled,singular}, truth{false_shadow,false_lit,mean_abs}.
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in);
