@@ -340,3 +340,39 @@ TEST(Pfm, WriteChecksSizeAndPath) {
     EXPECT_THROW(writePfm(tempPath("mismatch.pfm"), v, 2, 2), std::invalid_argument);
     EXPECT_THROW(writePfm("/nonexistent_dir_shadowscope/x.pfm", v, 5, 1), std::runtime_error);
 }
+
+// The truth-class heatmap: every class its own colour, and a legend that lists exactly the colours
+// the image shows (invalid pixels included).
+TEST(Heatmap, TruthClassesHaveTheirOwnColoursAndTheLegendListsEveryColourShown) {
+    using C = TruthClass;
+    const std::vector<C> classes{C::InteriorFalseShadow, C::InteriorFalseLit, C::EdgeError, C::Ambiguous, C::Agrees,
+                                 C::NotCounted,          C::NotCounted};
+    const std::vector<float> s{0.f, 1.f, 0.f, 1.f, 1.f, 1.f, NAN};
+    const std::vector<uint8_t> receiver{1, 1, 1, 1, 1, 0, 1};
+    const Image img = truthClassHeatmap(classes, s, receiver, 7, 1);
+    const auto colourAt = [&](int x) {
+        const uint8_t* p = img.at(x, 0);
+        return glm::ivec3(p[0], p[1], p[2]);
+    };
+    const auto bytes = [](glm::vec3 c) { return glm::ivec3(glm::round(glm::clamp(c, 0.f, 1.f) * 255.f)); };
+    EXPECT_EQ(colourAt(0), bytes(kFalseShadowColour));
+    EXPECT_EQ(colourAt(1), bytes(kFalseLitColour));
+    EXPECT_EQ(colourAt(2), bytes(kEdgeErrorColour));
+    EXPECT_EQ(colourAt(3), bytes(kAmbiguousColour));
+    EXPECT_EQ(colourAt(5), bytes(kNonReceiverColour));
+    EXPECT_EQ(colourAt(6), bytes(kInvalidColour));
+    const Legend legend = truthClassLegend(classes, s, receiver);
+    std::vector<glm::ivec3> listed;
+    for (const auto& e : legend.entries) listed.push_back(bytes(e.colour));
+    for (int x = 0; x < 7; ++x)
+        EXPECT_NE(std::find(listed.begin(), listed.end(), colourAt(x)), listed.end()) << "pixel " << x;
+    EXPECT_EQ(legend.entries.size(), 7u); // six classes shown (agrees only lit) + invalid
+    // Without invalid pixels or edge errors, the legend does not list them.
+    const std::vector<C> fewer{C::Agrees, C::InteriorFalseShadow};
+    const Legend small = truthClassLegend(fewer, std::vector<float>{1.f, 0.f}, std::vector<uint8_t>{1, 1});
+    for (const auto& e : small.entries) {
+        EXPECT_NE(bytes(e.colour), bytes(kInvalidColour));
+        EXPECT_NE(bytes(e.colour), bytes(kEdgeErrorColour));
+    }
+    EXPECT_EQ(small.entries.size(), 2u);
+}

@@ -265,7 +265,8 @@ void Dashboard::drawHeatmapPanel() {
         }
         widgetMapRecord("views.heatmap");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("aliasing: log2 m; truth: false shadow red, false lit blue; splits; texels: the map's "
+            ImGui::SetTooltip("aliasing: log2 m; truth: interior false shadow red, false lit blue, edge errors amber, "
+                              "ambiguous teal; splits; texels: the map's "
                               "texel grid; difference: m_A / m_B (A/B compare)");
         zoomButtons(state_.imageViews[int(ViewPanel::Heatmap)], "heatmap");
         const int side = shownSide();

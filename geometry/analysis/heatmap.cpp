@@ -3,8 +3,8 @@
 //   [SECTION] Legend drawing ... textWidth, Canvas, layoutLegend, drawBar, drawEntries, shortNumber
 //   [SECTION] PFM helpers ...... headerToken, parseSide, swapFloats
 //   [SECTION] Colour maps ...... divergingLog2, falseColourTruth, splitColour
-//   [SECTION] Heatmap images ... aliasingHeatmap, truthHeatmap
-//   [SECTION] Legends .......... aliasingLegend, truthLegend, splitLegend, legendRect, drawLegend
+//   [SECTION] Heatmap images ... aliasingHeatmap, truthHeatmap, truthClassHeatmap
+//   [SECTION] Legends .......... aliasingLegend, truthLegend, truthClassLegend, splitLegend, legendRect, drawLegend
 //   [SECTION] PFM files ........ writePfm, readPfm
 
 #include "geometry/analysis/heatmap.h"
@@ -317,6 +317,38 @@ Image truthHeatmap(std::span<const float> s, std::span<const uint8_t> occluded, 
     return img;
 }
 
+namespace {
+bool invalidAt(std::span<const TruthClass> classes, std::span<const float> s, std::span<const uint8_t> receiver,
+               size_t i) {
+    return classes[i] == TruthClass::NotCounted && receiver[i] && !std::isfinite(s[i]);
+}
+glm::vec3 classColour(TruthClass c, float s) {
+    switch (c) {
+    case TruthClass::InteriorFalseShadow: return kFalseShadowColour;
+    case TruthClass::InteriorFalseLit: return kFalseLitColour;
+    case TruthClass::EdgeError: return kEdgeErrorColour;
+    case TruthClass::Ambiguous: return kAmbiguousColour;
+    case TruthClass::Agrees: return glm::vec3(0.3f + 0.6f * std::clamp(s, 0.f, 1.f));
+    case TruthClass::NotCounted: break;
+    }
+    return kNonReceiverColour;
+}
+} // namespace
+
+Image truthClassHeatmap(std::span<const TruthClass> classes, std::span<const float> s,
+                        std::span<const uint8_t> receiver, int w, int h) {
+    requireImageInput(classes.size(), w, h, "truthClassHeatmap");
+    requireImageInput(s.size(), w, h, "truthClassHeatmap");
+    requireImageInput(receiver.size(), w, h, "truthClassHeatmap");
+    Image img = blankImage(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * size_t(w) + size_t(x);
+            setPixel(img, x, y, invalidAt(classes, s, receiver, i) ? kInvalidColour : classColour(classes[i], s[i]));
+        }
+    return img;
+}
+
 // ---- [SECTION] Legends ----------------------------------------------------------------------
 
 Legend aliasingLegend(float range) {
@@ -341,6 +373,35 @@ Legend truthLegend() {
                  {falseColourTruth(1.f, false), "agrees, lit"},
                  {falseColourTruth(0.f, true), "agrees, shadowed"},
                  {kNonReceiverColour, "not a receiver"}};
+    return l;
+}
+
+Legend truthClassLegend(std::span<const TruthClass> classes, std::span<const float> s,
+                        std::span<const uint8_t> receiver) {
+    if (classes.size() != s.size() || classes.size() != receiver.size())
+        throw std::invalid_argument("truthClassLegend: per-pixel inputs differ in size");
+    bool shown[6] = {}, invalid = false, agreesLit = false, agreesShadowed = false;
+    for (size_t i = 0; i < classes.size(); ++i) {
+        if (invalidAt(classes, s, receiver, i)) {
+            invalid = true;
+            continue;
+        }
+        shown[int(classes[i])] = true;
+        if (classes[i] == TruthClass::Agrees) (s[i] >= 0.5f ? agreesLit : agreesShadowed) = true;
+    }
+    Legend l;
+    l.title = "shadow vs ground truth";
+    const auto add = [&](bool on, glm::vec3 colour, const char* label) {
+        if (on) l.entries.push_back({colour, label});
+    };
+    add(shown[int(TruthClass::InteriorFalseShadow)], kFalseShadowColour, "false shadow (interior)");
+    add(shown[int(TruthClass::InteriorFalseLit)], kFalseLitColour, "false lit (interior)");
+    add(shown[int(TruthClass::EdgeError)], kEdgeErrorColour, "edge misplaced (within 1 px)");
+    add(shown[int(TruthClass::Ambiguous)], kAmbiguousColour, "ambiguous (terminator, normals)");
+    add(agreesLit, classColour(TruthClass::Agrees, 1.f), "agrees, lit (grey = s)");
+    add(agreesShadowed, classColour(TruthClass::Agrees, 0.f), "agrees, shadowed");
+    add(shown[int(TruthClass::NotCounted)], kNonReceiverColour, "not a receiver");
+    add(invalid, kInvalidColour, "invalid (NaN/Inf)");
     return l;
 }
 

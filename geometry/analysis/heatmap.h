@@ -3,6 +3,7 @@
 // PFM float dumps. CPU only, no GL calls; per-pixel inputs are row-major, top row first, like
 // renderer::Image.
 #include "geometry/analysis/image.h"
+#include "geometry/analysis/truth_classes.h"
 
 #include <glm/glm.hpp>
 
@@ -36,6 +37,10 @@ inline constexpr glm::vec3 kNonReceiverColour{0.15f, 0.15f, 0.15f};
 [[nodiscard]] glm::vec3 falseColourTruth(float s, bool occluded);
 inline constexpr glm::vec3 kFalseShadowColour{0.95f, 0.12f, 0.1f};
 inline constexpr glm::vec3 kFalseLitColour{0.15f, 0.4f, 1.f};
+/// The truth classes (truth_classes.h) beyond false shadow (red, interior) and false lit (blue,
+/// interior): an edge drawn in the wrong place, amber; a pixel whose truth is ambiguous, teal.
+inline constexpr glm::vec3 kEdgeErrorColour{1.f, 0.72f, 0.1f};
+inline constexpr glm::vec3 kAmbiguousColour{0.1f, 0.75f, 0.65f};
 
 /// Categorical colour of split i (8 distinct hues, Tableau 10-like; cycles past 8, negative i
 /// folds into the same cycle).
@@ -51,6 +56,13 @@ inline constexpr glm::vec3 kFalseLitColour{0.15f, 0.4f, 1.f};
 /// std::invalid_argument unless every span holds w·h values.
 [[nodiscard]] Image truthHeatmap(std::span<const float> s, std::span<const uint8_t> occluded,
                                  std::span<const uint8_t> receiver, int w, int h);
+
+/// One colour per TruthClass: kFalseShadowColour interior false shadow, kFalseLitColour interior
+/// false lit, kEdgeErrorColour edge error, kAmbiguousColour ambiguous, a grey following s where the
+/// render agrees, kNonReceiverColour off the receivers, and kInvalidColour on receivers whose s is
+/// not finite. Throws std::invalid_argument unless both spans hold w·h values.
+[[nodiscard]] Image truthClassHeatmap(std::span<const TruthClass> classes, std::span<const float> s,
+                                      std::span<const uint8_t> receiver, int w, int h);
 
 // ---- legends --------------------------------------------------------------------------------
 
@@ -78,6 +90,10 @@ struct Legend {
 [[nodiscard]] Legend aliasingLegend(float range = 4);
 /// Red "false shadow", blue "false lit", grey "agrees (grey = s)", plus non-receivers.
 [[nodiscard]] Legend truthLegend();
+/// The legend of truthClassHeatmap(): a swatch for every colour the image shows, and for nothing
+/// else (invalid pixels included when there are any).
+[[nodiscard]] Legend truthClassLegend(std::span<const TruthClass> classes, std::span<const float> s,
+                                      std::span<const uint8_t> receiver);
 /// One swatch per split: "split i [n, f]" with the split's eye-space depth range (x = near,
 /// y = far).
 [[nodiscard]] Legend splitLegend(std::span<const glm::vec2> depthRanges);

@@ -91,6 +91,11 @@ Image differenceView(const Inspection& a, const Inspection& b) {
 
 Image truthView(const Inspection& in, const Image& eye, float blend) {
     if (!in.occluded) throw std::invalid_argument("the truth view needs --truth");
+    if (in.classes.size() == in.shadow.size()) { // the truth classes: each its own colour
+        Image img = blendOver(truthClassHeatmap(in.classes, in.shadow, in.receiver, in.width, in.height), eye, blend);
+        drawLegend(img, truthClassLegend(in.classes, in.shadow, in.receiver));
+        return img;
+    }
     Image img = blendOver(truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height), eye, blend);
     drawLegend(img, truthLegend());
     return img;

@@ -14,7 +14,9 @@ namespace geometry::analysis {
 [[nodiscard]] Image texelsView(const Image& eye, const Inspection& in, int every = 1);
 /// log2 m heatmap with a legend (docs/design.md §4); `blend` > 0 mixes the eye image in (0 heatmap alone).
 [[nodiscard]] Image aliasingView(const Inspection& in, const Image& eye, float blend = 0.f);
-/// False shadow red, false lit blue, over the grey scene; needs in.occluded.
+/// The truth classes, each its own colour (interior false shadow red, interior false lit blue, edge
+/// errors amber, ambiguous teal) over the grey scene, with a legend of the colours shown; needs
+/// in.occluded (falls back to false shadow / false lit alone without in.classes).
 [[nodiscard]] Image truthView(const Inspection& in, const Image& eye, float blend = 0.f);
 
 /// A/B comparison (Barroso Fig 8): log2(m_A / m_B) on the diverging scale where both frames see a
