@@ -24,8 +24,8 @@
 namespace app {
 
 const std::vector<std::string>& viewNames() {
-    static const std::vector<std::string> names = {"eye",   "light",  "light_unwarped", "aliasing",
-                                                   "truth", "splits", "texels",         "dashboard"};
+    static const std::vector<std::string> names = {"eye",    "light",  "light_unwarped", "aliasing", "truth",
+                                                   "splits", "texels", "dashboard",      "pixels"};
     return names;
 }
 
@@ -132,6 +132,7 @@ bool wants(const ExportOptions& e, const std::string& view) {
 
 int runRender(const RenderOptions& o, const ExportOptions& e) {
     if (wants(e, "truth") && !e.truth) throw std::invalid_argument("--views truth needs --truth");
+    if (wants(e, "pixels") && !e.truth) throw std::invalid_argument("--views pixels needs --truth");
     renderer::ViewOptions views;
     views.lightViewSize = lightViewSize(o.settings.resolution);
     views.lightSplit = e.lightSplit;
@@ -171,6 +172,9 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
         for (size_t i = 0; i < t.size(); ++i) t[i] = in.receiver[i] ? ((*in.occluded)[i] ? 0.f : 1.f) : NAN;
         w.pfm("truth.pfm", t, in.width, in.height);
         if (wants(e, "truth")) w.png("truth.png", truthView(in, eye, e.heatmapBlend));
+        if (wants(e, "pixels"))
+            for (const auto& layer : geometry::analysis::pixelLayers(in, f.plan.eye, f.plan.v, f.plan.l))
+                w.pfm("pixels_" + layer.name + ".pfm", layer.values, in.width, in.height);
     }
     if (wants(e, "dashboard")) {
         // The GUI's dashboard at --size, drawn headless with the same settings (same layout and pixels).

@@ -4,6 +4,7 @@
 #include "geometry/analysis/heatmap.h"
 #include "renderer/image.h"
 
+#include <glm/glm.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -161,4 +163,40 @@ TEST(Cli, MeshInfoAndCleanReportTheCleanup) {
     const CommandResult missing = run("mesh info " + (dir / "nope.stl").string());
     EXPECT_NE(missing.exitCode, 0);
     EXPECT_NE(missing.output.find("nope.stl"), std::string::npos);
+}
+
+// --views pixels: the per-pixel quantities behind the figures, one PFM each, consistent with each other.
+TEST(Cli, RenderWritesThePixelLayers) {
+    const fs::path dir = freshDir("pixels");
+    const CommandResult r = run("render --backend osmesa --scene plane --size 80x60 --shadow-res 256 --truth "
+                                "--views pixels --set splits.count=2 --out " +
+                                dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::map<std::string, std::vector<float>> layer;
+    for (const char* name :
+         {"view_depth", "split", "normal_x", "normal_y", "normal_z", "n_dot_l", "m", "s", "coverage", "class"}) {
+        int w = 0, h = 0;
+        layer[name] = geometry::analysis::readPfm((dir / ("pixels_" + std::string(name) + ".pfm")).string(), w, h);
+        ASSERT_EQ(w, 80) << name;
+        ASSERT_EQ(h, 60) << name;
+    }
+    int receivers = 0;
+    for (size_t i = 0; i < layer["s"].size(); ++i) {
+        const float split = layer["split"][i], cls = layer["class"][i];
+        ASSERT_TRUE(split == -1.f || split == 0.f || split == 1.f) << split;
+        ASSERT_TRUE(cls >= 0.f && cls <= 5.f && cls == std::round(cls)) << cls;
+        if (split < 0.f) continue;
+        const glm::vec3 n(layer["normal_x"][i], layer["normal_y"][i], layer["normal_z"][i]);
+        EXPECT_NEAR(glm::length(n), 1.f, 1e-3f);
+        EXPECT_GT(layer["view_depth"][i], 0.f);
+        if (cls == 0.f) continue;
+        ++receivers;
+        EXPECT_TRUE(layer["coverage"][i] == 0.f || layer["coverage"][i] == 1.f);
+        EXPECT_GT(layer["n_dot_l"][i], -0.1f) << "receivers face the light (or graze it)";
+    }
+    EXPECT_GT(receivers, 1000);
+    const CommandResult bad = run("render --backend osmesa --scene plane --size 32x32 --views pixels --out " +
+                                  freshDir("pixels_notruth").string());
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.output.find("--views pixels needs --truth"), std::string::npos) << bad.output;
 }

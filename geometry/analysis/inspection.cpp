@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace geometry::analysis {
 
@@ -71,6 +72,46 @@ void addTruth(Inspection& in, const glm::vec3& eye, const glm::vec3& l, const Gr
     in.splitTruthClasses.clear();
     for (int s = 0; s < int(in.utilization.size()); ++s)
         in.splitTruthClasses.push_back(truthClassesWhere(input, split, s));
+}
+
+std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
+                                    const glm::vec3& l) {
+    if (in.classes.size() != in.shadow.size() || in.geometricNormals.size() != in.shadow.size())
+        throw std::invalid_argument("the per-pixel layers need ground truth (--truth)");
+    const size_t n = in.shadow.size();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<PixelLayer> layers{
+        {"view_depth", "distance along the view direction, scene units", {}},
+        {"split", "split index (-1: sky)", {}},
+        {"normal_x", "geometric normal facing the camera, x", {}},
+        {"normal_y", "geometric normal, y", {}},
+        {"normal_z", "geometric normal, z", {}},
+        {"n_dot_l", "geometric normal · direction to the light", {}},
+        {"m", "aliasing error m, screen pixels per texel (NaN: singular J)", {}},
+        {"s", "rendered lit fraction", {}},
+        {"coverage", "truth's lit fraction c over the pixel's samples", {}},
+        {"class",
+         "TruthClass: 0 not counted, 1 agrees, 2 interior false shadow, 3 interior false lit, "
+         "4 edge error, 5 ambiguous",
+         {}}};
+    for (auto& layer : layers) layer.values.assign(n, nan);
+    const glm::vec3 toLight = -glm::normalize(l);
+    for (size_t i = 0; i < n; ++i) {
+        const bool seen = in.aux[i].z >= 0.f;
+        layers[1].values[i] = seen ? std::round(in.aux[i].z) : -1.f;
+        layers[9].values[i] = float(int(in.classes[i]));
+        if (!seen) continue;
+        const glm::vec3& g = in.geometricNormals[i];
+        layers[0].values[i] = glm::dot(in.positions[i] - eye, viewDir);
+        layers[2].values[i] = g.x;
+        layers[3].values[i] = g.y;
+        layers[4].values[i] = g.z;
+        layers[5].values[i] = glm::dot(g, toLight);
+        layers[6].values[i] = in.m[i] > 0.f && in.m[i] < kSingularM ? in.m[i] : nan;
+        layers[7].values[i] = in.shadow[i];
+        layers[8].values[i] = in.receiver[i] ? in.coverage[i] : nan;
+    }
+    return layers;
 }
 
 namespace {

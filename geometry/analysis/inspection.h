@@ -10,6 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace geometry::analysis {
@@ -69,6 +70,22 @@ void addTruth(Inspection& in, const glm::vec3& eye, const glm::vec3& l, const Gr
 /// The same with the geometric normals already found (GroundTruth::surfaceNormals).
 [[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const std::vector<glm::vec3>& geometricNormals,
                                                   const glm::vec3& l, const GroundTruth& truth);
+
+/// One per-pixel quantity for offline analysis (`render --views pixels`): written as
+/// pixels_<name>.pfm, one float per pixel, top row first in memory (PFM stores bottom-up).
+struct PixelLayer {
+    std::string name;
+    std::string meaning;
+    std::vector<float> values;
+};
+
+/// The per-pixel quantities behind every figure of an inspection with truth (addTruth): view_depth,
+/// split, normal_x/y/z (geometric), n_dot_l (geometric normal · direction to the light), m, s,
+/// coverage (the truth's lit fraction c) and class (TruthClass as a number). Pixels that see no
+/// geometry hold NaN (split: −1); m at the singular cap is NaN. `eye` and unit `viewDir` place the
+/// camera for the view depth. Throws std::invalid_argument without truth.
+[[nodiscard]] std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
+                                                  const glm::vec3& l);
 
 /// metrics.json fields: aliasing{mean,p50,p95,max,undersampled,singular}, truth{false_shadow,false_lit,mean_abs}.
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in);
