@@ -113,6 +113,7 @@ namespace {
 struct Row {
     std::string config, preset, view;
     double gamma = 0, gpuMs = 0, cpuMs = 0, p95 = 0, falseLit = 0, falseShadow = 0, memoryMiB = 0;
+    geometry::analysis::TruthClasses classes; // with truth
     bool truth = false;
 };
 
@@ -186,6 +187,7 @@ int runBench(const BenchOptions& o) {
                 row.truth = true;
                 row.falseLit = in.truth->falseLit;
                 row.falseShadow = in.truth->falseShadow;
+                if (in.truthClasses) row.classes = *in.truthClasses;
             }
             rows.push_back(row);
             std::cerr << "[" << rows.size() << "/" << total << "] " << cfg.label << " @ " << viewName << ": GPU "
@@ -198,14 +200,21 @@ int runBench(const BenchOptions& o) {
     {
         std::ofstream csv(dir / "results.csv");
         csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
-               "shadow_memory_mib,frames,width,height,renderer\n";
+               "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
+               "edge_displacement_texels,ambiguous\n";
         for (const Row& w : rows) {
             csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
                 << w.cpuMs << ',' << w.p95 << ',';
             if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
             else csv << ",,";
             csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.common.size.width << ',' << o.common.size.height
-                << ",\"" << context->rendererString() << "\"\n";
+                << ",\"" << context->rendererString() << "\",";
+            const auto& c = w.classes;
+            if (w.truth)
+                csv << c.interiorFalseShadow << ',' << c.interiorFalseLit << ',' << c.edgeError << ','
+                    << c.edgeDisplacementTexelsMedian << ',' << c.ambiguous;
+            else csv << ",,,,";
+            csv << '\n';
         }
         if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
     }

@@ -67,6 +67,11 @@ TEST(Bench, WritesOneRowPerConfigurationAndViewAndTheTradeoffChart) {
         const double mis = std::stod(row[col("misclassified")]);
         EXPECT_GE(mis, 0.0);
         EXPECT_LE(mis, 1.0);
+        // The classes split the misclassified pixels (ambiguous ones are counted apart).
+        const double parts = std::stod(row[col("interior_false_shadow")]) + std::stod(row[col("interior_false_lit")]) +
+                             std::stod(row[col("edge_error")]);
+        EXPECT_LE(parts, mis + 1e-9);
+        EXPECT_GE(parts + std::stod(row[col("ambiguous")]), mis - 1e-9);
         if (row[col("preset")] == "ssm") ssmP95 += std::stod(row[col("p95")]);
         if (row[col("preset")] == "paper") paperP95 += std::stod(row[col("p95")]);
     }

@@ -147,6 +147,29 @@ void Dashboard::drawStatsTable() {
                 },
                 "Against ray-traced ground truth: lit pixels shadowed (acne) / shadowed pixels lit (leaks)");
             row(
+                "interior fs / fl / edge",
+                [&](int i) {
+                    const auto* in = insp(i);
+                    if (!in || !in->truthClasses) return std::string(state_.views.truth ? "–" : "truth off");
+                    const auto& t = *in->truthClasses;
+                    return fmt("%.2f", 100.0 * t.interiorFalseShadow) + " / " +
+                           fmt("%.2f", 100.0 * t.interiorFalseLit) + " / " + fmt("%.2f %%", 100.0 * t.edgeError);
+                },
+                "The same split by cause (docs/design.md §4 \"Truth classes\"): false shadow and false lit at least "
+                "1 px from a true shadow edge (acne, leaks), and misclassified pixels within 1 px of one (an edge "
+                "drawn slightly off)");
+            row(
+                "edge offset / ambiguous",
+                [&](int i) {
+                    const auto* in = insp(i);
+                    if (!in || !in->truthClasses) return std::string(state_.views.truth ? "–" : "truth off");
+                    const auto& t = *in->truthClasses;
+                    return fmt("%.2f texels", t.edgeDisplacementTexelsMedian) + " / " +
+                           fmt("%.2f %%", 100.0 * t.ambiguous);
+                },
+                "Median distance from a misplaced shadow edge to the true one, in texels; receivers whose truth is "
+                "ambiguous (terminator, shading and geometric normals disagree), left out of the classes");
+            row(
                 "texel utilization",
                 [&](int i) {
                     const auto* in = insp(i);
