@@ -357,7 +357,7 @@ std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const s
     forEachPacket(RunLayout{points.size()}, threads, [&](const Lanes& lanes) {
         RTCRayHit16 rh;
         alignas(64) std::array<int, kLanes> valid{};
-        std::array<float, kLanes> distance{};
+        std::array<float, kLanes> distance{}, reach{};
         bool any = false;
         for (int i = 0; i < kLanes; ++i) {
             const size_t idx = lanes[i];
@@ -368,8 +368,8 @@ std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const s
                 continue;
             }
             distance[i] = d;
-            const float reach = std::max(4.f * epsilon(p), 1e-4f * d);
-            setLane(rh.ray, i, eye, (p - eye) / d, 0.f, d + reach);
+            reach[i] = std::max(4.f * epsilon(p), 1e-4f * d);
+            setLane(rh.ray, i, eye, (p - eye) / d, 0.f, d + reach[i]);
             rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
             valid[i] = -1;
             any = true;
@@ -380,8 +380,7 @@ std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const s
         for (int i = 0; i < kLanes; ++i) {
             if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
             const size_t idx = lanes[i];
-            const float reach = std::max(4.f * epsilon(points[idx]), 1e-4f * distance[i]);
-            if (!(std::abs(rh.ray.tfar[i] - distance[i]) <= reach)) continue; // another surface: keep the fallback
+            if (!(std::abs(rh.ray.tfar[i] - distance[i]) <= reach[i])) continue; // another surface: keep the fallback
             glm::vec3 n(rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]);
             const float len = glm::length(n);
             if (!(len > 0.f) || !std::isfinite(len)) continue;

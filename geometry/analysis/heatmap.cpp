@@ -380,7 +380,8 @@ Legend truthClassLegend(std::span<const TruthClass> classes, std::span<const flo
                         std::span<const uint8_t> receiver) {
     if (classes.size() != s.size() || classes.size() != receiver.size())
         throw std::invalid_argument("truthClassLegend: per-pixel inputs differ in size");
-    bool shown[6] = {}, invalid = false, agreesLit = false, agreesShadowed = false;
+    std::array<bool, size_t(TruthClass::Ambiguous) + 1> shown{};
+    bool invalid = false, agreesLit = false, agreesShadowed = false;
     for (size_t i = 0; i < classes.size(); ++i) {
         if (invalidAt(classes, s, receiver, i)) {
             invalid = true;

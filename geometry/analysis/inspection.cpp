@@ -95,21 +95,22 @@ std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, 
          "4 edge error, 5 ambiguous",
          {}}};
     for (auto& layer : layers) layer.values.assign(n, nan);
+    enum { ViewDepth, Split, NormalX, NormalY, NormalZ, NDotL, M, S, Coverage, Class }; // the order above
     const glm::vec3 toLight = -glm::normalize(l);
     for (size_t i = 0; i < n; ++i) {
         const bool seen = in.aux[i].z >= 0.f;
-        layers[1].values[i] = seen ? std::round(in.aux[i].z) : -1.f;
-        layers[9].values[i] = float(int(in.classes[i]));
+        layers[Split].values[i] = seen ? std::round(in.aux[i].z) : -1.f;
+        layers[Class].values[i] = float(int(in.classes[i]));
         if (!seen) continue;
         const glm::vec3& g = in.geometricNormals[i];
-        layers[0].values[i] = glm::dot(in.positions[i] - eye, viewDir);
-        layers[2].values[i] = g.x;
-        layers[3].values[i] = g.y;
-        layers[4].values[i] = g.z;
-        layers[5].values[i] = glm::dot(g, toLight);
-        layers[6].values[i] = in.m[i] > 0.f && in.m[i] < kSingularM ? in.m[i] : nan;
-        layers[7].values[i] = in.shadow[i];
-        layers[8].values[i] = in.receiver[i] ? in.coverage[i] : nan;
+        layers[ViewDepth].values[i] = glm::dot(in.positions[i] - eye, viewDir);
+        layers[NormalX].values[i] = g.x;
+        layers[NormalY].values[i] = g.y;
+        layers[NormalZ].values[i] = g.z;
+        layers[NDotL].values[i] = glm::dot(g, toLight);
+        layers[M].values[i] = in.m[i] > 0.f && in.m[i] < kSingularM ? in.m[i] : nan;
+        layers[S].values[i] = in.shadow[i];
+        layers[Coverage].values[i] = in.receiver[i] ? in.coverage[i] : nan;
     }
     return layers;
 }
