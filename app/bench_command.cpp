@@ -105,7 +105,7 @@ void addBenchCommand(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--warmup", o.warmup, "Untimed frames first (at least 1)")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
-    cmd.add_flag("--truth", o.truth, "Also measure misclassification against ray-traced truth (Embree)");
+    addTruthOptions(cmd, o.truth, "Also measure misclassification against ray-traced truth (Embree)");
 }
 
 namespace {
@@ -158,7 +158,7 @@ int runBench(const BenchOptions& o) {
     geometry::scene::Scene& scene = file.scene;
     renderer::Renderer r(scene);
     std::unique_ptr<geometry::analysis::GroundTruth> truth;
-    if (o.truth) truth = std::make_unique<geometry::analysis::GroundTruth>(scene);
+    if (o.truth.enabled) truth = std::make_unique<geometry::analysis::GroundTruth>(scene);
     std::cerr << "bench: " << configs.size() << " configuration(s) × " << views.size() << " view(s), " << o.frames
               << " frames each on " << context->rendererString() << '\n';
 
@@ -169,9 +169,9 @@ int runBench(const BenchOptions& o) {
         for (const auto& [viewName, view] : views) {
             scene.camera = view.camera;
             scene.light = view.light;
-            const renderer::Measurement m =
-                renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, scene.light, o.common.size,
-                                  {.warmup = o.warmup, .frames = o.frames}, truth.get());
+            const renderer::Measurement m = renderer::measure(
+                r, cfg.settings, scene.bounds(), scene.camera, scene.light, o.common.size,
+                {.warmup = o.warmup, .frames = o.frames, .truthSamples = o.truth.samples}, truth.get());
             if (m.gpuFrames == 0) gpuTimes = false;
             const geometry::analysis::Inspection& in = m.inspection;
             Row row;

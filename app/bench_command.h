@@ -21,7 +21,7 @@ struct BenchOptions {
     std::vector<std::string> sweeps; // "key=v1,v2,..."
     int frames = 10;
     int warmup = 2;
-    bool truth = false;
+    TruthOptions truth;
 
     [[nodiscard]] static RenderOptions benchDefaults() {
         RenderOptions o;

@@ -11,6 +11,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -61,9 +62,12 @@ int main(int argc, char** argv) {
         return cli.exit(e);
     } catch (const CLI::CallForVersion& e) {
         return cli.exit(e);
-    } catch (const CLI::ParseError& e) {
+    } catch (const CLI::ParseError& e) { // exit codes: 0 done, 1 failed, 2 bad arguments (3: tune found nothing)
         std::cerr << "shadowscope: error: " << e.what() << '\n';
-        return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+        return 2;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "shadowscope: error: " << e.what() << '\n';
+        return 2;
     } catch (const std::exception& e) {
         std::cerr << "shadowscope: error: " << e.what() << '\n';
         return 1;

@@ -85,7 +85,7 @@ void addExportOptions(CLI::App& cmd, ExportOptions& e) {
         ->delimiter(',')
         ->check(CLI::IsMember(viewNames()))
         ->capture_default_str();
-    cmd.add_flag("--truth", e.truth, "Ray-trace ground truth (Embree) and report misclassified pixels");
+    addTruthOptions(cmd, e.truth, "Ray-trace ground truth (Embree) and report misclassified pixels");
     cmd.add_option("--texel-grid", e.texelGrid, "texels view: draw every N-th texel line")->check(CLI::Range(1, 4096));
     cmd.add_option("--light-split", e.lightSplit, "light views: show this split's map")
         ->check(CLI::Range(0, geometry::shadow::kMaxSplits - 1));
@@ -131,8 +131,8 @@ bool wants(const ExportOptions& e, const std::string& view) {
 } // namespace
 
 int runRender(const RenderOptions& o, const ExportOptions& e) {
-    if (wants(e, "truth") && !e.truth) throw std::invalid_argument("--views truth needs --truth");
-    if (wants(e, "pixels") && !e.truth) throw std::invalid_argument("--views pixels needs --truth");
+    if (wants(e, "truth") && !e.truth.enabled) throw std::invalid_argument("--views truth needs --truth");
+    if (wants(e, "pixels") && !e.truth.enabled) throw std::invalid_argument("--views pixels needs --truth");
     renderer::ViewOptions views;
     views.lightViewSize = lightViewSize(o.settings.resolution);
     views.lightSplit = e.lightSplit;
@@ -148,8 +148,8 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     Writer w{std::filesystem::path(o.out), {}};
 
     std::unique_ptr<geometry::analysis::GroundTruth> truth;
-    if (e.truth) truth = std::make_unique<geometry::analysis::GroundTruth>(f.scene);
-    const Inspection in = inspect(*f.renderer, f.plan, truth.get());
+    if (e.truth.enabled) truth = std::make_unique<geometry::analysis::GroundTruth>(f.scene);
+    const Inspection in = inspect(*f.renderer, f.plan, truth.get(), e.truth.samples);
     const geometry::analysis::Image eye = f.renderer->readEye();
     if (wants(e, "eye")) w.png("eye.png", eye);
     if (wants(e, "light")) {
@@ -166,7 +166,7 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     }
     if (wants(e, "splits")) w.png("splits.png", splitsView(eye, in, f.plan));
     if (wants(e, "texels")) w.png("texels.png", texelsView(eye, in, e.texelGrid));
-    if (e.truth) {
+    if (e.truth.enabled) {
         w.pfm("shadow.pfm", in.shadow, in.width, in.height);
         std::vector<float> t(in.occluded->size());
         for (size_t i = 0; i < t.size(); ++i) t[i] = in.receiver[i] ? ((*in.occluded)[i] ? 0.f : 1.f) : NAN;

@@ -20,7 +20,7 @@ struct HeadlessFrame;
 /// What `render` writes besides metrics.json.
 struct ExportOptions {
     std::vector<std::string> views{"eye", "light"}; // names from viewNames()
-    bool truth = false;                             // ground-truth pass (Embree)
+    TruthOptions truth;                             // ground-truth pass (Embree)
     int texelGrid = 1;                              // texels view: a line every N texels
     int lightSplit = 0;                             // light views: which split's map
     glm::vec2 depthRange{-1.f};                     // light view black/white points; x < 0: auto-fit
@@ -28,7 +28,7 @@ struct ExportOptions {
     float heatmapBlend = 0.f;                       // heatmaps over the eye image: 0 alone … 1 opaque
 };
 
-/// Adds --views, --truth, --texel-grid, --light-split, --depth-range, --light-texels, --heatmap-blend.
+/// Adds --views, --truth, --truth-samples, --texel-grid, --light-split, --depth-range, --light-texels, --heatmap-blend.
 void addExportOptions(CLI::App& cmd, ExportOptions& options);
 
 /// `shadowscope render`: writes one PNG per view (plus PFM raw values for aliasing, the shadow

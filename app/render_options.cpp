@@ -2,6 +2,7 @@
 
 #include "app/resources.h"
 
+#include "geometry/analysis/ground_truth.h"
 #include "geometry/io/preset.h"
 
 #include "geometry/io/scene_file.h"
@@ -224,6 +225,15 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
         },
         "Light direction dx,dy,dz, from the light into the scene (default: the scene's)");
     addSettingSources(cmd, o);
+}
+
+void addTruthOptions(CLI::App& cmd, TruthOptions& truth, const std::string& truthHelp) {
+    cmd.add_flag("--truth", truth.enabled, truthHelp);
+    cmd.add_option("--truth-samples", truth.samples,
+                   "Truth rays per pixel per axis: N x N samples over the pixel's footprint give its lit fraction "
+                   "c (reports use 4)")
+        ->check(CLI::Range(1, geometry::analysis::GroundTruth::kMaxSamplesPerAxis))
+        ->capture_default_str();
 }
 
 void addSettingOption(CLI::App& cmd, geometry::shadow::ShadowSettings& settings) {

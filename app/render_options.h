@@ -51,6 +51,15 @@ enum class OptionUse {
 /// command line; untouched when none of the three is given.
 void addRenderOptions(CLI::App& cmd, RenderOptions& options, OptionUse use = OptionUse::Render);
 
+/// Ground truth as a command asks for it: --truth and --truth-samples N (N × N rays per pixel).
+struct TruthOptions {
+    bool enabled = false;
+    int samples = 1; // per axis
+};
+
+/// Adds --truth (`truthHelp`) and --truth-samples to `cmd`.
+void addTruthOptions(CLI::App& cmd, TruthOptions& truth, const std::string& truthHelp);
+
 /// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()),
 /// applied directly to `settings`; for commands without --preset.
 void addSettingOption(CLI::App& cmd, geometry::shadow::ShadowSettings& settings);

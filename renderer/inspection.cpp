@@ -5,17 +5,16 @@
 namespace renderer {
 
 geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow::ShadowPlan& plan,
-                                       const geometry::analysis::GroundTruth* truth) {
+                                       const geometry::analysis::GroundTruth* truth, int truthSamples) {
     geometry::analysis::FrameReadback frame;
     frame.width = int(r.stats().eyeWidth);
     frame.shadow = r.readShadowMask();
     frame.aux = r.readAux();
     frame.positions = r.readPositions();
     frame.normals = r.readNormals();
-    frame.eye = plan.eye;
     for (const auto& split : plan.splits)
         frame.resolutions.push_back(std::min(split.resolution, r.stats().shadowResolution));
-    return geometry::analysis::makeInspection(std::move(frame), plan.l, truth);
+    return geometry::analysis::makeInspection(std::move(frame), plan, truth, truthSamples);
 }
 
 } // namespace renderer

@@ -5,8 +5,10 @@
 
 namespace renderer {
 
-/// Reads back the last frame and computes the statistics; `truth` adds the ground-truth pass.
+/// Reads back the last frame and computes the statistics; `truth` adds the ground-truth pass with
+/// truthSamples² samples per pixel (addTruth).
 [[nodiscard]] geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow::ShadowPlan& plan,
-                                                     const geometry::analysis::GroundTruth* truth);
+                                                     const geometry::analysis::GroundTruth* truth,
+                                                     int truthSamples = 1);
 
 } // namespace renderer

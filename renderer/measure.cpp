@@ -35,7 +35,7 @@ Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& 
     out.cpuMs = geometry::analysis::median(std::span(cpu));
     out.gpuFrames = int(gpu.size());
     out.shadowMemoryBytes = renderer.stats().shadowMemoryBytes;
-    out.inspection = inspect(renderer, out.plan, truth);
+    out.inspection = inspect(renderer, out.plan, truth, options.truthSamples);
     return out;
 }
 

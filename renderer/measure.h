@@ -13,9 +13,10 @@
 namespace renderer {
 
 struct MeasureOptions {
-    int warmup = 1;    // untimed frames first (llvmpipe's first timer query of a new renderer is bogus)
-    int frames = 3;    // timed frames
-    bool timed = true; // false: frames are rendered but not timed (no glFinish, no timer wait)
+    int warmup = 1;       // untimed frames first (llvmpipe's first timer query of a new renderer is bogus)
+    int frames = 3;       // timed frames
+    bool timed = true;    // false: frames are rendered but not timed (no glFinish, no timer wait)
+    int truthSamples = 1; // per axis, when a GroundTruth is given
 };
 
 struct Measurement {

@@ -182,11 +182,11 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
-    const bool slope = plan.bias.type == BiasType::Slope;
+    const bool slope = plan.polygonOffset != glm::vec2(0.f);
     const bool linear = plan.bias.linearZ;
     if (slope && !linear) {
         glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(plan.bias.slope, plan.bias.units);
+        glPolygonOffset(plan.polygonOffset.x, plan.polygonOffset.y);
     }
     Program& program = depthProgram(linear ? "#define LINEAR_Z\n" : "");
     program.use();

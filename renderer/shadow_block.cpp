@@ -17,6 +17,8 @@ ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResol
         s.linearLo = split.linearDepthRange.x;
         s.linearScale = split.linearDepthScale;
         s.dualDepthCap = split.dualDepthCap;
+        s.lookupShiftX = split.lookupShift.x;
+        s.lookupShiftY = split.lookupShift.y;
     }
     const auto& bias = plan.bias;
     const auto& filter = plan.filter;
@@ -27,7 +29,7 @@ ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResol
     b.viewDir = plan.v;
     b.biasType = static_cast<int>(bias.type);
     b.receiverOffset = plan.receiverOffset;
-    b.normalOffset = bias.normalOffset;
+    b.normalOffset = plan.normalOffsetTexels;
     b.diskRadius = filter.radius;
     b.bleedReduction = filter.bleedReduction;
     b.filterType = static_cast<int>(filter.type);
@@ -36,7 +38,7 @@ ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResol
     b.linearDepth = plan.linearDepth ? 1 : 0;
     b.tangentPlane = bias.tangentPlane ? 1 : 0;
     b.eyeBlurFalloff = filter.eyeBlurFalloff;
-    b.slopeBias = bias.type == geometry::shadow::BiasType::Slope ? glm::vec2(bias.slope, bias.units) : glm::vec2(0.f);
+    b.slopeBias = plan.polygonOffset;
     return b;
 }
 

@@ -165,11 +165,12 @@ TEST(Cli, MeshInfoAndCleanReportTheCleanup) {
     EXPECT_NE(missing.output.find("nope.stl"), std::string::npos);
 }
 
-// --views pixels: the per-pixel quantities behind the figures, one PFM each, consistent with each other.
+// --views pixels: the per-pixel quantities behind the figures, one PFM each, consistent with each
+// other; --truth-samples 3 gives 9 samples per pixel, so edges get a fractional coverage.
 TEST(Cli, RenderWritesThePixelLayers) {
     const fs::path dir = freshDir("pixels");
     const CommandResult r = run("render --backend osmesa --scene plane --size 80x60 --shadow-res 256 --truth "
-                                "--views pixels --set splits.count=2 --out " +
+                                "--truth-samples 3 --views pixels --set splits.count=2 --out " +
                                 dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::map<std::string, std::vector<float>> layer;
@@ -180,7 +181,7 @@ TEST(Cli, RenderWritesThePixelLayers) {
         ASSERT_EQ(w, 80) << name;
         ASSERT_EQ(h, 60) << name;
     }
-    int receivers = 0;
+    int receivers = 0, fractional = 0;
     for (size_t i = 0; i < layer["s"].size(); ++i) {
         const float split = layer["split"][i], cls = layer["class"][i];
         ASSERT_TRUE(split == -1.f || split == 0.f || split == 1.f) << split;
@@ -191,10 +192,27 @@ TEST(Cli, RenderWritesThePixelLayers) {
         EXPECT_GT(layer["view_depth"][i], 0.f);
         if (cls == 0.f) continue;
         ++receivers;
-        EXPECT_TRUE(layer["coverage"][i] == 0.f || layer["coverage"][i] == 1.f);
+        const float c = layer["coverage"][i];
+        ASSERT_TRUE(c >= 0.f && c <= 1.f) << c;
+        if (c > 0.f && c < 1.f) {
+            ++fractional;
+            bool ratio = false; // k of the h ≤ 9 samples that hit something
+            for (int h = 2; h <= 9; ++h) ratio = ratio || std::abs(std::round(c * float(h)) - c * float(h)) < 1e-4f;
+            EXPECT_TRUE(ratio) << c;
+        }
         EXPECT_GT(layer["n_dot_l"][i], -0.1f) << "receivers face the light (or graze it)";
     }
     EXPECT_GT(receivers, 1000);
+    EXPECT_GT(fractional, 10);
+    std::ifstream metrics(dir / "metrics.json");
+    const auto j = nlohmann::json::parse(metrics);
+    EXPECT_EQ(j.at("truth").at("samples_per_pixel"), 9);
+    EXPECT_TRUE(j.at("meshes").at("ground").contains("truth"));
+    const CommandResult zero = run("render --backend osmesa --scene plane --size 32x32 --truth --truth-samples 0 "
+                                   "--out " +
+                                   freshDir("pixels_zero").string());
+    EXPECT_EQ(zero.exitCode, 2);
+    EXPECT_NE(zero.output.find("--truth-samples"), std::string::npos) << zero.output;
     const CommandResult bad = run("render --backend osmesa --scene plane --size 32x32 --views pixels --out " +
                                   freshDir("pixels_notruth").string());
     EXPECT_NE(bad.exitCode, 0);

@@ -342,6 +342,137 @@ TEST(GroundTruthTriangle, PrimaryHitsClipAtNearAndFar) {
     EXPECT_TRUE(std::isnan(centreY(0.5f, 3.5f)));  // far plane short of both
 }
 
+// ---- Coverage: N × N samples per pixel --------------------------------------------------------
+
+namespace {
+
+constexpr int kCoverageW = 320, kCoverageH = 240;
+
+glm::mat4 planeViewProj() {
+    const Camera& cam = planeScene().camera;
+    return cam.projection(float(kCoverageW) / float(kCoverageH)) * cam.view();
+}
+
+/// Where a world point lands in the image, in pixels (x right, y down; pixel centres at k + 0.5).
+glm::vec2 toPixel(const glm::vec3& p) {
+    const glm::vec4 c = planeViewProj() * glm::vec4(p, 1.f);
+    return {(c.x / c.w * 0.5f + 0.5f) * float(kCoverageW), (0.5f - c.y / c.w * 0.5f) * float(kCoverageH)};
+}
+
+} // namespace
+
+// A pixel whose centre lies on a pole shadow's edge (the line the pole's extreme vertex casts, which
+// bounds the shadow of the faceted pole exactly) is partly lit: 4 × 4 samples give 0.3 ≤ c ≤ 0.7.
+TEST(GroundTruthCoverage, APixelOnAPoleShadowEdgeIsPartlyLit) {
+    const glm::vec3 l = glm::normalize(planeScene().light.direction);
+    const auto c = planeTruth().coverage(planeViewProj(), kCoverageW, kCoverageH, l, 4);
+    ASSERT_EQ(c.size(), size_t(kCoverageW * kCoverageH));
+    const Pole& pole = planeScenePoles().at(0);
+    float reach = 0.f; // the pole mesh's extent across the shadow, from its axis
+    for (const Mesh& m : planeScene().meshes)
+        if (m.name == "poles")
+            for (size_t i = 0; i < m.indices.size(); ++i) {
+                const glm::vec3 v = worldVertex(m, i);
+                if (glm::length(glm::vec2(v.x - pole.base.x, v.z - pole.base.z)) < pole.radius * 1.01f)
+                    reach = std::max(reach, glm::dot(v - pole.base, acrossShadow(l)));
+            }
+    ASSERT_GT(reach, pole.radius * 0.9f);
+    // Along the edge, the point that projects closest to a pixel centre.
+    float best = 1e9f;
+    glm::ivec2 pixel{-1};
+    for (float t = 0.3f; t <= 0.8f; t += 0.0005f) {
+        const glm::vec3 p = pole.base + t * pole.height * glm::vec3(l.x, 0.f, l.z) / -l.y + reach * acrossShadow(l);
+        const glm::vec2 q = toPixel(p);
+        const glm::vec2 centre = glm::floor(q) + 0.5f;
+        if (glm::distance(q, centre) < best) {
+            best = glm::distance(q, centre);
+            pixel = glm::ivec2(glm::floor(q));
+        }
+    }
+    ASSERT_LT(best, 0.05f);
+    ASSERT_TRUE(pixel.x >= 0 && pixel.y >= 0 && pixel.x < kCoverageW && pixel.y < kCoverageH);
+    const float edge = c[size_t(pixel.y) * kCoverageW + size_t(pixel.x)];
+    EXPECT_GE(edge, 0.3f) << "pixel " << pixel.x << "," << pixel.y;
+    EXPECT_LE(edge, 0.7f) << "pixel " << pixel.x << "," << pixel.y;
+}
+
+// Pixels whose 3 × 3 neighbourhood sees only the ground and agrees at every centre (one ray each)
+// lie away from every straight shadow edge and silhouette (a line through a pixel leaves one of its
+// eight neighbours' centres on its other side): their coverage is exactly 0 or 1. Seen from 6 m
+// above pole 0's shadow, so the 0.3 m wide shadow spans ~16 pixels.
+TEST(GroundTruthCoverage, PixelsAwayFromEdgesAreWhollyLitOrShadowed) {
+    const glm::vec3 l = glm::normalize(planeScene().light.direction);
+    const Pole& pole = planeScenePoles().at(0);
+    Camera cam = planeScene().camera;
+    cam.target = pole.base + 0.5f * pole.height * glm::vec3(l.x, 0.f, l.z) / -l.y;
+    cam.eye = cam.target + glm::vec3(0.f, 6.f, 0.5f);
+    cam.fovYDeg = 40.f;
+    const glm::mat4 vp = cam.projection(float(kCoverageW) / float(kCoverageH)) * cam.view();
+    const auto c = planeTruth().coverage(vp, kCoverageW, kCoverageH, l, 4);
+    const PrimaryHits hits = planeTruth().primaryHits(cam, kCoverageW, kCoverageH);
+    const auto occ = planeTruth().occluded(hits.points, hits.normals, l);
+    size_t away = 0, lit = 0, shadowed = 0, fractional = 0;
+    for (int y = 1; y + 1 < kCoverageH; ++y)
+        for (int x = 1; x + 1 < kCoverageW; ++x) {
+            const size_t i = size_t(y) * kCoverageW + size_t(x);
+            bool uniform = true;
+            for (int dy = -1; dy <= 1 && uniform; ++dy)
+                for (int dx = -1; dx <= 1 && uniform; ++dx) {
+                    const size_t j = size_t(y + dy) * kCoverageW + size_t(x + dx);
+                    uniform = std::abs(hits.points[j].y) < 1e-3f && hits.normals[j].y > 0.99f && occ[j] == occ[i];
+                }
+            if (!uniform) continue;
+            ++away;
+            if (c[i] == 1.f) ++lit;
+            else if (c[i] == 0.f) ++shadowed;
+            else ++fractional;
+        }
+    EXPECT_GT(away, 30000u);
+    EXPECT_GT(shadowed, 1000u);
+    EXPECT_GT(lit, 10000u);
+    EXPECT_EQ(fractional, 0u);
+}
+
+TEST(GroundTruthCoverage, OneSampleIsTheCentreRayAndBadInputsThrow) {
+    const glm::vec3 l = glm::normalize(planeScene().light.direction);
+    const Camera& cam = planeScene().camera;
+    const glm::mat4 vp = cam.projection(80.f / 60.f) * cam.view();
+    const auto same = planeTruth().coverage(vp, 80, 60, l, 1);
+    ASSERT_EQ(same.size(), size_t(80 * 60));
+    const PrimaryHits hits = planeTruth().primaryHits(cam, 80, 60);
+    const auto occ = planeTruth().occluded(hits.points, hits.normals, l);
+    size_t differ = 0, seen = 0;
+    for (size_t i = 0; i < same.size(); ++i) {
+        if (!std::isfinite(hits.points[i].x)) {
+            EXPECT_TRUE(std::isnan(same[i]));
+            continue;
+        }
+        ++seen;
+        const bool facing = glm::dot(hits.normals[i], -l) > 0.f;
+        differ += same[i] != ((facing && !occ[i]) ? 1.f : 0.f);
+    }
+    EXPECT_GT(seen, 3000u);
+    EXPECT_LE(differ, seen / 500) << "rays through the same pixel centres, unprojected another way";
+    EXPECT_THROW((void)planeTruth().coverage(vp, 80, 60, l, 0), std::invalid_argument);
+    EXPECT_THROW((void)planeTruth().coverage(vp, 80, 60, l, GroundTruth::kMaxSamplesPerAxis + 1),
+                 std::invalid_argument);
+    EXPECT_THROW((void)planeTruth().coverage(vp, 0, 60, l, 2), std::invalid_argument);
+    EXPECT_THROW((void)planeTruth().coverage(vp, 80, 60, glm::vec3(0.f), 2), std::invalid_argument);
+}
+
+// A contact ray ends at its distance: the ground just beside a pole's base is occluded within a
+// metre, a point 2 m down its shadow is not (the pole is 3.5 m along its ray).
+TEST(GroundTruthContact, OccludedWithinStopsAtTheDistance) {
+    const glm::vec3 l = glm::normalize(planeScene().light.direction);
+    const Pole& pole = planeScenePoles().at(0);
+    const glm::vec3 nearBase = pole.base + shadowDir(l) * (pole.radius + 0.02f);
+    const glm::vec3 down = pole.base + shadowDir(l) * 2.f;
+    const auto within = planeTruth().occludedWithin({nearBase, down, down}, {kUp, kUp, kUp}, l, {1.f, 1.f, 100.f});
+    EXPECT_EQ(within, (std::vector<uint8_t>{1, 0, 1}));
+    EXPECT_EQ(planeTruth().occludedWithin({nearBase}, {kUp}, l, {kNaN}).at(0), 0);
+    EXPECT_THROW((void)planeTruth().occludedWithin({nearBase}, {kUp}, l, {}), std::invalid_argument);
+}
+
 TEST(GroundTruthEmpty, NothingOccludesAndNothingIsSeen) {
     const Scene empty;
     const GroundTruth truth(empty);

@@ -11,6 +11,7 @@
 #include "renderer/inspection.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -160,4 +161,114 @@ TEST(Inspection, PlantedAcneIsInteriorFalseShadow) {
     r.render(good, vp, renderer::ViewOptions{});
     const Inspection clean = renderer::inspect(r, good, &truth);
     EXPECT_LT(clean.truthClasses->interiorFalseShadow, 0.005);
+}
+
+namespace {
+
+/// A slab (y 1.9–2) covering x < 0.3 and reaching far past the view, over a ground box; a camera
+/// straight down from 10 m; a light 16.7° off the vertical, along x. The slab's one shadow edge in
+/// view is the ground line x = 0.9, which falls on a column (or row) of the uniform map.
+Scene slabScene() {
+    Scene scene;
+    scene.name = "slab";
+    MeshBuilder ground("ground", glm::vec3(0.8f));
+    ground.addBox({0.f, -0.05f, 0.f}, {30.f, 0.05f, 30.f});
+    MeshBuilder slab("slab", glm::vec3(0.5f));
+    slab.addBox({0.3f - 15.f, 1.95f, 0.f}, {15.f, 0.05f, 30.f});
+    scene.meshes.push_back(ground.build());
+    scene.meshes.push_back(slab.build());
+    scene.camera.eye = {0.f, 10.f, 0.f};
+    scene.camera.target = {0.f, 0.f, 0.f};
+    scene.camera.up = {0.f, 0.f, -1.f};
+    scene.camera.fovYDeg = 40.f;
+    scene.camera.near = 1.f;
+    scene.camera.far = 20.f;
+    scene.light.direction = {0.3f, -1.f, 0.f};
+    return scene;
+}
+
+} // namespace
+
+// A map whose shadow edge lies half a texel from the true one is edge error of ≈ 0.5 texel, nothing
+// interior. The test first finds the lookup shift that puts the rendered edge exactly on the true
+// one (the map's texel grid rounds the slab's edge to a texel boundary), checks that it leaves no
+// error, then moves the lookups half a texel either way (SplitPlan::lookupShift).
+TEST(Inspection, AMapShiftedByHalfATexelIsEdgeErrorOfHalfATexel) {
+    const Scene scene = slabScene();
+    auto context = renderer::createOSMesaContext();
+    renderer::Renderer r(scene);
+    const GroundTruth truth(scene);
+    ShadowSettings s;
+    s.resolution = 128;
+    s.warp.method = WarpMethod::Uniform;
+    s.filter.type = FilterType::None;
+    s.bias.type = BiasType::Constant;
+    s.bias.constant = 0.05f;
+    const Viewport vp{256, 256};
+    ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    ASSERT_EQ(plan.splits.size(), 1u);
+    const auto texelAt = [&](const glm::vec3& p) {
+        const glm::vec4 c = plan.splits[0].lightViewProj * glm::vec4(p, 1.f);
+        return (glm::vec2(c) / c.w * 0.5f + 0.5f) * float(s.resolution);
+    };
+    const glm::vec2 edge = texelAt({0.3f, 2.f, 0.f}); // the slab's top edge, casting the shadow edge
+    const glm::vec2 across = glm::normalize(texelAt({0.31f, 2.f, 0.f}) - edge);
+    const int axis = std::abs(across.x) > std::abs(across.y) ? 0 : 1;
+    ASSERT_GT(std::abs(across[axis]), 0.999f) << "the edge must fall along a texel column or row";
+    // Texels whose centre the slab covers hold it; the lookup reads texel floor(t + shift): the
+    // rendered edge lies at the texel boundary K next to the true edge X, minus the shift.
+    const float X = edge[axis];
+    ASSERT_GT(std::abs(X - std::floor(X) - 0.5f), 0.05f) << "too close to a texel centre to round reliably";
+    const float K = std::round(X);
+    const auto classes = [&](float shift) {
+        plan.splits[0].lookupShift = glm::vec2(0.f);
+        plan.splits[0].lookupShift[axis] = shift;
+        r.render(plan, vp, renderer::ViewOptions{});
+        const Inspection in = renderer::inspect(r, plan, &truth, 4);
+        EXPECT_GT(in.aliasing.p50, 1.5) << "over a pixel per texel: half a texel is about a pixel";
+        EXPECT_LT(in.aliasing.p50, 3.0);
+        return *in.truthClasses;
+    };
+    const TruthClasses exact = classes(K - X);
+    EXPECT_LT(exact.edgeError, 0.0005) << "the rendered edge on the true one";
+    EXPECT_EQ(exact.interiorFalseShadow + exact.interiorFalseLit, 0.0);
+    for (const float half : {0.5f, -0.5f}) {
+        const TruthClasses t = classes(K - X + half);
+        EXPECT_GT(t.edgeError, 0.5 * 256.0 / (256.0 * 256.0)) << "about one pixel per row: " << half;
+        EXPECT_EQ(t.interiorFalseShadow + t.interiorFalseLit, 0.0) << half;
+        EXPECT_NEAR(t.edgeDisplacementTexelsMedian, 0.5, 0.12) << half;
+    }
+}
+
+// Classes per scene mesh: the plane scene's ground holds the pole shadows' errors; the poles are
+// counted apart; together they are every counted pixel.
+TEST(Inspection, TruthClassesPerMeshAddUpToTheWhole) {
+    const Scene scene = makePlaneScene();
+    auto context = renderer::createOSMesaContext();
+    renderer::Renderer r(scene);
+    const GroundTruth truth(scene);
+    ShadowSettings s;
+    s.resolution = 512;
+    const Viewport vp{160, 120};
+    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    r.render(plan, vp, renderer::ViewOptions{});
+    const Inspection in = renderer::inspect(r, plan, &truth, 2);
+    ASSERT_EQ(in.meshTruthClasses.size(), scene.meshes.size());
+    ASSERT_EQ(in.meshNames.size(), scene.meshes.size());
+    size_t counted = 0;
+    double edge = 0;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        EXPECT_EQ(in.meshNames[m], scene.meshes[m].name);
+        EXPECT_GT(in.meshTruthClasses[m].count, 0u) << in.meshNames[m];
+        counted += in.meshTruthClasses[m].count;
+        edge += in.meshTruthClasses[m].edgeError * double(in.meshTruthClasses[m].count);
+    }
+    EXPECT_LE(counted, in.truthClasses->count);
+    EXPECT_GT(counted, in.truthClasses->count * 99 / 100) << "nearly every receiver lies on a mesh it was found on";
+    EXPECT_NEAR(edge / double(counted), in.truthClasses->edgeError, 0.002);
+    nlohmann::json j;
+    j["splits"] = nlohmann::json::array({nlohmann::json::object()});
+    addInspectionMetrics(j, in);
+    EXPECT_EQ(j["truth"]["samples_per_pixel"], 4);
+    for (const Mesh& m : scene.meshes) EXPECT_TRUE(j["meshes"].contains(m.name)) << m.name;
 }

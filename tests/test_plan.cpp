@@ -1,5 +1,6 @@
 // The full shadow plan: splits, focus bodies and warps together.
 #include "geometry/scene/builtin_scenes.h"
+#include "geometry/shadow/contact_distance.h"
 #include "geometry/shadow/focus.h"
 #include "geometry/shadow/shadow_plan.h"
 
@@ -148,4 +149,43 @@ TEST(Plan, EmptyWhenTheViewMissesTheScene) {
             EXPECT_TRUE(finite(split.lightViewProj));
         }
     }
+}
+
+// The plan says which biases the renderer applies: a polygon offset for the slope types, a normal
+// offset for the normal types, both for slope_normal_offset, a receiver offset for constant only.
+TEST(Plan, BiasTypesBecomeTheOffsetsTheRendererApplies) {
+    const Scene scene = makePlaneScene();
+    ShadowSettings s;
+    s.bias.constant = 0.07f;
+    s.bias.slope = 2.f;
+    s.bias.units = 3.f;
+    s.bias.normalOffset = 1.5f;
+    const auto plan = [&](BiasType type) {
+        s.bias.type = type;
+        return planShadows(s, scene.bounds(), scene.camera, scene.light, {320, 240});
+    };
+    const ShadowPlan constant = plan(BiasType::Constant), slope = plan(BiasType::Slope),
+                     normal = plan(BiasType::NormalOffset), both = plan(BiasType::SlopeNormalOffset);
+    EXPECT_EQ(constant.receiverOffset, 0.07f);
+    EXPECT_EQ(constant.polygonOffset, glm::vec2(0.f));
+    EXPECT_EQ(constant.normalOffsetTexels, 0.f);
+    EXPECT_EQ(slope.polygonOffset, glm::vec2(2.f, 3.f));
+    EXPECT_EQ(slope.normalOffsetTexels, 0.f);
+    EXPECT_EQ(normal.polygonOffset, glm::vec2(0.f));
+    EXPECT_EQ(normal.normalOffsetTexels, 1.5f);
+    EXPECT_EQ(both.polygonOffset, glm::vec2(2.f, 3.f));
+    EXPECT_EQ(both.normalOffsetTexels, 1.5f);
+    EXPECT_EQ(both.receiverOffset, 0.f);
+
+    // Contact distance: at least a texel, or the bias's own reach when that is longer.
+    const glm::vec3 p{2.f, 0.f, 1.f};
+    const float texel = texelWorldSize(both, 0, p, 1024);
+    ASSERT_TRUE(std::isfinite(texel));
+    EXPECT_GT(texel, 0.f);
+    EXPECT_NEAR(texelWorldSize(both, 0, p, 2048), texel / 2.f, texel * 1e-3f);
+    EXPECT_NEAR(contactDistance(both, 0, p, 1024), 3.5f * texel, texel * 1e-3f);
+    EXPECT_NEAR(contactDistance(normal, 0, p, 1024), 1.5f * texel, texel * 1e-3f);
+    EXPECT_NEAR(contactDistance(constant, 0, p, 1024), std::max(0.07f, texel), 1e-6f);
+    EXPECT_TRUE(std::isnan(contactDistance(both, 5, p, 1024)));
+    EXPECT_TRUE(std::isnan(texelWorldSize(both, 0, p, 0)));
 }

@@ -110,6 +110,7 @@ TEST(Techniques, BiasRemovesAcneUnderGrazingLight) {
     EXPECT_LT(acne(BiasType::Constant), 0.01);
     EXPECT_LT(acne(BiasType::Slope), 0.01);
     EXPECT_LT(acne(BiasType::SecondDepth), 0.01);
+    EXPECT_LT(acne(BiasType::SlopeNormalOffset), 0.01);
 }
 
 // The PCF kernel widens the shadow-edge transition: more pixels with a partial shadow factor.

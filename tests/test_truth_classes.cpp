@@ -37,8 +37,8 @@ TEST(TruthClasses, AcneInsideALitRegionIsInteriorFalseShadow) {
     EXPECT_EQ(classes[0], TruthClass::Agrees);
 }
 
-// A shadow edge drawn one pixel too far: edge error with a displacement of half a pixel (the true
-// edge lies between pixel centres), in texels through 1/m; nothing interior.
+// A shadow edge drawn one pixel too far: edge error whose displacement is the wrong band's width,
+// one pixel (edges lie between pixel centres), in texels through 1/m; nothing interior.
 TEST(TruthClasses, AShiftedEdgeIsEdgeErrorWithItsDisplacement) {
     Image img;
     for (int y = 0; y < H; ++y)
@@ -51,14 +51,34 @@ TEST(TruthClasses, AShiftedEdgeIsEdgeErrorWithItsDisplacement) {
     EXPECT_DOUBLE_EQ(t.edgeError, double(H) / (W * H));
     EXPECT_EQ(t.interiorFalseShadow, 0.0);
     EXPECT_EQ(t.interiorFalseLit, 0.0);
-    EXPECT_DOUBLE_EQ(t.edgeDisplacementPxMedian, 0.5);
-    EXPECT_DOUBLE_EQ(t.edgeDisplacementTexelsMedian, 0.25);
+    EXPECT_DOUBLE_EQ(t.edgeDisplacementPxMedian, 1.0);
+    EXPECT_DOUBLE_EQ(t.edgeDisplacementTexelsMedian, 0.5);
     // Three pixels too far: the far ones are no longer within 1 px of the edge.
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) img.at(img.s, x, y) = x < 13 ? 0.f : 1.f;
     const TruthClasses far = truthClasses(img.input());
     EXPECT_DOUBLE_EQ(far.edgeError, double(H) / (W * H));
     EXPECT_DOUBLE_EQ(far.interiorFalseShadow, 2.0 * H / (W * H));
+    EXPECT_DOUBLE_EQ(far.edgeDisplacementPxMedian, 3.0) << "every pixel of a 3-px band reports 3 px";
+}
+
+// Groups (splits, meshes) are classified in one pass; each group's figures are those of its pixels
+// alone, and pixels of no group (−1) or of a group past the count are left out.
+TEST(TruthClasses, ByGroupMatchesEachGroupAlone) {
+    Image img;
+    std::vector<int> group(W * H, 0);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            group[size_t(y) * W + size_t(x)] = x < 10 ? 0 : (x < 15 ? 1 : (x < 18 ? -1 : 7));
+            if (y == 5) img.at(img.s, x, y) = 0.f; // a false-shadow row across every group
+        }
+    const auto by = truthClassesByGroup(img.input(), group, 2);
+    ASSERT_EQ(by.size(), 2u);
+    EXPECT_EQ(by[0].count, size_t(10 * H));
+    EXPECT_EQ(by[1].count, size_t(5 * H));
+    EXPECT_DOUBLE_EQ(by[0].interiorFalseShadow, 1.0 / H);
+    EXPECT_DOUBLE_EQ(by[1].interiorFalseShadow, 1.0 / H);
+    EXPECT_THROW((void)truthClassesByGroup(img.input(), std::vector<int>(3, 0), 2), std::invalid_argument);
 }
 
 // Ambiguous pixels are counted apart; a leak in a shadow is interior false lit; fractional

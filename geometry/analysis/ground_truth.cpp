@@ -3,7 +3,8 @@
 //   [SECTION] Packet layouts .............................. RunLayout, TileLayout, forEachPacket, setLane, checkInputs
 //   [SECTION] Impl: device, scene and the error channel ... onError, throwIfError, addMesh, build
 //   [SECTION] GroundTruth ................................. PrimaryHits::hitCount, GroundTruth, epsilon
-//   [SECTION] Tracing rays ................................ traceOccluded, occluded, surfaceNormals, primaryHits
+//   [SECTION] Tracing rays ................................ traceOccluded, occluded, surfaceNormals, primaryHits,
+//                                                           coverage
 
 #include "geometry/analysis/ground_truth.h"
 
@@ -179,7 +180,9 @@ struct GroundTruth::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     size_t triangles = 0;
-    float epsilonScale = 0.f; // 0.01 · scene diagonal: the floor of ‖p‖∞ in epsilon()
+    std::vector<std::string> meshNames; // per scene mesh
+    std::vector<int> geomMesh;          // Embree geometry ID → scene mesh index (empty meshes get no ID)
+    float epsilonScale = 0.f;           // 0.01 · scene diagonal: the floor of ‖p‖∞ in epsilon()
 
     std::mutex errorMutex;
     std::string error; // first Embree error since the last check
@@ -256,7 +259,9 @@ struct GroundTruth::Impl {
         }
         std::copy_n(mesh.indices.data(), tris * 3, indices);
         rtcCommitGeometry(geom);
-        rtcAttachGeometry(scene, geom);
+        const unsigned id = rtcAttachGeometry(scene, geom);
+        if (id >= geomMesh.size()) geomMesh.resize(id + 1, -1);
+        geomMesh[id] = int(meshNames.size()) - 1;
         throwIfError(("adding mesh '" + mesh.name + "'").c_str());
         triangles += tris;
     }
@@ -271,7 +276,10 @@ struct GroundTruth::Impl {
         rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
         rtcSetSceneFlags(scene, RTC_SCENE_FLAG_NONE);
         scene::Aabb bounds;
-        for (const scene::Mesh& mesh : input.meshes) addMesh(mesh, bounds);
+        for (const scene::Mesh& mesh : input.meshes) {
+            meshNames.push_back(mesh.name);
+            addMesh(mesh, bounds);
+        }
         rtcCommitScene(scene);
         throwIfError("building the BVH");
         epsilonScale = 0.01f * glm::length(bounds.extent());
@@ -292,6 +300,11 @@ GroundTruth& GroundTruth::operator=(GroundTruth&&) noexcept = default;
 
 size_t GroundTruth::triangleCount() const noexcept { return impl_ ? impl_->triangles : 0; }
 
+const std::vector<std::string>& GroundTruth::meshNames() const noexcept {
+    static const std::vector<std::string> none;
+    return impl_ ? impl_->meshNames : none;
+}
+
 float GroundTruth::epsilon(const glm::vec3& p) const noexcept {
     const float scale = impl_ ? impl_->epsilonScale : 0.f;
     return std::max(kMinEpsilon, kRelativeEpsilon * std::max(maxAbs(p), scale));
@@ -304,7 +317,7 @@ namespace {
 /// One rtcOccluded16 per packet: 2.6× faster than rtcOccluded1 ray by ray on AVX-512.
 std::vector<uint8_t> traceOccluded(const GroundTruth& truth, RTCScene scene, const RunLayout& layout,
                                    const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                                   const glm::vec3& l, int threads) {
+                                   const glm::vec3& l, int threads, const std::vector<float>* maxDistance = nullptr) {
     std::vector<uint8_t> result(points.size(), 0);
     const glm::vec3 toLight = -glm::normalize(l);
     forEachPacket(layout, threads, [&](const Lanes& lanes) {
@@ -321,8 +334,13 @@ std::vector<uint8_t> traceOccluded(const GroundTruth& truth, RTCScene scene, con
                 continue;
             }
             const float eps = truth.epsilon(p);
+            const float reach = maxDistance ? (*maxDistance)[idx] : kInf;
+            if (!(reach > eps)) { // NaN or too short to leave the surface: nothing can lie in between
+                setIdleLane(ray, i);
+                continue;
+            }
             const glm::vec3 side = glm::dot(n, toLight) > 0.f ? n : -n; // the light's side of the surface
-            setLane(ray, i, p + side * (eps / len), toLight, eps, kInf);
+            setLane(ray, i, p + side * (eps / len), toLight, eps, reach);
             valid[i] = -1;
             any = true;
         }
@@ -346,14 +364,30 @@ std::vector<uint8_t> GroundTruth::occluded(const std::vector<glm::vec3>& points,
     return result;
 }
 
+std::vector<uint8_t> GroundTruth::occludedWithin(const std::vector<glm::vec3>& points,
+                                                 const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                 const std::vector<float>& maxDistance, int threads) const {
+    checkInputs(points, normals, l);
+    if (maxDistance.size() != points.size())
+        throw std::invalid_argument("GroundTruth::occludedWithin: " + std::to_string(points.size()) + " points but " +
+                                    std::to_string(maxDistance.size()) + " distances");
+    if (!impl_) throw std::logic_error("GroundTruth::occludedWithin on a moved-from object");
+    auto result =
+        traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads, &maxDistance);
+    impl_->throwIfError("tracing contact rays");
+    return result;
+}
+
 std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const std::vector<glm::vec3>& points,
-                                                   const std::vector<glm::vec3>& fallback, int threads) const {
+                                                   const std::vector<glm::vec3>& fallback, int threads,
+                                                   std::vector<int>* meshes) const {
     if (points.size() != fallback.size())
         throw std::invalid_argument("GroundTruth::surfaceNormals: " + std::to_string(points.size()) + " points but " +
                                     std::to_string(fallback.size()) + " normals");
     if (!finite(eye)) throw std::invalid_argument("GroundTruth::surfaceNormals: the eye is not finite");
     if (!impl_) throw std::logic_error("GroundTruth::surfaceNormals on a moved-from object");
     std::vector<glm::vec3> out = fallback;
+    if (meshes) meshes->assign(points.size(), -1);
     forEachPacket(RunLayout{points.size()}, threads, [&](const Lanes& lanes) {
         RTCRayHit16 rh;
         alignas(64) std::array<int, kLanes> valid{};
@@ -387,11 +421,57 @@ std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const s
             n /= len;
             const glm::vec3 dir(rh.ray.dir_x[i], rh.ray.dir_y[i], rh.ray.dir_z[i]);
             out[idx] = glm::dot(n, dir) > 0.f ? -n : n; // face the eye
+            if (meshes && rh.hit.geomID[i] < impl_->geomMesh.size()) (*meshes)[idx] = impl_->geomMesh[rh.hit.geomID[i]];
         }
     });
     impl_->throwIfError("tracing surface normals");
     return out;
 }
+
+namespace {
+
+/// A primary ray: from org along dir (not necessarily unit), hits kept for t in [tnear, tfar].
+struct PrimaryRay {
+    glm::vec3 org, dir;
+    float tnear, tfar;
+};
+
+/// Traces one primary ray per cell of a `width` × `rows` grid (rayAt(x, y) gives it) in 4×4 tiles;
+/// writes the nearest hit point and its unit geometric normal, facing the ray's origin, per cell.
+/// Misses keep the values the caller filled in (NaN point, zero normal).
+template <class RayAt>
+void tracePrimary(RTCScene scene, size_t width, size_t rows, int threads, const RayAt& rayAt,
+                  std::vector<glm::vec3>& points, std::vector<glm::vec3>& normals) {
+    forEachPacket(TileLayout{width * rows, width}, threads, [&](const Lanes& lanes) {
+        RTCRayHit16 rh;
+        alignas(64) std::array<int, kLanes> valid{};
+        for (int i = 0; i < kLanes; ++i) {
+            if (lanes[i] == kNoPoint) {
+                setIdleLane(rh.ray, i);
+                continue;
+            }
+            const PrimaryRay r = rayAt(lanes[i] % width, lanes[i] / width);
+            setLane(rh.ray, i, r.org, r.dir, r.tnear, r.tfar);
+            rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID; // as Embree requires
+            valid[i] = -1;
+        }
+        RTCIntersectContext ctx = coherentContext();
+        rtcIntersect16(valid.data(), scene, &ctx, &rh);
+        for (int i = 0; i < kLanes; ++i) {
+            if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+            const glm::vec3 org(rh.ray.org_x[i], rh.ray.org_y[i], rh.ray.org_z[i]);
+            const glm::vec3 dir(rh.ray.dir_x[i], rh.ray.dir_y[i], rh.ray.dir_z[i]);
+            glm::vec3 n(rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]);
+            const float len = glm::length(n);
+            if (!(len > 0.f) || !std::isfinite(len)) continue; // degenerate triangle: treat as unseen
+            n /= len;
+            points[lanes[i]] = org + rh.ray.tfar[i] * dir;
+            normals[lanes[i]] = glm::dot(n, dir) > 0.f ? -n : n; // face the camera
+        }
+    });
+}
+
+} // namespace
 
 PrimaryHits GroundTruth::primaryHits(const scene::Camera& camera, int width, int height, int threads) const {
     if (width < 1 || height < 1) throw std::invalid_argument("GroundTruth::primaryHits: image size must be positive");
@@ -410,39 +490,71 @@ PrimaryHits GroundTruth::primaryHits(const scene::Camera& camera, int width, int
     const glm::vec3 eye(toWorld[3]);
     const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const auto direction = [&](size_t pixel) {
-        const float x = (static_cast<float>(pixel % width) + 0.5f) / static_cast<float>(width) * 2.f - 1.f;
-        const float y = 1.f - (static_cast<float>(pixel / width) + 0.5f) / static_cast<float>(height) * 2.f;
-        return forward + (x * tanHalf * aspect) * right + (y * tanHalf) * up;
-    };
-
-    forEachPacket(TileLayout{count, static_cast<size_t>(width)}, threads, [&](const Lanes& lanes) {
-        RTCRayHit16 rh;
-        alignas(64) std::array<int, kLanes> valid{};
-        for (int i = 0; i < kLanes; ++i) {
-            if (lanes[i] == kNoPoint) {
-                setIdleLane(rh.ray, i);
-                continue;
-            }
-            setLane(rh.ray, i, eye, direction(lanes[i]), camera.near, camera.far);
-            rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID; // as Embree requires
-            valid[i] = -1;
-        }
-        RTCIntersectContext ctx = coherentContext();
-        rtcIntersect16(valid.data(), impl_->scene, &ctx, &rh);
-        for (int i = 0; i < kLanes; ++i) {
-            if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
-            const glm::vec3 dir = direction(lanes[i]);
-            glm::vec3 n(rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]);
-            const float len = glm::length(n);
-            if (!(len > 0.f) || !std::isfinite(len)) continue; // degenerate triangle: treat as unseen
-            n /= len;
-            hits.points[lanes[i]] = eye + rh.ray.tfar[i] * dir;
-            hits.normals[lanes[i]] = glm::dot(n, dir) > 0.f ? -n : n; // face the camera
-        }
-    });
+    tracePrimary(
+        impl_->scene, size_t(width), size_t(height), threads,
+        [&](size_t px, size_t py) {
+            const float x = (static_cast<float>(px) + 0.5f) / static_cast<float>(width) * 2.f - 1.f;
+            const float y = 1.f - (static_cast<float>(py) + 0.5f) / static_cast<float>(height) * 2.f;
+            const glm::vec3 dir = forward + (x * tanHalf * aspect) * right + (y * tanHalf) * up;
+            return PrimaryRay{eye, dir, camera.near, camera.far};
+        },
+        hits.points, hits.normals);
     impl_->throwIfError("tracing primary rays");
     return hits;
+}
+
+std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, int height, const glm::vec3& l,
+                                         int samplesPerAxis, int threads) const {
+    if (width < 1 || height < 1) throw std::invalid_argument("GroundTruth::coverage: image size must be positive");
+    if (samplesPerAxis < 1 || samplesPerAxis > kMaxSamplesPerAxis)
+        throw std::invalid_argument("GroundTruth::coverage: samples per axis " + std::to_string(samplesPerAxis) +
+                                    " is outside 1.." + std::to_string(kMaxSamplesPerAxis));
+    if (!finite(l) || !(glm::length(l) > 0.f))
+        throw std::invalid_argument("GroundTruth::coverage: light direction must be finite and non-zero");
+    if (!impl_) throw std::logic_error("GroundTruth::coverage on a moved-from object");
+    const glm::dmat4 toWorld = glm::inverse(glm::dmat4(viewProj));
+    const auto unproject = [&](double x, double y, double z) {
+        const glm::dvec4 p = toWorld * glm::dvec4(x, y, z, 1.0);
+        return glm::vec3(glm::dvec3(p) / p.w);
+    };
+    const glm::vec3 toLight = -glm::normalize(l);
+    const size_t N = size_t(samplesPerAxis), W = size_t(width) * N, H = size_t(height) * N;
+    // Pixel rows per band: ~1M samples in memory at a time, whatever the image size.
+    const size_t bandRows = std::max<size_t>(1, (size_t(1) << 20) / (W * N));
+    std::vector<float> lit(size_t(width) * size_t(height), 0.f), hit(lit.size(), 0.f);
+    std::vector<glm::vec3> points, normals;
+    for (size_t y0 = 0; y0 < size_t(height); y0 += bandRows) {
+        const size_t rows = std::min(bandRows, size_t(height) - y0) * N;
+        points.assign(W * rows, glm::vec3(std::numeric_limits<float>::quiet_NaN()));
+        normals.assign(W * rows, glm::vec3(0.f));
+        // Sample (X, Y) of the N-times finer grid sits at the centre of its cell: N × N stratified
+        // samples per pixel. Rays run from the near to the far plane (t ∈ [0, 1]), as GL clips.
+        tracePrimary(
+            impl_->scene, W, rows, threads,
+            [&](size_t X, size_t Y) {
+                const double x = (double(X) + 0.5) / double(W) * 2.0 - 1.0;
+                const double y = 1.0 - (double(y0 * N + Y) + 0.5) / double(H) * 2.0;
+                const glm::vec3 nearP = unproject(x, y, -1.0), farP = unproject(x, y, 1.0);
+                return PrimaryRay{nearP, farP - nearP, 0.f, 1.f};
+            },
+            points, normals);
+        // Samples on a surface facing away from the light are dark without a shadow ray.
+        std::vector<glm::vec3> facing = normals;
+        for (auto& n : facing)
+            if (!(glm::dot(n, toLight) > 0.f)) n = glm::vec3(0.f);
+        const std::vector<uint8_t> occ =
+            traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, facing, l, threads);
+        for (size_t k = 0; k < points.size(); ++k) {
+            if (!finite(points[k])) continue;
+            const size_t pixel = (y0 + (k / W) / N) * size_t(width) + (k % W) / N;
+            hit[pixel] += 1.f;
+            if (facing[k] != glm::vec3(0.f) && !occ[k]) lit[pixel] += 1.f;
+        }
+    }
+    impl_->throwIfError("tracing coverage rays");
+    for (size_t i = 0; i < lit.size(); ++i)
+        lit[i] = hit[i] > 0.f ? lit[i] / hit[i] : std::numeric_limits<float>::quiet_NaN();
+    return lit;
 }
 
 } // namespace geometry::analysis

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace geometry::analysis {
@@ -58,13 +59,36 @@ public:
     /// triangle, something nearer hides it, or it is not finite) fallback[i], as given. Use it to
     /// give occluded() the geometric normals it documents when a renderer supplies shading ones.
     /// Throws std::invalid_argument if points.size() != fallback.size() or eye is not finite.
+    /// `meshes`, when given, receives the scene index of the mesh found under each point (−1 where
+    /// the fallback was used).
     [[nodiscard]] std::vector<glm::vec3> surfaceNormals(const glm::vec3& eye, const std::vector<glm::vec3>& points,
-                                                        const std::vector<glm::vec3>& fallback, int threads = 0) const;
+                                                        const std::vector<glm::vec3>& fallback, int threads = 0,
+                                                        std::vector<int>* meshes = nullptr) const;
+
+    /// occluded(), with each ray ending maxDistance[i] from its point: 1 where something lies
+    /// between the surface and that distance towards the light (a contact). A distance not above
+    /// epsilon(p), or NaN, gives 0. Throws std::invalid_argument as occluded(), or when the sizes differ.
+    [[nodiscard]] std::vector<uint8_t> occludedWithin(const std::vector<glm::vec3>& points,
+                                                      const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                      const std::vector<float>& maxDistance, int threads = 0) const;
 
     /// Casts one ray per pixel centre of a width × height image from `camera` (aspect
     /// width/height, as Camera::projection) and returns the nearest hits between the near and far
     /// planes (view depth, as GL clips). Throws std::invalid_argument for a non-positive size.
     [[nodiscard]] PrimaryHits primaryHits(const scene::Camera& camera, int width, int height, int threads = 0) const;
+
+    static constexpr int kMaxSamplesPerAxis = 16;
+
+    /// The truth's lit fraction c ∈ [0, 1] of each pixel of a width × height image seen through
+    /// `viewProj` (GL clip space; top row first): samplesPerAxis² primary rays on a stratified grid
+    /// over the pixel's footprint, each from the near to the far plane; c = the fraction of the
+    /// samples that hit a surface whose geometric normal faces the light and whose shadow ray
+    /// (occluded()) escapes. Samples that see nothing are left out; a pixel none of whose samples
+    /// hits anything gets NaN. Memory stays ~1M samples whatever the size (traced in row bands).
+    /// Throws std::invalid_argument for a non-positive size, samplesPerAxis outside
+    /// 1..kMaxSamplesPerAxis or a zero or non-finite l.
+    [[nodiscard]] std::vector<float> coverage(const glm::mat4& viewProj, int width, int height, const glm::vec3& l,
+                                              int samplesPerAxis, int threads = 0) const;
 
     /// The self-intersection offset used for a receiver at p, in scene units:
     /// max(1e-6, 1e-5 · max(‖p‖∞, 0.01 · scene diagonal)). Why relative to ‖p‖∞ rather than to
@@ -77,6 +101,8 @@ public:
     [[nodiscard]] float epsilon(const glm::vec3& p) const noexcept;
 
     [[nodiscard]] size_t triangleCount() const noexcept;
+    /// The scene's mesh names, by scene index (what surfaceNormals' `meshes` indexes).
+    [[nodiscard]] const std::vector<std::string>& meshNames() const noexcept;
 
 private:
     struct Impl;

@@ -398,7 +398,7 @@ Legend truthClassLegend(std::span<const TruthClass> classes, std::span<const flo
     add(shown[int(TruthClass::InteriorFalseShadow)], kFalseShadowColour, "false shadow (interior)");
     add(shown[int(TruthClass::InteriorFalseLit)], kFalseLitColour, "false lit (interior)");
     add(shown[int(TruthClass::EdgeError)], kEdgeErrorColour, "edge misplaced (within 1 px)");
-    add(shown[int(TruthClass::Ambiguous)], kAmbiguousColour, "ambiguous (terminator, normals)");
+    add(shown[int(TruthClass::Ambiguous)], kAmbiguousColour, "ambiguous (terminator, normals, contact)");
     add(agreesLit, classColour(TruthClass::Agrees, 1.f), "agrees, lit (grey = s)");
     add(agreesShadowed, classColour(TruthClass::Agrees, 0.f), "agrees, shadowed");
     add(shown[int(TruthClass::NotCounted)], kNonReceiverColour, "not a receiver");

@@ -1,6 +1,7 @@
 #include "geometry/analysis/inspection.h"
 
 #include "geometry/analysis/ground_truth.h"
+#include "geometry/shadow/contact_distance.h"
 
 #include <nlohmann/json.hpp>
 
@@ -10,7 +11,8 @@
 
 namespace geometry::analysis {
 
-Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundTruth* truth) {
+Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, const GroundTruth* truth,
+                          int truthSamples) {
     Inspection in;
     in.shadow = std::move(frame.shadow);
     in.aux = std::move(frame.aux);
@@ -28,9 +30,10 @@ Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundT
     in.width = frame.width;
     in.height = n && in.width ? int(n / size_t(in.width)) : 0;
     in.aliasing = aliasingStats(in.m, in.receiver);
-    for (int s = 0; s < int(frame.resolutions.size()); ++s)
-        in.utilization.push_back(texelUtilization(in.aux, in.receiver, s, frame.resolutions[s]));
-    if (truth) addTruth(in, frame.eye, l, *truth);
+    in.resolutions = std::move(frame.resolutions);
+    for (int s = 0; s < int(in.resolutions.size()); ++s)
+        in.utilization.push_back(texelUtilization(in.aux, in.receiver, s, in.resolutions[s]));
+    if (truth) addTruth(in, plan, *truth, truthSamples);
     return in;
 }
 
@@ -47,17 +50,26 @@ std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, 
     return truthOcclusion(in, truth.surfaceNormals(eye, in.positions, in.normals), l, truth);
 }
 
-void addTruth(Inspection& in, const glm::vec3& eye, const glm::vec3& l, const GroundTruth& truth) {
-    in.geometricNormals = truth.surfaceNormals(eye, in.positions, in.normals);
+void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis) {
+    if (samplesPerAxis < 1 || samplesPerAxis > GroundTruth::kMaxSamplesPerAxis)
+        throw std::invalid_argument("--truth-samples: " + std::to_string(samplesPerAxis) + " is outside 1.." +
+                                    std::to_string(GroundTruth::kMaxSamplesPerAxis));
+    const glm::vec3& l = plan.l;
+    in.truthSamples = samplesPerAxis;
+    in.geometricNormals = truth.surfaceNormals(plan.eye, in.positions, in.normals, 0, &in.mesh);
     in.occluded = truthOcclusion(in, in.geometricNormals, l, truth);
     const size_t n = in.positions.size();
     const glm::vec3 toLight = -glm::normalize(l);
     in.coverage.assign(n, 1.f);
+    if (samplesPerAxis > 1)
+        in.coverage = truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, l, samplesPerAxis);
     in.ambiguity.assign(n, uint8_t(Ambiguity::None));
     std::vector<float> texelsPerPixel(n, std::numeric_limits<float>::quiet_NaN());
+    std::vector<float> contact(n, std::numeric_limits<float>::quiet_NaN());
     std::vector<int> split(n, -1);
     for (size_t i = 0; i < n; ++i) {
-        in.coverage[i] = (*in.occluded)[i] ? 0.f : 1.f;
+        const float centre = (*in.occluded)[i] ? 0.f : 1.f;
+        if (samplesPerAxis == 1 || !std::isfinite(in.coverage[i])) in.coverage[i] = centre; // no sample saw it
         if (in.m[i] > 0.f && in.m[i] < kSingularM) texelsPerPixel[i] = 1.f / in.m[i];
         if (!in.receiver[i]) continue;
         split[i] = int(std::lround(in.aux[i].z));
@@ -65,13 +77,18 @@ void addTruth(Inspection& in, const glm::vec3& eye, const glm::vec3& l, const Gr
         const float shading = glm::dot(in.normals[i], toLight);
         if (std::abs(geometric) < 0.1f) in.ambiguity[i] = uint8_t(Ambiguity::Terminator);
         else if ((geometric > 0.f) != (shading > 0.f)) in.ambiguity[i] = uint8_t(Ambiguity::NormalFlip);
+        else if ((*in.occluded)[i] && split[i] < int(in.resolutions.size()))
+            contact[i] = shadow::contactDistance(plan, split[i], in.positions[i], in.resolutions[size_t(split[i])]);
     }
+    const std::vector<uint8_t> touching = truth.occludedWithin(in.positions, in.geometricNormals, l, contact);
+    for (size_t i = 0; i < n; ++i)
+        if (touching[i]) in.ambiguity[i] = uint8_t(Ambiguity::Contact);
     in.truth = truthStats(in.shadow, *in.occluded, in.receiver);
     const TruthClassInput input{in.width, in.shadow, in.coverage, in.receiver, in.ambiguity, texelsPerPixel};
     in.truthClasses = truthClasses(input, &in.classes);
-    in.splitTruthClasses.clear();
-    for (int s = 0; s < int(in.utilization.size()); ++s)
-        in.splitTruthClasses.push_back(truthClassesWhere(input, split, s));
+    in.splitTruthClasses = truthClassesByGroup(input, split, int(in.utilization.size()));
+    in.meshNames = truth.meshNames();
+    in.meshTruthClasses = truthClassesByGroup(input, in.mesh, int(in.meshNames.size()));
 }
 
 std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
@@ -141,10 +158,19 @@ void addInspectionMetrics(nlohmann::json& j, const Inspection& in) {
                       {"false_lit", in.truth->falseLit},
                       {"mean_abs", in.truth->meanAbs},
                       {"pixels", in.truth->count},
-                      {"samples_per_pixel", 1}};
+                      {"samples_per_pixel", in.truthSamples * in.truthSamples}};
         if (in.truthClasses) j["truth"].update(classesJson(*in.truthClasses));
         for (size_t s = 0; s < in.splitTruthClasses.size() && s < j["splits"].size(); ++s)
             j["splits"][s]["truth"] = classesJson(in.splitTruthClasses[s]);
+        // Meshes the camera sees, by name; a repeated name gets "#index" so no mesh hides another.
+        nlohmann::json meshes = nlohmann::json::object();
+        for (size_t m = 0; m < in.meshTruthClasses.size() && m < in.meshNames.size(); ++m) {
+            if (in.meshTruthClasses[m].count == 0) continue;
+            std::string name = in.meshNames[m];
+            if (meshes.contains(name)) name += "#" + std::to_string(m);
+            meshes[name]["truth"] = classesJson(in.meshTruthClasses[m]);
+        }
+        j["meshes"] = std::move(meshes);
     }
     for (size_t s = 0; s < in.utilization.size() && s < j["splits"].size(); ++s)
         j["splits"][s]["utilization"] = in.utilization[s];

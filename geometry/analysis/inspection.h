@@ -25,10 +25,14 @@ struct Inspection {
     std::vector<glm::vec3> positions;             // world
     std::vector<glm::vec3> normals;               // facing normal
     std::vector<uint8_t> receiver;                // visible and facing the light (N·L > 0)
+    std::vector<int> resolutions;                 // per split, the map resolution actually drawn
     std::optional<std::vector<uint8_t>> occluded; // ground truth, 1 = shadowed
-    // With truth (addTruth): the geometric normal under each pixel, the truth's lit fraction c, why
-    // a pixel's truth is ambiguous (Ambiguity), and each pixel's TruthClass.
+    // With truth (addTruth): the geometric normal and the scene mesh (−1: none found) under each
+    // pixel, the truth's lit fraction c over truthSamples² samples, why a pixel's truth is ambiguous
+    // (Ambiguity), and each pixel's TruthClass.
+    int truthSamples = 1; // per axis
     std::vector<glm::vec3> geometricNormals;
+    std::vector<int> mesh;
     std::vector<float> coverage;
     std::vector<uint8_t> ambiguity;
     std::vector<TruthClass> classes;
@@ -37,6 +41,8 @@ struct Inspection {
     std::optional<TruthStats> truth;
     std::optional<TruthClasses> truthClasses;    // over all receivers
     std::vector<TruthClasses> splitTruthClasses; // per split
+    std::vector<std::string> meshNames;          // the scene's, by mesh index
+    std::vector<TruthClasses> meshTruthClasses;  // per scene mesh (count 0: not seen)
     std::vector<double> utilization;             // per split
 };
 
@@ -48,18 +54,23 @@ struct FrameReadback {
     std::vector<glm::vec4> positions; // world position, m
     std::vector<glm::vec4> normals;   // facing normal, N·L
     std::vector<int> resolutions;     // per split, the map resolution actually drawn
-    glm::vec3 eye{0.f};               // the camera's position
 };
 
-/// Splits the read-back into per-pixel fields and computes the statistics; `truth` adds the
-/// ground-truth verdicts (light direction l) through truthOcclusion().
-[[nodiscard]] Inspection makeInspection(FrameReadback frame, const glm::vec3& l, const GroundTruth* truth);
+/// Splits the read-back of a frame drawn with `plan` into per-pixel fields and computes the
+/// statistics; `truth` adds the ground truth (addTruth) with truthSamples² samples per pixel.
+[[nodiscard]] Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, const GroundTruth* truth,
+                                        int truthSamples = 1);
 
-/// Adds ground truth to `in`: occlusion traced with geometric normals (truthOcclusion), c = 1 − occluded
-/// (one sample per pixel), the ambiguity of each receiver (|N·L| < 0.1 by the geometric normal: the
-/// terminator; shading and geometric normal on different sides of the light: a normal flip), the
-/// TruthStats and the TruthClasses, overall and per split (docs/design.md §4 "Truth classes").
-void addTruth(Inspection& in, const glm::vec3& eye, const glm::vec3& l, const GroundTruth& truth);
+/// Adds ground truth to `in` (a frame drawn with `plan`; docs/design.md §4 "Truth classes"):
+/// - occlusion at each pixel's centre, traced with geometric normals (truthOcclusion), for TruthStats;
+/// - the lit fraction c: 1 − that verdict at one sample per axis, else GroundTruth::coverage over
+///   samplesPerAxis² samples of the pixel's footprint;
+/// - the ambiguity of each receiver: the terminator (|N·L| < 0.1 by the geometric normal), a normal
+///   flip (shading and geometric normal on different sides of the light), or a contact (an occluder
+///   within contactDistance() of the receiver along the light);
+/// - the TruthClasses overall, per split and per scene mesh.
+/// Throws std::invalid_argument for samplesPerAxis outside 1..GroundTruth::kMaxSamplesPerAxis.
+void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis = 1);
 
 /// Ground truth for the receiver pixels of `in` (1 = shadowed; 0 for non-receivers): each traced
 /// with the geometric normal of the surface under it (GroundTruth::surfaceNormals), as
@@ -87,7 +98,8 @@ struct PixelLayer {
 [[nodiscard]] std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
                                                   const glm::vec3& l);
 
-/// metrics.json fields: aliasing{mean,p50,p95,max,undersampled,singular}, truth{false_shadow,false_lit,mean_abs}.
+/// metrics.json fields: aliasing{mean,p50,p95,max,undersampled,singular}; with truth, truth{false_shadow,
+/// false_lit, mean_abs, samples_per_pixel, the classes}, splits[i].truth and meshes[name].truth.
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in);
 
 } // namespace geometry::analysis

@@ -17,6 +17,7 @@ enum class Ambiguity : uint8_t {
     None = 0,
     Terminator = 1, // |N·L| < 0.1 by the geometric normal: the surface grazes the light
     NormalFlip = 2, // the shading normal faces the light, the geometric one does not (or the reverse)
+    Contact = 3,    // the occluder touches the receiver closer than the bias distance: no map can resolve it
 };
 
 /// Per pixel, the class it falls in (the truth heatmap's colours).
@@ -45,9 +46,10 @@ struct TruthClasses {
     double edgeError = 0;           // rendered ≠ truth within 1 px of a truth edge
     double ambiguous = 0;           // left out of the three above
     double penumbraMeanAbs = 0;     // mean |s − c| over the counted, non-ambiguous pixels
-    // How far rendered edges lie from true ones, over the edge-error pixels: from the pixel's centre
-    // to the nearest pixel whose truth matches what was rendered here, less half a pixel (the true
-    // edge lies between pixel centres); in texels of the pixel's map via texelsPerPixel.
+    // How far rendered edges lie from true ones, over the edge-error pixels: the width of the wrong
+    // band each lies in, across the edge (from the nearest pixel whose truth is what was rendered
+    // here to the nearest pixel rendered the other way, each less half a pixel: edges lie between
+    // pixel centres); in texels of the pixel's map via texelsPerPixel.
     double edgeDisplacementPxMedian = 0, edgeDisplacementPxP95 = 0;
     double edgeDisplacementTexelsMedian = 0, edgeDisplacementTexelsP95 = 0;
     size_t count = 0;
@@ -59,7 +61,10 @@ struct TruthClasses {
 /// sizes disagree or width does not divide them.
 [[nodiscard]] TruthClasses truthClasses(const TruthClassInput& in, std::vector<TruthClass>* classes = nullptr);
 
-/// The same over the pixels whose `group[i]` equals `value` (a split index, a mesh index).
-[[nodiscard]] TruthClasses truthClassesWhere(const TruthClassInput& in, std::span<const int> group, int value);
+/// The same per group, in one pass: result[g] over the pixels whose `group[i]` is g (a split index,
+/// a mesh index), for g in [0, groups); pixels with a group outside that range are left out.
+/// Throws std::invalid_argument as truthClasses, or when `group` does not hold one value per pixel.
+[[nodiscard]] std::vector<TruthClasses> truthClassesByGroup(const TruthClassInput& in, std::span<const int> group,
+                                                            int groups);
 
 } // namespace geometry::analysis

@@ -97,23 +97,26 @@ const std::vector<SettingInfo>& settingsDeclaration() {
             "bias.type",
             "Bias: none, constant (z_offset along the light), slope (polygon offset), second_depth (back faces "
             "into the map), midpoint and dual_depth (two-layer depth peeling), normal_offset (receiver along "
-            "its normal)",
-            {"none", "constant", "slope", "second_depth", "midpoint", "dual_depth", "normal_offset"},
+            "its normal), slope_normal_offset (slope and normal offset together, as engines ship them)",
+            {"none", "constant", "slope", "second_depth", "midpoint", "dual_depth", "normal_offset",
+             "slope_normal_offset"},
             [](ShadowSettings & s) -> auto& { return s.bias.type; }),
         number(
             "bias.constant", "Constant depth offset z_offset, in scene units along the light (Barroso Table 1)",
             Kind::Float, -10, 10, [](ShadowSettings & s) -> auto& { return s.bias.constant; }),
         number(
-            "bias.slope", "slope: polygon-offset factor (scales with the depth slope)", Kind::Float, 0, 32,
-            [](ShadowSettings & s) -> auto& { return s.bias.slope; }),
+            "bias.slope", "slope, slope_normal_offset: polygon-offset factor (scales with the depth slope)",
+            Kind::Float, 0, 32, [](ShadowSettings & s) -> auto& { return s.bias.slope; }),
         number(
-            "bias.units", "slope: polygon-offset units (smallest depth steps)", Kind::Float, 0, 1024,
-            [](ShadowSettings & s) -> auto& { return s.bias.units; }),
+            "bias.units", "slope, slope_normal_offset: polygon-offset units (smallest depth steps)", Kind::Float, 0,
+            1024, [](ShadowSettings & s) -> auto& { return s.bias.units; }),
         number(
             "bias.z_max", "dual_depth: cap on the offset z1 + min((z2-z1)/2, z_max), scene units", Kind::Float, 0, 100,
             [](ShadowSettings & s) -> auto& { return s.bias.zMax; }),
         number(
-            "bias.normal_offset", "normal_offset: receiver moved along its normal by this many world-space texels",
+            "bias.normal_offset",
+            "normal_offset, slope_normal_offset: receiver moved along its normal by this many world-space "
+            "texels",
             Kind::Float, 0, 16, [](ShadowSettings & s) -> auto& { return s.bias.normalOffset; }),
         number(
             "bias.linear_z",

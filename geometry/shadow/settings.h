@@ -13,7 +13,8 @@
 namespace geometry::shadow {
 
 /// Bias types (Barroso Table 1; Scherzer §4.2; docs/design.md §3.5).
-enum class BiasType { None, Constant, Slope, SecondDepth, Midpoint, DualDepth, NormalOffset };
+/// SlopeNormalOffset: slope-scaled polygon offset and normal offset together, as engines ship them.
+enum class BiasType { None, Constant, Slope, SecondDepth, Midpoint, DualDepth, NormalOffset, SlopeNormalOffset };
 
 struct BiasSettings {
     BiasType type = BiasType::Constant;

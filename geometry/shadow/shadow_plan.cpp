@@ -198,7 +198,12 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
     plan.lightViewAngleDeg = scene::lightViewAngleDeg(plan.v, plan.l);
     plan.eyeView = camera.view();
     plan.eyeProj = camera.projection(viewport.aspect());
-    plan.receiverOffset = settings.bias.type == BiasType::Constant ? settings.bias.constant : 0.f;
+    const BiasType bias = settings.bias.type;
+    plan.receiverOffset = bias == BiasType::Constant ? settings.bias.constant : 0.f;
+    if (bias == BiasType::Slope || bias == BiasType::SlopeNormalOffset)
+        plan.polygonOffset = {settings.bias.slope, settings.bias.units};
+    if (bias == BiasType::NormalOffset || bias == BiasType::SlopeNormalOffset)
+        plan.normalOffsetTexels = settings.bias.normalOffset;
     plan.bias = settings.bias;
     plan.filter = settings.filter;
 

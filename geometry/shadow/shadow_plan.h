@@ -34,6 +34,8 @@ struct SplitPlan {
     float linearDepthScale = 1.f;         // 1/(hi − lo): linear depth = (l·x − lo)·scale (Scherzer §4.2)
     float depthPerUnit = 0.f;             // map depth per scene unit along l, at B_i's centre
     float dualDepthCap = 0.f;             // bias.z_max in this map's depth units (dual depth's cap)
+    glm::vec2 lookupShift{0.f};           // texels the eye pass shifts its lookups by: 0, except where a
+                                          // test plants a misplaced map
     [[nodiscard]] bool empty() const noexcept { return body.empty(); }
     [[nodiscard]] bool warped() const noexcept { return nPrime < kUniform; }
 };
@@ -53,7 +55,9 @@ struct ShadowPlan {
     /// Constant bias: receivers are tested as if moved this far towards the light (scene units),
     /// which is the same offset in every split whatever its warp.
     float receiverOffset = 0.f;
-    BiasSettings bias; // what the renderer applies, as chosen in the settings
+    glm::vec2 polygonOffset{0.f};   // (factor, units) while drawing the maps; zero: none (slope biases)
+    float normalOffsetTexels = 0.f; // receivers move along their normal by this many world texels; 0: none
+    BiasSettings bias;              // what the renderer applies, as chosen in the settings
     FilterSettings filter;
     /// The maps the eye pass compares against hold linear light depth (bias.linear_z, or VSM's
     /// moments, which are always of linear depth).

@@ -89,10 +89,8 @@ void main() {
 
     vec3 receiver = vWorldPos;
     if (shadow.biasType == BIAS_CONSTANT) receiver -= shadow.lightDir * shadow.receiverOffset;
-    if (shadow.biasType == BIAS_NORMAL_OFFSET) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
+    if (shadow.normalOffset > 0.0) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
     vec3 p = mapCoords(receiver, split);
-    vec2 texel = p.xy * res;   // texel-space position within this split's map
-    vec2 uvArray = p.xy * shadow.splits[split].mapScale;
 
     // Texel-space derivatives (for the receiver plane, Barroso §2.2, and for J below) through this
     // pixel's split matrix, from screen derivatives of the receiver's world position taken in
@@ -104,6 +102,10 @@ void main() {
     float det = dTdx.x * dTdy.y - dTdx.y * dTdy.x;
     vec2 dzdt = abs(det) > 1e-12 ? vec2(dzdx * dTdy.y - dzdy * dTdx.y, dzdy * dTdx.x - dzdx * dTdy.x) / det : vec2(0.0);
     if (shadow.tangentPlane == 0) dzdt = vec2(0.0);
+
+    p.xy += vec2(shadow.splits[split].lookupShiftX, shadow.splits[split].lookupShiftY) / res; // 0 but in tests
+    vec2 texel = p.xy * res; // texel-space position within this split's map
+    vec2 uvArray = p.xy * shadow.splits[split].mapScale;
 
     float s = 1.0;
     bool inside = all(greaterThanEqual(p, vec3(0.0))) && all(lessThanEqual(p.xy, vec2(1.0)));
