@@ -161,6 +161,8 @@ TEST(Presets, MissingKeysKeepTheBase) {
     expectSameSettings(t, base);
 }
 
+// Each preset shows its technique as engines ship it (slope-scaled + normal-offset bias, 3×3 PCF);
+// paper stays Barroso's recommendation.
 TEST(Presets, ShippedPresetsHoldTheirTechnique) {
     using namespace geometry::scene;
     using namespace geometry::shadow;
@@ -168,22 +170,28 @@ TEST(Presets, ShippedPresetsHoldTheirTechnique) {
     const ShadowSettings ssm = geometry::io::loadPreset(presetPath("ssm.json"));
     EXPECT_EQ(ssm.warp.method, WarpMethod::Uniform);
     EXPECT_EQ(ssm.splits.count, 1);
-    EXPECT_EQ(ssm.bias.type, BiasType::Constant);
-    EXPECT_EQ(ssm.filter.type, FilterType::Hw2x2);
+    EXPECT_EQ(ssm.bias.type, BiasType::SlopeNormalOffset);
+    EXPECT_EQ(ssm.bias.normalOffset, 1.f);
+    EXPECT_EQ(ssm.filter.type, FilterType::Pcf);
+    EXPECT_EQ(ssm.filter.kernel, 3);
 
     const ShadowSettings lispsm = geometry::io::loadPreset(presetPath("lispsm.json"));
     EXPECT_EQ(lispsm.warp.method, WarpMethod::Lispsm);
     EXPECT_EQ(lispsm.splits.count, 1);
-    EXPECT_EQ(lispsm.bias.type, BiasType::Constant);
-    EXPECT_EQ(lispsm.filter.type, FilterType::Hw2x2);
+    EXPECT_EQ(lispsm.bias.type, BiasType::SlopeNormalOffset);
+    EXPECT_EQ(lispsm.bias.normalOffset, 1.f);
+    EXPECT_EQ(lispsm.filter.type, FilterType::Pcf);
+    EXPECT_EQ(lispsm.filter.kernel, 3);
 
     const ShadowSettings pssm = geometry::io::loadPreset(presetPath("pssm3.json"));
     EXPECT_EQ(pssm.splits.count, 3);
     EXPECT_EQ(pssm.splits.scheme, SplitScheme::Practical);
     EXPECT_EQ(pssm.splits.lambda, 0.5);
     EXPECT_EQ(pssm.warp.method, WarpMethod::Uniform);
-    EXPECT_EQ(pssm.bias.type, BiasType::Constant);
-    EXPECT_EQ(pssm.filter.type, FilterType::Hw2x2);
+    EXPECT_EQ(pssm.bias.type, BiasType::SlopeNormalOffset);
+    EXPECT_EQ(pssm.bias.normalOffset, 1.f);
+    EXPECT_EQ(pssm.filter.type, FilterType::Pcf);
+    EXPECT_EQ(pssm.filter.kernel, 3);
 
     const ShadowSettings paper = geometry::io::loadPreset(presetPath("paper.json"));
     EXPECT_EQ(paper.bias.type, BiasType::Constant);
