@@ -5,6 +5,7 @@
 #include "mesh_command.h"
 #include "render_command.h"
 #include "sweep_command.h"
+#include "tune_command.h"
 #include "version.h"
 
 #include <CLI/CLI.hpp>
@@ -48,6 +49,12 @@ int main(int argc, char** argv) {
     app::SweepOptions sweepOptions;
     CLI::App* sweep = app::addSweepCommand(cli, sweepOptions);
 
+    app::TuneCommandOptions tuneOptions;
+    CLI::App* tune = cli.add_subcommand("tune", "Find the cheapest settings that meet an accuracy target: screening "
+                                                "at half size, then full-size confirmation; recommended.json, "
+                                                "tune.csv, tune.svg/png");
+    app::addTuneCommand(*tune, tuneOptions);
+
     try {
         cli.parse(argc, argv);
         if (mesh->parsed()) return app::runMesh(*mesh, meshOptions);
@@ -55,6 +62,7 @@ int main(int argc, char** argv) {
         if (curves->parsed()) return app::runCurves(curvesOptions);
         if (sweep->parsed()) return app::runSweep(*sweep, sweepOptions);
         if (bench->parsed()) return app::runBench(benchOptions);
+        if (tune->parsed()) return app::runTune(tuneOptions);
         return app::runGuiOrHeadless(guiOptions);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);

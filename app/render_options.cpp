@@ -228,7 +228,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
 }
 
 void addTruthOptions(CLI::App& cmd, TruthOptions& truth, const std::string& truthHelp) {
-    cmd.add_flag("--truth", truth.enabled, truthHelp);
+    if (!truthHelp.empty()) cmd.add_flag("--truth", truth.enabled, truthHelp);
     cmd.add_option("--truth-samples", truth.samples,
                    "Truth rays per pixel per axis: N x N samples over the pixel's footprint give its lit fraction "
                    "c (reports use 4)")

@@ -57,7 +57,7 @@ struct TruthOptions {
     int samples = 1; // per axis
 };
 
-/// Adds --truth (`truthHelp`) and --truth-samples to `cmd`.
+/// Adds --truth (`truthHelp`; none when empty: the command always traces truth) and --truth-samples.
 void addTruthOptions(CLI::App& cmd, TruthOptions& truth, const std::string& truthHelp);
 
 /// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()),

@@ -4,6 +4,7 @@
 #include "renderer/inspection.h"
 
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 namespace renderer {
@@ -37,6 +38,22 @@ Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& 
     out.shadowMemoryBytes = renderer.stats().shadowMemoryBytes;
     out.inspection = inspect(renderer, out.plan, truth, options.truthSamples);
     return out;
+}
+
+geometry::analysis::TuneFigures measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& request,
+                                                   const geometry::scene::Aabb& S,
+                                                   const std::vector<MeasureView>& views,
+                                                   const geometry::analysis::GroundTruth& truth, int truthSamples,
+                                                   const MeasureOptions& options) {
+    std::vector<geometry::analysis::TuneFigures> figures;
+    MeasureOptions o = options;
+    o.truthSamples = truthSamples;
+    for (const MeasureView& view : views) {
+        const Measurement m = measure(renderer, request.settings, S, view.camera, view.light, request.size, o, &truth);
+        figures.push_back(geometry::analysis::tuneFigures(m.inspection, std::isfinite(m.gpuMs) ? m.gpuMs : m.cpuMs,
+                                                          m.shadowMemoryBytes));
+    }
+    return geometry::analysis::combineViews(figures);
 }
 
 } // namespace renderer

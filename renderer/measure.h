@@ -4,6 +4,7 @@
 // eye passes by timer queries, the CPU time of planning plus drawing up to glFinish), and read the
 // last frame back with its statistics. It decides nothing about shadows: the plan does.
 #include "geometry/analysis/inspection.h"
+#include "geometry/analysis/tuner.h"
 #include "geometry/scene/scene.h"
 #include "geometry/shadow/shadow_plan.h"
 #include "renderer/renderer.h"
@@ -34,5 +35,19 @@ struct Measurement {
                                   const geometry::scene::DirectionalLight& light,
                                   const geometry::shadow::Viewport& viewport, const MeasureOptions& options,
                                   const geometry::analysis::GroundTruth* truth = nullptr);
+
+/// A camera and its light: one view a configuration is measured on.
+struct MeasureView {
+    geometry::scene::Camera camera;
+    geometry::scene::DirectionalLight light;
+};
+
+/// Measures a tune request (geometry/analysis/tuner.h) on every view with truth: the figures tune
+/// ranks, combined over the views (combineViews). Frame time: the GPU median, the CPU median where
+/// the timer gave nothing.
+[[nodiscard]] geometry::analysis::TuneFigures
+measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& request, const geometry::scene::Aabb& S,
+                   const std::vector<MeasureView>& views, const geometry::analysis::GroundTruth& truth,
+                   int truthSamples, const MeasureOptions& options = {});
 
 } // namespace renderer
