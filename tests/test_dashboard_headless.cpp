@@ -236,6 +236,39 @@ TEST_F(HeadlessDashboardTest, ChartTabsDrawTheCurvesAndTheTradeoffSweepRuns) {
 
 namespace {
 
+// Recommend runs the tune search on the current view, one measurement per frame, shows the tune
+// chart, and its result loads into B for an A/B comparison; a bad target is refused in the status bar.
+TEST_F(HeadlessDashboardTest, RecommendFindsSettingsAndAppliesThemToB) {
+    auto d = make();
+    (void)d->render(1);
+    ui::Dashboard& dash = d->dashboard();
+    EXPECT_FALSE(dash.startRecommend("speed=1"));
+    EXPECT_NE(dash.status().find("--target"), std::string::npos) << dash.status();
+    dash.showTab(4);
+    const geometry::analysis::Image before = d->render(1);
+    const double p95 = dash.inspection(0)->aliasing.p95;
+    ASSERT_TRUE(dash.startRecommend("p95=" + std::to_string(p95 * 0.6), 12));
+    int frames = 0;
+    for (; frames < 40 && dash.recommendRunning(); ++frames) (void)d->render(1);
+    EXPECT_FALSE(dash.recommendRunning());
+    EXPECT_GE(frames, 12) << "one measurement per frame";
+    ASSERT_TRUE(dash.recommendation()) << dash.status();
+    EXPECT_NE(dash.status().find("recommended"), std::string::npos) << dash.status();
+    const geometry::analysis::Image after = d->render(1);
+    const ui::Rect& r = dash.rects().stats;
+    EXPECT_GT(differing(before, after, r), size_t(0.05 * r.w * r.h)) << "the tune chart replaces the trade-off chart";
+    dash.applyRecommendation(1);
+    EXPECT_EQ(dash.state().settings[1].resolution, dash.recommendation()->resolution);
+    EXPECT_NE(dash.state().views.compare, ui::CompareMode::Off);
+    (void)d->render(2);
+    ASSERT_NE(dash.inspection(1), nullptr);
+    EXPECT_LE(dash.inspection(1)->aliasing.p95, p95 * 0.6) << "B meets the target on this view";
+}
+
+} // namespace
+
+namespace {
+
 /// Rows of the controls panel's first button (the first rows with bright text pixels).
 int firstTextHeight(const geometry::analysis::Image& img, const ui::Rect& r) {
     int first = -1, last = -1;

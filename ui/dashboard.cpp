@@ -114,6 +114,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
 
     renderViews(input);
     stepTradeoffSweep();
+    stepRecommend();
     updateInspection();
     updateHeatmap();
 

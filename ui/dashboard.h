@@ -7,6 +7,7 @@
 // GLFW window (viewer.cpp) and headless into an image (dashboard_headless.cpp): same layout and
 // same pixels for the same state and size.
 #include "dashboard_state.h"
+#include "geometry/analysis/tuner.h"
 #include "renderer/image.h"
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
@@ -99,6 +100,16 @@ public:
     [[nodiscard]] bool tradeoffRunning() const noexcept { return sweep_.running; }
     /// Starts the trade-off sweep (the "Run sweep" button).
     void startTradeoffSweep();
+    /// Starts the Trade-off tab's "Recommend" (geometry/analysis/tuner.h) on the current view from the
+    /// settings being edited; false, with the reason in the status bar, for a bad target or no truth.
+    bool startRecommend(const std::string& target, int budgetEvals = 40);
+    [[nodiscard]] bool recommendRunning() const noexcept { return recommend_.running; }
+    /// The recommended settings, once a search has found them.
+    [[nodiscard]] const std::optional<geometry::shadow::ShadowSettings>& recommendation() const noexcept {
+        return recommend_.result;
+    }
+    /// Loads the recommendation into side A (0) or B (1; A/B compare turns on).
+    void applyRecommendation(int side);
     /// Starts loading a scene in the background; the current one stays until it succeeds.
     void loadScene(const std::string& nameOrPath);
 
@@ -132,6 +143,10 @@ private:
     void drawAnalyticChart(int which); // 0 n'(γ), 1 λ(θ), 2 m_z(z)
     void drawTradeoffTab();
     void stepTradeoffSweep();
+    // Recommend (dashboard_recommend.cpp).
+    void drawRecommendControls();
+    void stepRecommend();
+    [[nodiscard]] charts::Chart recommendChart() const;
     void exportChart(const charts::Chart& chart, const std::string& name);
     void drawStatusBar();
     void drawControlsPanel();
@@ -182,6 +197,22 @@ private:
         std::unique_ptr<renderer::Renderer> renderer;
         int generation = -1; // scene generation the renderer holds
     } sweep_;
+
+    /// The Trade-off tab's Recommend: the tune search, one measurement per dashboard frame.
+    struct Recommend {
+        std::string target = "p95=2,interior=0.001,edge=0.02";
+        int budget = 40;
+        std::unique_ptr<geometry::analysis::Tuner> tuner;
+        bool running = false;
+        bool showChart = false; // the tune chart instead of the trade-off chart
+        std::optional<geometry::shadow::ShadowSettings> result;
+        std::string summary;
+        geometry::shadow::Viewport size{0, 0}; // of the view when the search started
+        geometry::scene::Camera camera;
+        geometry::scene::DirectionalLight light;
+        std::unique_ptr<renderer::Renderer> renderer;
+        int generation = -1;
+    } recommend_;
 };
 
 /// One line with a probe's values (status bar, inspector).

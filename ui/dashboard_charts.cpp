@@ -110,9 +110,12 @@ void Dashboard::drawTradeoffTab() {
         widgetMapRecord("tradeoff.cancel");
     }
     ImGui::SameLine();
-    const charts::Chart chart = charts::tradeoffChart(s.results, "frame time, GPU median (ms)");
-    if (ImGui::SmallButton("Export SVG + PNG")) exportChart(chart, "tradeoff");
+    const bool tune = recommend_.showChart && recommend_.tuner;
+    const charts::Chart chart =
+        tune ? recommendChart() : charts::tradeoffChart(s.results, "frame time, GPU median (ms)");
+    if (ImGui::SmallButton("Export SVG + PNG")) exportChart(chart, tune ? "tune" : "tradeoff");
     widgetMapRecord("export.tradeoff");
+    drawRecommendControls();
     float storage[2];
     const float* mouse = nullptr;
     const Rect area = chartArea("tradeoff_area", &mouse, storage);
