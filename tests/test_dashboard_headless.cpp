@@ -236,6 +236,23 @@ TEST_F(HeadlessDashboardTest, ChartTabsDrawTheCurvesAndTheTradeoffSweepRuns) {
 
 namespace {
 
+// The Views group's "truth samples" reaches the inspection: 2 × 2 rays give fractional coverage.
+TEST_F(HeadlessDashboardTest, TruthSamplesReachTheInspection) {
+    auto d = make();
+    (void)d->render(1);
+    ASSERT_NE(d->dashboard().inspection(0), nullptr);
+    EXPECT_EQ(d->dashboard().inspection(0)->truthSamples, 1);
+    d->dashboard().state().views.truthSamples = 2;
+    (void)d->render(1);
+    const geometry::analysis::Inspection* in = d->dashboard().inspection(0);
+    ASSERT_NE(in, nullptr);
+    EXPECT_EQ(in->truthSamples, 2);
+    size_t fractional = 0;
+    for (size_t i = 0; i < in->coverage.size(); ++i)
+        fractional += in->receiver[i] && in->coverage[i] > 0.f && in->coverage[i] < 1.f;
+    EXPECT_GT(fractional, 10u);
+}
+
 // Recommend runs the tune search on the current view, one measurement per frame, shows the tune
 // chart, and its result loads into B for an A/B comparison; a bad target is refused in the status bar.
 TEST_F(HeadlessDashboardTest, RecommendFindsSettingsAndAppliesThemToB) {

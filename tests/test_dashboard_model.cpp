@@ -181,6 +181,7 @@ TEST(DashboardConfig, RoundTripsSettingsViewsAndLayout) {
     s.views.heatmap = HeatmapKind::Truth;
     s.views.compare = CompareMode::Split;
     s.views.splitPosition = 0.25f;
+    s.views.truthSamples = 3;
     s.layout.eyeEnd = 0.5f;
     s.flySpeed = 42.f;
     const WindowGeometry win{1234, 777};
@@ -191,6 +192,7 @@ TEST(DashboardConfig, RoundTripsSettingsViewsAndLayout) {
     EXPECT_EQ(dashboardToJson(back, backWin), j);
     EXPECT_EQ(backWin.width, 1234);
     EXPECT_EQ(back.views.heatmap, HeatmapKind::Truth);
+    EXPECT_EQ(back.views.truthSamples, 3);
     EXPECT_FLOAT_EQ(back.layout.eyeEnd, 0.5f);
 }
 
@@ -206,6 +208,7 @@ TEST(DashboardConfig, CorruptFilesAreReportedAndChangeNothing) {
         "[1, 2]",
         R"({"settings": {"warp": {"method": "nonsense"}}})",
         R"({"views": {"heatmap": "rainbow"}})",
+        R"({"views": {"truth_samples": 9}})",
         R"({"layout": {"window": [10, 10]}})",
         R"({"layout": {"eye_end": "wide"}})",
         R"({"surprise": 1})",

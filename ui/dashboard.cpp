@@ -79,12 +79,12 @@ Rect contentArea(const Rect& panel, float header, float pad) noexcept {
 
 /// Exact text of the values a frame depends on, so a change anywhere re-inspects.
 std::string frameKey(const geometry::shadow::ShadowSettings& s, const geometry::scene::Scene& scene,
-                     geometry::shadow::Viewport size, bool truth, int generation) {
+                     geometry::shadow::Viewport size, int truthSamples, int generation) {
     std::ostringstream k;
     k << geometry::io::settingsToJson(s).dump() << '|' << std::hexfloat << scene.camera.eye.x << ','
       << scene.camera.eye.y << ',' << scene.camera.eye.z << ',' << scene.camera.target.x << ',' << scene.camera.target.y
       << ',' << scene.camera.target.z << ',' << scene.light.direction.x << ',' << scene.light.direction.y << ','
-      << scene.light.direction.z << '|' << size.width << 'x' << size.height << '|' << truth << '|' << generation;
+      << scene.light.direction.z << '|' << size.width << 'x' << size.height << '|' << truthSamples << '|' << generation;
     return k.str();
 }
 
@@ -183,12 +183,13 @@ void Dashboard::updateInspection() {
     for (int i = 0; i < sides; ++i) {
         Side& side = sides_[i];
         if (!side.renderer || side.size.width <= 0) continue;
-        const std::string key =
-            frameKey(state_.settings[i], scene_.file.scene, side.size, state_.views.truth, sceneGeneration_);
+        const std::string key = frameKey(state_.settings[i], scene_.file.scene, side.size,
+                                         state_.views.truth ? state_.views.truthSamples : 0, sceneGeneration_);
         if (key == side.inspectedKey && side.inspection) continue;
         try {
             side.inspection =
-                renderer::inspect(*side.renderer, side.plan, state_.views.truth ? scene_.truth.get() : nullptr);
+                renderer::inspect(*side.renderer, side.plan, state_.views.truth ? scene_.truth.get() : nullptr,
+                                  state_.views.truthSamples);
             side.eye = side.renderer->readEye();
             side.inspectedKey = key;
         } catch (const std::exception& e) {

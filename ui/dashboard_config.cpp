@@ -104,6 +104,7 @@ json dashboardToJson(const DashboardState& s, const WindowGeometry& window) {
           {"heatmap_blend", v.heatmapBlend},
           {"texel_grid", v.texelGrid},
           {"truth", v.truth},
+          {"truth_samples", v.truthSamples},
           {"compare", compareName(v.compare)},
           {"split_position", v.splitPosition}}},
         {"camera", {{"fly_speed", s.flySpeed}}},
@@ -138,6 +139,7 @@ void dashboardFromJson(const json& j, DashboardState& state, WindowGeometry& win
     vs.heatmapBlend = float(number(v, "heatmap_blend", "views.", 0, 1, vs.heatmapBlend));
     vs.texelGrid = int(number(v, "texel_grid", "views.", 1, 64, vs.texelGrid));
     vs.truth = boolean(v, "truth", "views.", vs.truth);
+    vs.truthSamples = int(number(v, "truth_samples", "views.", 1, 4, vs.truthSamples));
     vs.compare = choice(v, "compare", "views.", vs.compare, compareName);
     vs.splitPosition = float(number(v, "split_position", "views.", 0, 1, vs.splitPosition));
     const json& c = object(j, "camera", "camera.");

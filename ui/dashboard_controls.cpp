@@ -212,6 +212,9 @@ void Dashboard::drawViewsGroup() {
     ImGui::Checkbox("ground truth", &v.truth);
     widgetMapRecord("views.truth");
     help("Ray-trace every receiver pixel towards the light (Embree) for the truth heatmap and statistics");
+    ImGui::SliderInt("truth samples", &v.truthSamples, 1, 4, "%d per axis", ImGuiSliderFlags_AlwaysClamp);
+    widgetMapRecord("views.truth_samples");
+    help("N x N truth rays over each pixel's footprint: the truth's lit fraction becomes a coverage (reports use 4)");
     ImGui::SliderFloat("heatmap blend", &v.heatmapBlend, 0.f, 1.f, "%.2f");
     help("Mix the eye image under the heatmap (0: heatmap alone)");
     ImGui::SliderInt("texel grid", &v.texelGrid, 1, 64, "every %d", ImGuiSliderFlags_AlwaysClamp);

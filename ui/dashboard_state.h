@@ -29,6 +29,7 @@ struct ViewSettings {
     float heatmapBlend = 0.f; // eye image under the heatmap: 0 heatmap alone … 1 opaque
     int texelGrid = 4;        // texels heatmap: a line every N texels
     bool truth = true;        // ray-traced ground truth for the statistics and the truth view
+    int truthSamples = 1;     // truth rays per pixel per axis (N × N over the footprint)
     CompareMode compare = CompareMode::Off;
     float splitPosition = 0.5f; // split-screen compare: where B starts, 0..1 of the eye view
 };
