@@ -102,7 +102,10 @@ int runTune(const TuneCommandOptions& o) {
     geometry::scene::Scene& scene = file.scene;
     std::vector<renderer::MeasureView> views;
     std::string viewNames;
-    for (const auto& name : o.common.views) {
+    std::vector<std::string> names = o.common.views;
+    if (names.empty()) // every canonical view, as bench
+        for (const auto& [name, view] : file.views) names.push_back(name);
+    for (const auto& name : names) {
         const auto it = file.views.find(name);
         if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
         views.push_back({it->second.camera, it->second.light});

@@ -13,8 +13,9 @@ class App;
 namespace app {
 
 struct TuneCommandOptions {
-    /// --scene --view --size --out --backend --preset --set (OptionUse::Bench): `views` empty = the
-    /// scene's own camera; at most one --preset, the start; --set applies to the start.
+    /// --scene --view --size --out --backend --preset --set (OptionUse::Bench): `views` empty = every
+    /// canonical view of the scene file (none: the scene's camera); at most one --preset, the start;
+    /// --set applies to the start.
     RenderOptions common = defaults();
     std::string target;              // --target p95=2,interior=0.001,...
     std::vector<std::string> spaces; // --space key=v1,v2,...

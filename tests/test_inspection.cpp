@@ -132,22 +132,37 @@ TEST(Inspection, TexelUtilizationFallsWithResolution) {
     }
 }
 
+namespace {
+
+/// A scene with its GL context, renderer and ray-traced truth: plan, render and inspect a frame.
+struct TruthRig {
+    Scene scene;
+    std::unique_ptr<renderer::GlContext> context = renderer::createOSMesaContext();
+    renderer::Renderer r{scene};
+    GroundTruth truth{scene};
+    explicit TruthRig(Scene s) : scene(std::move(s)) {}
+    [[nodiscard]] ShadowPlan plan(const ShadowSettings& s, Viewport vp) const {
+        return planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    }
+    [[nodiscard]] Inspection inspect(const ShadowPlan& plan, Viewport vp, int truthSamples = 1) {
+        r.render(plan, vp, renderer::ViewOptions{});
+        return renderer::inspect(r, plan, &truth, truthSamples);
+    }
+};
+
+} // namespace
+
 // Planted acne (a constant bias of −0.5 m pulls receivers into their own surface) shows as interior
 // false shadow, not as edge error (docs/design.md §4 "Truth classes").
 TEST(Inspection, PlantedAcneIsInteriorFalseShadow) {
-    const Scene scene = makePlaneScene();
-    auto context = renderer::createOSMesaContext();
-    renderer::Renderer r(scene);
-    const GroundTruth truth(scene);
+    TruthRig rig(makePlaneScene());
     ShadowSettings s;
     s.resolution = 1024;
     s.bias.type = BiasType::Constant;
     s.bias.constant = -0.5f;
     s.filter.type = FilterType::None;
     const Viewport vp{320, 240};
-    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
-    r.render(plan, vp, renderer::ViewOptions{});
-    const Inspection in = renderer::inspect(r, plan, &truth);
+    const Inspection in = rig.inspect(rig.plan(s, vp), vp);
     ASSERT_TRUE(in.truthClasses);
     const TruthClasses& t = *in.truthClasses;
     EXPECT_GT(t.interiorFalseShadow, 0.3) << "edge " << t.edgeError;
@@ -157,9 +172,7 @@ TEST(Inspection, PlantedAcneIsInteriorFalseShadow) {
     EXPECT_NEAR(in.splitTruthClasses[0].interiorFalseShadow, t.interiorFalseShadow, 1e-12) << "one split: the same";
     // A sane bias leaves almost nothing interior.
     s.bias.constant = 0.05f;
-    const ShadowPlan good = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
-    r.render(good, vp, renderer::ViewOptions{});
-    const Inspection clean = renderer::inspect(r, good, &truth);
+    const Inspection clean = rig.inspect(rig.plan(s, vp), vp);
     EXPECT_LT(clean.truthClasses->interiorFalseShadow, 0.005);
 }
 
@@ -194,10 +207,7 @@ Scene slabScene() {
 // one (the map's texel grid rounds the slab's edge to a texel boundary), checks that it leaves no
 // error, then moves the lookups half a texel either way (SplitPlan::lookupShift).
 TEST(Inspection, AMapShiftedByHalfATexelIsEdgeErrorOfHalfATexel) {
-    const Scene scene = slabScene();
-    auto context = renderer::createOSMesaContext();
-    renderer::Renderer r(scene);
-    const GroundTruth truth(scene);
+    TruthRig rig(slabScene());
     ShadowSettings s;
     s.resolution = 128;
     s.warp.method = WarpMethod::Uniform;
@@ -205,7 +215,7 @@ TEST(Inspection, AMapShiftedByHalfATexelIsEdgeErrorOfHalfATexel) {
     s.bias.type = BiasType::Constant;
     s.bias.constant = 0.05f;
     const Viewport vp{256, 256};
-    ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    ShadowPlan plan = rig.plan(s, vp);
     ASSERT_EQ(plan.splits.size(), 1u);
     const auto texelAt = [&](const glm::vec3& p) {
         const glm::vec4 c = plan.splits[0].lightViewProj * glm::vec4(p, 1.f);
@@ -223,8 +233,7 @@ TEST(Inspection, AMapShiftedByHalfATexelIsEdgeErrorOfHalfATexel) {
     const auto classes = [&](float shift) {
         plan.splits[0].lookupShift = glm::vec2(0.f);
         plan.splits[0].lookupShift[axis] = shift;
-        r.render(plan, vp, renderer::ViewOptions{});
-        const Inspection in = renderer::inspect(r, plan, &truth, 4);
+        const Inspection in = rig.inspect(plan, vp, 4);
         EXPECT_GT(in.aliasing.p50, 1.5) << "over a pixel per texel: half a texel is about a pixel";
         EXPECT_LT(in.aliasing.p50, 3.0);
         return *in.truthClasses;
@@ -243,16 +252,12 @@ TEST(Inspection, AMapShiftedByHalfATexelIsEdgeErrorOfHalfATexel) {
 // Classes per scene mesh: the plane scene's ground holds the pole shadows' errors; the poles are
 // counted apart; together they are every counted pixel.
 TEST(Inspection, TruthClassesPerMeshAddUpToTheWhole) {
-    const Scene scene = makePlaneScene();
-    auto context = renderer::createOSMesaContext();
-    renderer::Renderer r(scene);
-    const GroundTruth truth(scene);
+    TruthRig rig(makePlaneScene());
+    const Scene& scene = rig.scene;
     ShadowSettings s;
     s.resolution = 512;
     const Viewport vp{160, 120};
-    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
-    r.render(plan, vp, renderer::ViewOptions{});
-    const Inspection in = renderer::inspect(r, plan, &truth, 2);
+    const Inspection in = rig.inspect(rig.plan(s, vp), vp, 2);
     ASSERT_EQ(in.meshTruthClasses.size(), scene.meshes.size());
     ASSERT_EQ(in.meshNames.size(), scene.meshes.size());
     size_t counted = 0;

@@ -14,14 +14,15 @@ using namespace geometry::shadow;
 namespace {
 
 /// A made-up measurement: resolution and warp set p95, a constant bias leaves acne, hw2x2 leaves
-/// ragged edges; PCF, resolution and the warp cost time. The screening size quarters the time.
+/// ragged edges (a fraction that doubles at half the size, as 1-D edges do); PCF, resolution and
+/// the warp cost time. The screening size quarters the time.
 TuneFigures model(const ShadowSettings& s, Viewport size) {
     TuneFigures f;
     const bool warped = s.warp.method == WarpMethod::Lispsm;
     const double fullRes = double(s.resolution) * (size.width < 640 ? 2.0 : 1.0); // screening halves it
     f.p95 = 2048.0 / fullRes * (warped ? 0.5 : 1.0);
     f.interior = s.bias.type == BiasType::Constant ? 0.01 : 0.0;
-    f.edge = s.filter.type == FilterType::Pcf ? 0.001 : 0.004;
+    f.edge = (s.filter.type == FilterType::Pcf ? 0.001 : 0.004) * 640.0 / size.width; // 1-D edges: ∝ 1/size
     f.misclassified = f.interior + f.edge;
     f.frameMs = fullRes / 1024.0 * (s.filter.type == FilterType::Pcf ? 1.5 : 1.0) * (warped ? 1.1 : 1.0) *
                 (size.width < 640 ? 0.25 : 1.0);
@@ -196,12 +197,15 @@ TEST(Tuner, FindsTheCheapestConfigurationThatMeetsTheTarget) {
     EXPECT_EQ(e.candidate.warp.method, WarpMethod::Lispsm);
     EXPECT_EQ(e.candidate.resolution, 2048);
     EXPECT_EQ(e.request.size.width, 640);
-    // Screening measured at half size and half resolution.
+    // Screening measured at half size and half resolution; its edge error compared at full size.
     for (const TuneEvaluation& s : t.evaluations())
         if (s.request.stage == TuneStage::Screen) {
             EXPECT_EQ(s.request.size.width, 320);
             EXPECT_EQ(s.request.settings.resolution * 2, s.candidate.resolution);
+            EXPECT_DOUBLE_EQ(s.figures.edge, model(s.candidate, {640, 360}).edge);
         }
+    for (const TuneEvaluation& s : t.evaluations())
+        EXPECT_EQ(s.violation, targetViolation(s.figures, target)) << "judged on the figures it keeps";
     // No configuration screened twice once irrelevant settings are ignored.
     std::vector<std::string> seen;
     for (const TuneEvaluation& s : t.evaluations()) {

@@ -24,7 +24,9 @@ namespace {
 
 constexpr double kFractionEpsilon = 1e-4; // violation's ε for fractions (a hundredth of a percent)
 constexpr double kP95Epsilon = 1e-2;      // and for m
-constexpr double kCostTie = 0.03;         // frame times within 3 % are a tie, broken by memory
+// Frame times within 10 % are a tie, broken by memory: llvmpipe's medians of three frames on a
+// shared machine scatter by about that much.
+constexpr double kCostTie = 0.10;
 
 std::string number(double v) {
     std::ostringstream os;
@@ -290,9 +292,22 @@ std::string Tuner::label(const ShadowSettings& s) const {
 
 bool Tuner::better(const TuneEvaluation& a, const TuneEvaluation& b) const noexcept {
     if (a.meets() != b.meets()) return a.meets();
-    if (a.meets()) return compareCost(a.figures, b.figures) < 0;
+    if (a.meets()) {
+        if (const int c = compareCost(a.figures, b.figures); c != 0) return c < 0;
+        // As cheap: the one further inside the target has more room to trade for a cheaper setting.
+        return targetRatio(a.figures, target_) < targetRatio(b.figures, target_);
+    }
     if (a.violation != b.violation) return a.violation < b.violation;
     return compareCost(a.figures, b.figures) < 0;
+}
+
+bool Tuner::siblings(const ShadowSettings& a, const ShadowSettings& b) const {
+    for (const auto& info : shadow::settingsDeclaration()) {
+        if (info.kind == shadow::SettingInfo::Kind::Float) continue;
+        const bool ma = settingMatters(a, info.key), mb = settingMatters(b, info.key);
+        if (ma != mb || (ma && info.format(a) != info.format(b))) return false;
+    }
+    return true;
 }
 
 std::optional<size_t> Tuner::screened(const std::string& key) const noexcept {
@@ -314,9 +329,20 @@ void Tuner::finishAxis() {
         if (std::find(pool.begin(), pool.end(), e) == pool.end()) pool.push_back(e);
     std::stable_sort(pool.begin(), pool.end(),
                      [&](size_t a, size_t b) { return better(evaluations_[a], evaluations_[b]); });
-    pool.resize(std::min(pool.size(), size_t(options_.beam)));
-    if (pool != beam_) changed_ = true;
-    beam_ = std::move(pool);
+    // The best, then the best that is not a sibling (the same but for amounts) of one already
+    // taken, so the beam does not fill with bias-amount variants of one configuration.
+    std::vector<size_t> beam;
+    for (const bool allowSiblings : {false, true})
+        for (size_t e : pool) {
+            if (beam.size() >= size_t(options_.beam)) break;
+            if (std::find(beam.begin(), beam.end(), e) != beam.end()) continue;
+            const bool sibling = std::any_of(beam.begin(), beam.end(), [&](size_t b) {
+                return siblings(evaluations_[e].candidate, evaluations_[b].candidate);
+            });
+            if (!sibling || allowSiblings) beam.push_back(e);
+        }
+    if (beam != beam_) changed_ = true;
+    beam_ = std::move(beam);
     axisBeam_ = beam_;
     axisEvals_.clear();
     ++axis_;
@@ -406,7 +432,11 @@ void Tuner::report(const TuneFigures& figures) {
     TuneEvaluation e = std::move(*pending_);
     pending_.reset();
     e.figures = figures;
-    e.violation = targetViolation(figures, target_);
+    // Edge error is a fraction of pixels along 1-D edges: at half the width the same edges, the
+    // same number of pixels wide, cover about twice the fraction. Compare it at full size.
+    if (e.request.stage == TuneStage::Screen)
+        e.figures.edge *= double(e.request.size.width) / double(options_.size.width);
+    e.violation = targetViolation(e.figures, target_);
     evaluations_.push_back(std::move(e));
     keys_.push_back(pendingKey_);
     const size_t index = evaluations_.size() - 1;

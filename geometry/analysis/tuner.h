@@ -7,8 +7,9 @@
 // The search: a beam search by coordinate descent over the declared settings at a screening size
 // (half the width and height, half the map resolution, so texels per pixel stay the same): axis by
 // axis, every candidate value is tried on each of the best `beam` configurations so far, and the
-// best `beam` of them go on (a beam of two gets past the commonest trap, where a warp pays off only
-// together with a lower resolution). Then the best screened candidates are confirmed at full size. Configurations that
+// best `beam` of them go on, no two of them differing only in amounts (a beam of two gets past the
+// commonest trap, where a warp pays off only together with a lower resolution). Then the best
+// screened candidates are confirmed at full size. Configurations that
 // differ only in settings their other settings make irrelevant (bias.constant under a slope bias, α with one split) are
 // measured once.
 #include "geometry/analysis/inspection.h"
@@ -113,7 +114,9 @@ public:
 
     /// The next configuration to measure; nullopt when the search is over.
     [[nodiscard]] std::optional<TuneRequest> next();
-    /// The figures of the request next() returned last. Throws std::logic_error without one.
+    /// The figures of the request next() returned last. A screening measurement's edge error is
+    /// scaled by the width ratio (edges are 1-D: half the size, about twice the fraction). Throws
+    /// std::logic_error without a request.
     void report(const TuneFigures& figures);
 
     [[nodiscard]] bool done() const noexcept { return phase_ == Phase::Done; }
@@ -134,6 +137,8 @@ private:
     [[nodiscard]] std::string canonical(const shadow::ShadowSettings& s) const;
     [[nodiscard]] std::string label(const shadow::ShadowSettings& s) const;
     [[nodiscard]] bool better(const TuneEvaluation& a, const TuneEvaluation& b) const noexcept;
+    /// The same configuration but for continuous amounts (float settings: bias amounts, α, …).
+    [[nodiscard]] bool siblings(const shadow::ShadowSettings& a, const shadow::ShadowSettings& b) const;
     [[nodiscard]] std::optional<size_t> screened(const std::string& key) const noexcept;
     [[nodiscard]] int budgetLeft() const noexcept;
     void finishAxis();
