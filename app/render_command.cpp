@@ -168,8 +168,8 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     if (wants(e, "texels")) w.png("texels.png", texelsView(eye, in, e.texelGrid));
     if (e.truth.enabled) {
         w.pfm("shadow.pfm", in.shadow, in.width, in.height);
-        std::vector<float> t(in.occluded->size());
-        for (size_t i = 0; i < t.size(); ++i) t[i] = in.receiver[i] ? ((*in.occluded)[i] ? 0.f : 1.f) : NAN;
+        std::vector<float> t(in.coverage.size()); // the truth's lit fraction c (0 or 1 at one sample)
+        for (size_t i = 0; i < t.size(); ++i) t[i] = in.receiver[i] ? in.coverage[i] : NAN;
         w.pfm("truth.pfm", t, in.width, in.height);
         if (wants(e, "truth")) w.png("truth.png", truthView(in, eye, e.heatmapBlend));
         if (wants(e, "pixels"))

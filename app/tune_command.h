@@ -20,7 +20,7 @@ struct TuneCommandOptions {
     std::string target;              // --target p95=2,interior=0.001,...
     std::vector<std::string> spaces; // --space key=v1,v2,...
     TruthOptions truth{true, 1};
-    int budgetEvals = 80;
+    int budgetEvals = 120;
     int frames = 3;
 
     [[nodiscard]] static RenderOptions defaults() {

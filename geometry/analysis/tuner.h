@@ -1,85 +1,26 @@
 #pragma once
-// The search behind `shadowscope tune` and the dashboard's "Recommend" (docs/design.md §4 "Tuning"): the
-// cheapest shadow settings that meet an accuracy target. Pure and incremental (ask/tell): next()
-// says which configuration to measure at which size, report() hands back its figures, so the
-// command line loops and the GUI measures one configuration per frame. No GL.
+// The search behind `shadowscope tune` and the dashboard's "Recommend" (docs/design.md §4
+// "Tuning"): the cheapest shadow settings that meet an accuracy target. Pure and incremental
+// (ask/tell): next() says which configuration to measure at which size, report() hands back its
+// figures, so the command line loops and the GUI measures one configuration per frame. No GL.
 //
 // The search: a beam search by coordinate descent over the declared settings at a screening size
 // (half the width and height, half the map resolution, so texels per pixel stay the same): axis by
 // axis, every candidate value is tried on each of the best `beam` configurations so far, and the
 // best `beam` of them go on, no two of them differing only in amounts (a beam of two gets past the
 // commonest trap, where a warp pays off only together with a lower resolution). Then the best
-// screened candidates are confirmed at full size. Configurations that
-// differ only in settings their other settings make irrelevant (bias.constant under a slope bias, α with one split) are
+// screened candidates are confirmed at full size. Configurations that differ only in settings
+// their other settings make irrelevant (bias.constant under a slope bias, α with one split) are
 // measured once.
-#include "geometry/analysis/inspection.h"
-#include "geometry/shadow/settings.h"
+#include "geometry/analysis/tune_space.h"
+#include "geometry/analysis/tune_target.h"
 #include "geometry/shadow/shadow_plan.h"
 
-#include <cstdint>
-#include <limits>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace geometry::analysis {
-
-/// What tune must reach: each given figure at or below its value.
-struct TuneTarget {
-    std::optional<double> p95;           // aliasing m, 95th percentile
-    std::optional<double> interior;      // interior false shadow + interior false lit (fractions)
-    std::optional<double> edge;          // edge error (fraction)
-    std::optional<double> misclassified; // false shadow + false lit at the pixel centre (fraction)
-    [[nodiscard]] bool empty() const noexcept { return !p95 && !interior && !edge && !misclassified; }
-};
-
-/// "p95=2,interior=0.001": keys p95, interior, edge, misclassified, each once, values finite and
-/// ≥ 0. Throws std::invalid_argument (one line, naming --target) otherwise.
-[[nodiscard]] TuneTarget parseTuneTarget(std::string_view text);
-/// The target as parseTuneTarget reads it back.
-[[nodiscard]] std::string formatTuneTarget(const TuneTarget& target);
-
-/// One configuration's figures (over all views: the worst accuracy, the summed time).
-struct TuneFigures {
-    static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-    double p95 = kNaN, interior = kNaN, edge = kNaN, misclassified = kNaN;
-    double frameMs = kNaN;    // median GPU frame time (CPU when the GPU timer gave nothing)
-    uint64_t memoryBytes = 0; // shadow-map memory
-};
-
-/// The figures of one measured frame with truth (addTruth); NaN accuracy without it.
-[[nodiscard]] TuneFigures tuneFigures(const Inspection& in, double frameMs, uint64_t memoryBytes) noexcept;
-/// Several views as one: the worst of each accuracy figure, the summed time, the largest memory.
-[[nodiscard]] TuneFigures combineViews(const std::vector<TuneFigures>& views) noexcept;
-
-/// How far figures miss the target: Σ over its keys of max(0, log2((value + ε) / (target + ε)))
-/// (ε 1e-4 for fractions, 1e-2 for p95); 0 when met, +∞ when a needed figure is NaN.
-[[nodiscard]] double targetViolation(const TuneFigures& f, const TuneTarget& target) noexcept;
-/// The worst of (value + ε) / (target + ε) over the target's keys: ≤ 1 when met (the tune chart's y);
-/// +∞ when a needed figure is NaN.
-[[nodiscard]] double targetRatio(const TuneFigures& f, const TuneTarget& target) noexcept;
-/// The target's keys that `f` misses, as "edge 0.031 > 0.02", comma-separated ("" when met).
-[[nodiscard]] std::string describeMisses(const TuneFigures& f, const TuneTarget& target);
-
-/// One searched setting and its candidate values (as `--set` spells them).
-struct TuneAxis {
-    std::string key;
-    std::vector<std::string> values;
-};
-
-/// bias.type and its amounts, filter.type and kernel, resolution, warp.method, splits count, scheme
-/// and α, tangent plane (docs/design.md §4 "Tuning" lists the values).
-[[nodiscard]] std::vector<TuneAxis> defaultTuneSpace();
-/// Applies "key=v1,v2,...": replaces that key's candidates, or adds the key. Throws
-/// std::invalid_argument (naming --space) for a malformed spec, an unknown key or an invalid value.
-void overrideTuneAxis(std::vector<TuneAxis>& space, std::string_view spec);
-/// The number of configurations the space spans (the product of its axes' sizes).
-[[nodiscard]] double tuneSpaceSize(const std::vector<TuneAxis>& space) noexcept;
-
-/// Whether `key` changes anything under the other settings of `s` (bias.slope only for the slope
-/// biases, splits.alpha only for adaptive splits with more than one split, …).
-[[nodiscard]] bool settingMatters(const shadow::ShadowSettings& s, std::string_view key) noexcept;
 
 enum class TuneStage { Screen, Full };
 
@@ -100,7 +41,7 @@ struct TuneEvaluation {
 
 struct TuneOptions {
     shadow::Viewport size{640, 360}; // full size; screening at half of it
-    int budgetEvals = 80;            // measurements in all, screening and confirmation
+    int budgetEvals = 120;           // measurements in all; a sixth (at least `confirm`) kept for full size
     int confirm = 4;                 // screened candidates confirmed at full size (more while none meets)
     int maxPasses = 3;               // passes over the axes
     int beam = 2;                    // configurations carried from axis to axis
