@@ -30,7 +30,7 @@ Chart tuneChart(const std::vector<TunePoint>& points, const std::string& target)
         }
         if (p.full) {
             full.points.push_back(xy);
-            full.labels.push_back(p.chosen ? "" : p.label);
+            full.labels.push_back(""); // long labels of close points overlap: the choice alone is named
             fullXy.push_back(xy);
             fullIndex.push_back(i);
         } else {
