@@ -25,7 +25,7 @@ namespace app {
 
 const std::vector<std::string>& viewNames() {
     static const std::vector<std::string> names = {"eye",    "light",  "light_unwarped", "aliasing", "truth",
-                                                   "splits", "texels", "dashboard",      "pixels"};
+                                                   "splits", "texels", "dashboard",      "pixels",   "shadow_map"};
     return names;
 }
 
@@ -165,6 +165,11 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
         w.pfm("aliasing.pfm", in.m, in.width, in.height);
     }
     if (wants(e, "splits")) w.png("splits.png", splitsView(eye, in, f.plan));
+    if (wants(e, "shadow_map")) // the raw depth each split's map holds, for diffing between frames and tools
+        for (int i = 0; i < int(f.plan.splits.size()); ++i) {
+            const int res = std::min(f.plan.splits[size_t(i)].resolution, f.renderer->stats().shadowResolution);
+            w.pfm("shadow_map_" + std::to_string(i) + ".pfm", f.renderer->readShadowMap(i, res), res, res);
+        }
     if (wants(e, "texels")) w.png("texels.png", texelsView(eye, in, e.texelGrid));
     if (e.truth.enabled) {
         w.pfm("shadow.pfm", in.shadow, in.width, in.height);

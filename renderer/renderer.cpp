@@ -5,7 +5,8 @@
 //   [SECTION] Shadow maps ............... drawCasters, shadowPass, peelAndCombine, momentsPass
 //   [SECTION] Eye view .................. eyePass, eyeBlurAndCompose
 //   [SECTION] Light views ............... lightViewPass, unwarpedViewPass
-//   [SECTION] Reading back .............. readShadowMask, readShadowDepth, readAux, readPositions, readNormals
+//   [SECTION] Reading back .............. readShadowMask, readShadowDepth, readShadowMap, readAux, readPositions,
+//                                         readNormals
 
 #include "renderer.h"
 
@@ -442,6 +443,22 @@ float Renderer::readShadowDepth(int split, int x, int y) const {
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureSubImage(sampledDepth_, 0, x, y, split, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, sizeof depth, &depth);
     return depth;
+}
+
+std::vector<float> Renderer::readShadowMap(int split, int resolution) const {
+    if (sampledDepth_ == 0 || split < 0 || split >= firstDepth_.layers() || resolution < 1 ||
+        resolution > stats_.shadowResolution)
+        return {};
+    const size_t side = size_t(resolution);
+    std::vector<float> bottomUp(side * side);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureSubImage(sampledDepth_, 0, 0, 0, split, resolution, resolution, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         GLsizei(bottomUp.size() * sizeof(float)), bottomUp.data());
+    std::vector<float> out(bottomUp.size());
+    for (size_t row = 0; row < side; ++row)
+        std::copy_n(bottomUp.begin() + std::ptrdiff_t((side - 1 - row) * side), side,
+                    out.begin() + std::ptrdiff_t(row * side));
+    return out;
 }
 
 std::vector<glm::vec4> Renderer::readAux() const { return readFloat4(EyeBuffers::Aux); }

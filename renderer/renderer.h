@@ -85,6 +85,10 @@ public:
     /// The depth the eye pass compares against in split `split`'s map at texel (x, y) (x right, y up
     /// from the map's bottom row, as the texel coordinates in readAux()); NaN outside the map.
     [[nodiscard]] float readShadowDepth(int split, int x, int y) const;
+    /// Split `split`'s whole map as the eye pass reads it: `resolution` × `resolution` depths (the
+    /// split's drawn resolution, at most the array's), top row (v = 1) first. Empty for a split or
+    /// resolution the last frame did not draw.
+    [[nodiscard]] std::vector<float> readShadowMap(int split, int resolution) const;
     [[nodiscard]] const FrameStats& stats() const noexcept { return stats_; }
     /// Blocks until the GPU times of every rendered frame are in; for one-shot exports.
     const PassTimes& waitForTimings() noexcept;

@@ -19,6 +19,7 @@ ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResol
         s.dualDepthCap = split.dualDepthCap;
         s.lookupShiftX = split.lookupShift.x;
         s.lookupShiftY = split.lookupShift.y;
+        s.blendStart = split.blendStart;
     }
     const auto& bias = plan.bias;
     const auto& filter = plan.filter;

@@ -218,3 +218,33 @@ TEST(Cli, RenderWritesThePixelLayers) {
     EXPECT_NE(bad.exitCode, 0);
     EXPECT_NE(bad.output.find("--views pixels needs --truth"), std::string::npos) << bad.output;
 }
+
+// --views shadow_map: each split's raw map, at its resolution, holding depths in [0, 1] (casters
+// below 1, the cleared background at 1); a bad stabilize or blend value is refused naming its key.
+TEST(Cli, RenderWritesTheRawShadowMaps) {
+    const fs::path dir = freshDir("shadow_maps");
+    const CommandResult r = run("render --backend osmesa --scene plane --size 80x60 --shadow-res 256 --views "
+                                "shadow_map --set splits.count=2 --set stabilize.mode=snap --set splits.blend=0.1 "
+                                "--out " +
+                                dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* name : {"shadow_map_0.pfm", "shadow_map_1.pfm"}) {
+        int w = 0, h = 0;
+        const auto depth = geometry::analysis::readPfm((dir / name).string(), w, h);
+        EXPECT_EQ(w, 256) << name;
+        EXPECT_EQ(h, 256) << name;
+        size_t casters = 0;
+        for (float d : depth) {
+            ASSERT_TRUE(d >= 0.f && d <= 1.f) << name << ": " << d;
+            casters += d < 1.f;
+        }
+        EXPECT_GT(casters, depth.size() / 10) << name;
+    }
+    for (const std::string bad : {"splits.blend=2", "stabilize.mode=maybe"}) {
+        const CommandResult b = run("render --backend osmesa --scene plane --size 32x32 --set " + bad + " --out " +
+                                    freshDir("bad_stabilize").string());
+        EXPECT_EQ(b.exitCode, 2) << bad;
+        EXPECT_NE(b.output.find(bad.substr(0, bad.find('='))), std::string::npos) << b.output;
+        EXPECT_EQ(std::count(b.output.begin(), b.output.end(), '\n'), 1) << "one line: " << b.output;
+    }
+}

@@ -4,6 +4,7 @@
 #include "geometry/shadow/focus.h"
 #include "geometry/shadow/shadow_plan.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <random>
@@ -33,7 +34,8 @@ const WarpMethod kMethods[] = {WarpMethod::Uniform, WarpMethod::Psm,   WarpMetho
 } // namespace
 
 // Every point of V_i ∩ S and every point of S between it and the light lands in split i's unit
-// cube, for every warp, both warp directions and 1–4 splits (docs/design.md §3.1, §3.2).
+// cube, for every warp, both warp directions, 1–4 splits and stabilization off and snap
+// (docs/design.md §3.1, §3.2).
 TEST(Plan, WarpedSplitsKeepReceiversAndCastersInTheirUnitCube) {
     std::mt19937 rng(99);
     Aabb S;
@@ -46,6 +48,7 @@ TEST(Plan, WarpedSplitsKeepReceiversAndCastersInTheirUnitCube) {
         settings.direction = (trial / 6) % 2 ? WarpDirection::Middle : WarpDirection::Standard;
         settings.splits.count = 1 + (trial / 12) % 4;
         settings.splits.scheme = SplitScheme((trial / 48) % 5);
+        settings.stabilize = trial % 7 < 3 ? StabilizeMode::Snap : StabilizeMode::Off;
         Camera cam;
         cam.eye = {uniform(rng, -60, 60), uniform(rng, -5, 40), uniform(rng, -70, 40)};
         cam.target = cam.eye + randomUnit(rng);
@@ -188,4 +191,64 @@ TEST(Plan, BiasTypesBecomeTheOffsetsTheRendererApplies) {
     EXPECT_NEAR(contactDistance(constant, 0, p, 1024), std::max(0.07f, texel), 1e-6f);
     EXPECT_TRUE(std::isnan(contactDistance(both, 5, p, 1024)));
     EXPECT_TRUE(std::isnan(texelWorldSize(both, 0, p, 0)));
+}
+
+namespace {
+
+/// Where a world point lands in split 0's map, in texels.
+glm::dvec3 texelOf(const ShadowPlan& plan, const glm::vec3& p, int res) {
+    const glm::dvec4 c = glm::dmat4(plan.splits[0].lightViewProj) * glm::dvec4(glm::dvec3(p), 1.0);
+    return {(c.x / c.w * 0.5 + 0.5) * res, (c.y / c.w * 0.5 + 0.5) * res, c.z / c.w};
+}
+
+} // namespace
+
+// stabilize.mode = snap: a camera that moves by a fraction of a texel, or turns, leaves the uniform
+// map's texel grid where it was in the world (whole-texel shifts only, same scale, same depth);
+// without snap the grid slides by fractions of a texel.
+TEST(Plan, SnapHoldsTheUniformMapsTexelGridStill) {
+    const Scene scene = makePlaneScene();
+    ShadowSettings s;
+    s.resolution = 1024;
+    s.splits.count = 3;
+    const Viewport vp{320, 240};
+    const std::vector<glm::vec3> probes{{0, 0, 0}, {5, 0, -3}, {-7, 2, 4}, {12, 0, 9}};
+    const auto shifts = [&](const Camera& a, const Camera& b) {
+        const ShadowPlan pa = planShadows(s, scene.bounds(), a, scene.light, vp);
+        const ShadowPlan pb = planShadows(s, scene.bounds(), b, scene.light, vp);
+        std::vector<glm::dvec3> out;
+        for (const auto& p : probes) out.push_back(texelOf(pb, p, s.resolution) - texelOf(pa, p, s.resolution));
+        return out;
+    };
+    Camera moved = scene.camera;
+    moved.eye += glm::vec3(0.013f, 0.004f, -0.021f); // a fraction of a 2–3 cm texel
+    moved.target += glm::vec3(0.013f, 0.004f, -0.021f);
+    Camera turned = scene.camera;
+    turned.target = glm::vec3(glm::rotate(glm::mat4(1.f), glm::radians(3.f), glm::vec3(0, 1, 0)) *
+                              glm::vec4(turned.target - turned.eye, 0.f)) +
+                    turned.eye;
+    s.stabilize = StabilizeMode::Snap;
+    for (const Camera& other : {moved, turned}) {
+        const auto d = shifts(scene.camera, other);
+        for (const auto& v : d) {
+            EXPECT_NEAR(v.x, std::round(v.x), 1e-3) << "whole texels";
+            EXPECT_NEAR(v.y, std::round(v.y), 1e-3);
+            EXPECT_NEAR(v.x, d[0].x, 1e-3) << "one shift for every point: same scale";
+            EXPECT_NEAR(v.y, d[0].y, 1e-3);
+            EXPECT_NEAR(v.z, 0.0, 1e-6) << "depth does not move";
+        }
+    }
+    s.stabilize = StabilizeMode::Off;
+    double fraction = 0;
+    for (const auto& v : shifts(scene.camera, moved)) fraction = std::max(fraction, std::abs(v.x - std::round(v.x)));
+    EXPECT_GT(fraction, 0.01) << "unsnapped, the grid slides by fractions of a texel";
+    // Warped splits are left alone by snap (their frame follows the warp).
+    s.warp.method = WarpMethod::Lispsm;
+    const ShadowPlan off = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    s.stabilize = StabilizeMode::Snap;
+    const ShadowPlan on = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    for (size_t i = 0; i < on.splits.size(); ++i) {
+        if (!on.splits[i].warped()) continue;
+        EXPECT_EQ(on.splits[i].lightViewProj, off.splits[i].lightViewProj) << i;
+    }
 }

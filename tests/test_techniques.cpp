@@ -2,6 +2,7 @@
 // filter, split and warp control has the effect it promises.
 #include "render_test_util.h"
 
+#include "geometry/analysis/stability_metrics.h"
 #include "geometry/scene/builtin_scenes.h"
 #include "renderer/context.h"
 #include "renderer/inspection.h"
@@ -255,4 +256,95 @@ TEST(Techniques, SplitBoundariesDoNotDisturbM) {
     }
     ASSERT_GT(boundary, 200) << "the split boundary is not in view";
     EXPECT_LE(disturbed, boundary / 50) << disturbed << " of " << boundary << " boundary pixels";
+}
+
+namespace {
+
+/// Texels of `b` that differ from `a` shifted by (dx, dy) (b[x, y] against a[x + dx, y + dy]) over
+/// their overlap, ignoring the outer `border` texels; and how many were compared.
+std::pair<size_t, size_t> mapDifference(const std::vector<float>& a, const std::vector<float>& b, int res, int dx,
+                                        int dy, int border) {
+    size_t differ = 0, compared = 0;
+    for (int y = border; y < res - border; ++y)
+        for (int x = border; x < res - border; ++x) {
+            const int ax = x + dx, ay = y + dy;
+            if (ax < border || ay < border || ax >= res - border || ay >= res - border) continue;
+            ++compared;
+            differ += a[size_t(ay) * size_t(res) + size_t(ax)] != b[size_t(y) * size_t(res) + size_t(x)];
+        }
+    return {differ, compared};
+}
+
+} // namespace
+
+// stabilize.mode = snap, rendered: a camera moved by less than a texel gives a uniform map whose raw
+// depth equals the previous frame's up to a whole-texel shift (readShadowMap, what `render --views
+// shadow_map` writes); without snap no whole-texel shift matches it.
+TEST(Techniques, SnappedMapsMatchAcrossASubTexelCameraMove) {
+    Bench& b = planeBench();
+    const Camera original = b.scene.camera;
+    ShadowSettings s = small(512);
+    const Viewport vp{160, 120};
+    const auto maps = [&](StabilizeMode mode) {
+        s.stabilize = mode;
+        std::array<std::vector<float>, 2> out;
+        for (int frame = 0; frame < 2; ++frame) {
+            b.scene.camera = original;
+            if (frame == 1) {
+                b.scene.camera.eye += glm::vec3(0.031f, 0.f, -0.017f);
+                b.scene.camera.target += glm::vec3(0.031f, 0.f, -0.017f);
+            }
+            (void)b.render(s, vp);
+            out[size_t(frame)] = b.r->readShadowMap(0, s.resolution);
+        }
+        b.scene.camera = original;
+        return out;
+    };
+    // The best whole-texel shift within ±3 texels: fewest differing texels.
+    const auto bestShift = [](const std::array<std::vector<float>, 2>& m, int res) {
+        size_t best = SIZE_MAX, compared = 0;
+        for (int dy = -3; dy <= 3; ++dy)
+            for (int dx = -3; dx <= 3; ++dx) {
+                const auto [differ, n] = mapDifference(m[0], m[1], res, dx, dy, 4);
+                if (differ < best) best = differ, compared = n;
+            }
+        return std::pair{best, compared};
+    };
+    const auto snapped = maps(StabilizeMode::Snap);
+    ASSERT_EQ(snapped[0].size(), size_t(512 * 512));
+    const auto [snapDiffer, snapCompared] = bestShift(snapped, 512);
+    EXPECT_GT(snapCompared, size_t(200000));
+    EXPECT_EQ(snapDiffer, 0u) << "of " << snapCompared;
+    const auto loose = maps(StabilizeMode::Off);
+    const auto [looseDiffer, looseCompared] = bestShift(loose, 512);
+    EXPECT_GT(looseDiffer, looseCompared / 100) << "unsnapped maps slide by fractions of a texel";
+    EXPECT_EQ(renderer::takeGlErrors(), "");
+}
+
+// splits.blend: in the band before a split's far end the shadow (and m) fades into the next split's,
+// so the m jump at the boundary — the seam measure — falls; the shadow factor stays in [0, 1] and the
+// band's receivers still see the poles' shadows.
+TEST(Techniques, BlendBandsLowerTheSeam) {
+    Bench& b = planeBench();
+    ShadowSettings s = small(512);
+    s.splits.count = 3;
+    const Viewport vp{320, 240};
+    const auto seam = [&](double blend) {
+        s.splits.blend = blend;
+        const ShadowPlan plan = b.render(s, vp);
+        if (blend > 0) {
+            EXPECT_LT(plan.splits[0].blendStart, plan.splits[0].far);
+            EXPECT_EQ(plan.splits[2].blendStart, plan.splits[2].far) << "the last split has no band";
+        }
+        const auto in = renderer::inspect(*b.r, plan, nullptr);
+        for (float v : in.shadow) EXPECT_TRUE(v >= 0.f && v <= 1.f);
+        return geometry::analysis::seamStats(in.m, in.aux, in.receiver, in.positions, in.normals, plan.eye, in.width,
+                                             in.height);
+    };
+    const auto hard = seam(0.0), soft = seam(0.2);
+    ASSERT_GT(hard.pairs, 50u);
+    ASSERT_GT(soft.pairs, 50u);
+    EXPECT_GT(hard.median, 1.2) << "a hard seam";
+    EXPECT_LT(soft.median, hard.median * 0.9) << "hard " << hard.median << ", blended " << soft.median;
+    EXPECT_EQ(renderer::takeGlErrors(), "");
 }

@@ -23,7 +23,7 @@ const std::vector<std::string>& controlGroups() {
 }
 
 std::string settingGroup(std::string_view key) {
-    if (key.starts_with("warp.") || key.starts_with("shadow_map.")) return "Warp";
+    if (key.starts_with("warp.") || key.starts_with("shadow_map.") || key.starts_with("stabilize.")) return "Warp";
     if (key.starts_with("splits.")) return "Partitions";
     if (key.starts_with("bias.")) return "Bias";
     if (key.starts_with("filter.")) return "Filtering";

@@ -75,7 +75,7 @@ bool settingMatters(const ShadowSettings& s, std::string_view key) noexcept {
     if (key == "warp.falloff") return s.warp.method == WarpMethod::Glispsm;
     if (key == "warp.n_prime") return s.warp.method == WarpMethod::Manual;
     if (key == "warp.visible_far") return s.warp.method == WarpMethod::Lispsm;
-    if (key == "splits.scheme" || key == "splits.resolution_falloff") return split;
+    if (key == "splits.scheme" || key == "splits.resolution_falloff" || key == "splits.blend") return split;
     if (key == "splits.lambda") return split && s.splits.scheme == SplitScheme::Practical;
     if (key == "splits.ratio") return split && s.splits.scheme == SplitScheme::Pssm;
     if (key == "splits.alpha") return split && s.splits.scheme == SplitScheme::Adaptive;

@@ -154,6 +154,11 @@ const std::vector<SettingInfo>& settingsDeclaration() {
             "iteration",
             Kind::Float, 0, 10, [](ShadowSettings & s) -> auto& { return s.filter.eyeBlurFalloff; }, true),
         choice(
+            "stabilize.mode",
+            "Stabilization: off, or snap (unwarped maps fitted to their split's bounding sphere, moved in whole "
+            "texels: edges hold still while the camera moves, at the cost of a larger map footprint)",
+            {"off", "snap"}, [](ShadowSettings & s) -> auto& { return s.stabilize; }),
+        choice(
             "warp.method",
             "Warp: uniform (none), psm (n' = n / sin(gamma)), lispsm (Wimmer), glispsm (Barroso eqs 13-18), gmnpr "
             "(Zhang eq 8), "
@@ -195,6 +200,11 @@ const std::vector<SettingInfo>& settingsDeclaration() {
         number(
             "splits.alpha", "adaptive: f_i/n_i at gamma = 0 (Barroso: <= 4 without PCF, <= 2 with PCF)", Kind::Float, 1,
             1000, [](ShadowSettings & s) -> auto& { return s.splits.alpha; }, true),
+        number(
+            "splits.blend",
+            "Blend band: this fraction of each split's depth range before its far end fades into the next "
+            "split's shadow (0 = a hard seam)",
+            Kind::Float, 0, 0.3, [](ShadowSettings & s) -> auto& { return s.splits.blend; }),
         number(
             "splits.resolution_falloff", "Halve the shadow-map resolution for each further split", Kind::Bool, 0, 1,
             [](ShadowSettings & s) -> auto& { return s.splits.resolutionFalloff; }),

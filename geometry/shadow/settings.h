@@ -40,8 +40,13 @@ struct FilterSettings {
     float eyeBlurFalloff = 0.05f; // filter.eye_blur.falloff: how fast the blur shrinks with view depth
 };
 
+/// stabilize.mode: off, or snap (unwarped maps fitted to their split's bounding sphere and moved in
+/// whole texels, so a moving camera does not make shadow edges shimmer).
+enum class StabilizeMode { Off, Snap };
+
 struct ShadowSettings {
     int resolution = 2048; // shadow_map.resolution
+    StabilizeMode stabilize = StabilizeMode::Off;
     BiasSettings bias;
     FilterSettings filter;
     WarpParams warp{WarpMethod::Uniform};

@@ -168,6 +168,43 @@ SplitFrame frameForSplit(const std::vector<glm::vec3>& body, const dvec3& l, con
     return out;
 }
 
+/// A held-still frame for an unwarped split (stabilize.mode = snap): the light looks along l with
+/// an up vector that depends on l alone; the map's square covers the bounding sphere of the split's
+/// view frustum V_i (its size does not change as the camera turns: the sphere of a fixed frustum
+/// shape), with the radius rounded up to 1/64 of an octave so float noise cannot change it; its
+/// centre is snapped to whole texels in light space, so a camera translation moves the map's
+/// content by whole texels; depth spans S, which does not move with the camera.
+SplitFrame stableFrame(const std::array<glm::vec3, 8>& frustum, const dvec3& l, const dvec3& eye, const scene::Aabb& S,
+                       int resolution) {
+    SplitFrame out{};
+    out.lightView = glm::lookAt(dvec3(0.0), l, perpendicular(l));
+    dvec3 centre(0.0);
+    for (const auto& c : frustum) centre += dvec3(c);
+    centre /= double(frustum.size());
+    double r = 0.0;
+    for (const auto& c : frustum) r = std::max(r, glm::length(dvec3(c) - centre));
+    r = std::exp2(std::ceil(std::log2(std::max(r, 1e-9)) * 64.0) / 64.0);
+    const double texel = 2.0 * r / double(std::max(resolution, 1));
+    const dvec3 cL = dvec3(out.lightView * dvec4(centre, 1.0));
+    const double cx = std::round(cL.x / texel) * texel, cy = std::round(cL.y / texel) * texel;
+    Box depth; // depth grows away from the light (−z in L)
+    for (const auto& c : S.corners()) depth.add(dvec3(0.0, 0.0, -dvec3(out.lightView * dvec4(dvec3(c), 1.0)).z));
+    const double margin = std::max((depth.hi.z - depth.lo.z) * 1e-5, 1e-7);
+    const double zLo = depth.lo.z - margin, zHi = depth.hi.z + margin;
+    dmat4 proj(1.0); // L → [−1, 1]³: x, y by the snapped square (no margin: whole texels), z by S
+    proj[0][0] = 1.0 / r;
+    proj[3][0] = -cx / r;
+    proj[1][1] = 1.0 / r;
+    proj[3][1] = -cy / r;
+    proj[2][2] = -2.0 / (zHi - zLo); // flips z: L's +z points to the light
+    proj[3][2] = -(zHi + zLo) / (zHi - zLo);
+    out.lightProj = proj;
+    out.warpCentre = eye; // as every unwarped frame
+    out.nPrime = kUniform;
+    out.d = 2.0 * r;
+    return out;
+}
+
 } // namespace
 
 dvec3 warpDirection(WarpDirection mode, const dvec3& l, const dvec3& v, const dvec3& eye,
@@ -221,7 +258,15 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         split.far = float(c[i + 1]);
         split.resolution = splitResolution(settings.splits, settings.resolution, i);
         split.frustum = frustumCorners(camera, viewport.aspect(), split.near, split.far);
-        if (c[i + 1] > c[i]) split.body = focusBody(split.frustum, S, plan.l);
+        // splits.blend: the last `blend` of this split's depth range fades into the next split, so
+        // the next split's map must also cover that band: its focus starts the band's width early.
+        const double blend = settings.splits.blend;
+        const bool last = i + 2 >= int(c.size());
+        split.blendStart = float(last ? c[i + 1] : c[i + 1] - blend * (c[i + 1] - c[i]));
+        const double focusNear = i > 0 ? std::max(camera.near, float(c[i] - blend * (c[i] - c[i - 1]))) : c[i];
+        const auto focusFrustum =
+            focusNear < c[i] ? frustumCorners(camera, viewport.aspect(), float(focusNear), split.far) : split.frustum;
+        if (c[i + 1] > c[i]) split.body = focusBody(focusFrustum, S, plan.l);
         if (split.empty()) {
             plan.splits.push_back(std::move(split));
             continue;
@@ -237,7 +282,9 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
             hi = std::max(hi, t);
         }
         const double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, c[i], c[i + 1], phi, gamma, hi - lo);
-        const SplitFrame frame = frameForSplit(split.body, l, vp, eye, S, nPrime);
+        SplitFrame frame = frameForSplit(split.body, l, vp, eye, S, nPrime);
+        if (settings.stabilize == StabilizeMode::Snap && frame.nPrime == kUniform)
+            frame = stableFrame(focusFrustum, l, eye, S, split.resolution);
         const dmat4 viewProj = frame.lightProj * frame.lightView;
         split.lightView = glm::mat4(frame.lightView);
         split.lightProj = glm::mat4(frame.lightProj);

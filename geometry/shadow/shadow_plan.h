@@ -34,6 +34,8 @@ struct SplitPlan {
     float linearDepthScale = 1.f;         // 1/(hi − lo): linear depth = (l·x − lo)·scale (Scherzer §4.2)
     float depthPerUnit = 0.f;             // map depth per scene unit along l, at B_i's centre
     float dualDepthCap = 0.f;             // bias.z_max in this map's depth units (dual depth's cap)
+    float blendStart = 0.f;               // view depth where this split's shadow starts fading into the next
+                                          // split's (splits.blend); = far: no band
     glm::vec2 lookupShift{0.f};           // texels the eye pass shifts its lookups by: 0, except where a
                                           // test plants a misplaced map
     [[nodiscard]] bool empty() const noexcept { return body.empty(); }

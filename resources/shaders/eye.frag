@@ -79,28 +79,31 @@ float chebyshev(vec2 uv, float z, int split) {
     return clamp((pMax - shadow.bleedReduction) / (1.0 - shadow.bleedReduction), 0.0, 1.0);
 }
 
-void main() {
-    vec3 n = normalize(vNormal);
-    if (!gl_FrontFacing) n = -n; // CAD surfaces are seen from both sides
-    float ndotl = max(dot(n, -shadow.lightDir), 0.0);
-    float viewDepth = dot(vWorldPos - shadow.eye, shadow.viewDir);
-    int split = splitOf(viewDepth);
+/// What one split's map says about a receiver: the shadow factor, where the lookup landed, and the
+/// texel-space derivatives behind the receiver plane and J.
+struct Lookup {
+    float s;
+    vec2 texel;
+    float depth;
+    vec2 dTdx, dTdy;
+    float det;
+};
+
+/// Looks `receiver` up in split `split`'s map. The screen derivatives of the receiver's world position
+/// come from the caller, taken in uniform control flow; they go through this split's matrix, so a
+/// 2×2 block that straddles a split boundary does not mix two maps.
+Lookup lookUp(int split, vec3 receiver, vec3 dPdx, vec3 dPdy, float ndotl) {
     float res = float(shadow.arrayResolution) * shadow.splits[split].mapScale;
-
-    vec3 receiver = vWorldPos;
-    if (shadow.biasType == BIAS_CONSTANT) receiver -= shadow.lightDir * shadow.receiverOffset;
-    if (shadow.normalOffset > 0.0) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
     vec3 p = mapCoords(receiver, split);
-
-    // Texel-space derivatives (for the receiver plane, Barroso §2.2, and for J below) through this
-    // pixel's split matrix, from screen derivatives of the receiver's world position taken in
-    // uniform control flow: a 2×2 block that straddles a split boundary does not mix two maps.
-    vec3 dPdx = dFdx(receiver), dPdy = dFdy(receiver);
     vec3 px = mapCoords(receiver + dPdx, split), py = mapCoords(receiver + dPdy, split);
-    vec2 dTdx = (px.xy - p.xy) * res, dTdy = (py.xy - p.xy) * res;
+    Lookup L;
+    L.dTdx = (px.xy - p.xy) * res;
+    L.dTdy = (py.xy - p.xy) * res;
     float dzdx = px.z - p.z, dzdy = py.z - p.z;
-    float det = dTdx.x * dTdy.y - dTdx.y * dTdy.x;
-    vec2 dzdt = abs(det) > 1e-12 ? vec2(dzdx * dTdy.y - dzdy * dTdx.y, dzdy * dTdx.x - dzdx * dTdy.x) / det : vec2(0.0);
+    L.det = L.dTdx.x * L.dTdy.y - L.dTdx.y * L.dTdy.x;
+    // The receiver plane's depth gradient per texel (Barroso §2.2).
+    vec2 dzdt = abs(L.det) > 1e-12 ? vec2(dzdx * L.dTdy.y - dzdy * L.dTdx.y, dzdy * L.dTdx.x - dzdx * L.dTdy.x) / L.det
+                                   : vec2(0.0);
     if (shadow.tangentPlane == 0) dzdt = vec2(0.0);
 
     p.xy += vec2(shadow.splits[split].lookupShiftX, shadow.splits[split].lookupShiftY) / res; // 0 but in tests
@@ -131,16 +134,51 @@ void main() {
             s = chebyshev(uvArray, p.z, split);
         }
     }
+    L.s = s;
+    L.texel = texel;
+    L.depth = p.z;
+    return L;
+}
+
+/// m = 1/σ_min(J), screen pixels per texel along the worst direction (docs/design.md §4).
+float aliasingM(Lookup L) {
+    float a = dot(L.dTdx, L.dTdx) + dot(L.dTdy, L.dTdy);
+    float sigmaMin2 = 0.5 * (a - sqrt(max(a * a - 4.0 * L.det * L.det, 0.0)));
+    return 1.0 / sqrt(max(sigmaMin2, 1e-20));
+}
+
+void main() {
+    vec3 n = normalize(vNormal);
+    if (!gl_FrontFacing) n = -n; // CAD surfaces are seen from both sides
+    float ndotl = max(dot(n, -shadow.lightDir), 0.0);
+    float viewDepth = dot(vWorldPos - shadow.eye, shadow.viewDir);
+    int split = splitOf(viewDepth);
+    float res = float(shadow.arrayResolution) * shadow.splits[split].mapScale;
+
+    vec3 receiver = vWorldPos;
+    if (shadow.biasType == BIAS_CONSTANT) receiver -= shadow.lightDir * shadow.receiverOffset;
+    if (shadow.normalOffset > 0.0) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
+    vec3 dPdx = dFdx(receiver), dPdy = dFdy(receiver); // in uniform control flow
+
+    Lookup L = lookUp(split, receiver, dPdx, dPdy, ndotl);
+    float s = L.s;
+    float m = aliasingM(L);
+    // splits.blend: in the band before this split's far end, fade into the next split's shadow (and
+    // its m, the texel density the blend delivers); the next split's map covers the band (the plan
+    // focuses it that much earlier).
+    float blendStart = shadow.splits[split].blendStart, splitFar = shadow.splits[split].splitFar;
+    if (split < shadow.splitCount - 1 && viewDepth > blendStart && splitFar > blendStart) {
+        float t = clamp((viewDepth - blendStart) / (splitFar - blendStart), 0.0, 1.0);
+        Lookup next = lookUp(split + 1, receiver, dPdx, dPdy, ndotl);
+        s = mix(s, next.s, t);
+        m = mix(m, aliasingM(next), t);
+    }
     if (ndotl <= 0.0) s = 0.0; // facing away from the light: in its own shadow
 
     oBase = vec4(uColor * kAmbient, max(viewDepth, 1e-6));
     oDirect = vec4(uColor * (1.0 - kAmbient) * ndotl, 1.0);
     oMask = vec4(s);
-    oAux = vec4(texel, float(split), p.z);
-    // docs/design.md §4: J = texels per pixel (screen derivatives of the map coordinates, taken above in
-    // uniform control flow); m = 1/σ_min(J), screen pixels per texel along the worst direction.
-    float a = dot(dTdx, dTdx) + dot(dTdy, dTdy);
-    float sigmaMin2 = 0.5 * (a - sqrt(max(a * a - 4.0 * det * det, 0.0)));
-    oPosition = vec4(vWorldPos, 1.0 / sqrt(max(sigmaMin2, 1e-20)));
+    oAux = vec4(L.texel, float(split), L.depth);
+    oPosition = vec4(vWorldPos, m);
     oNormal = vec4(n, ndotl);
 }
