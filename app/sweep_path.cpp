@@ -22,7 +22,8 @@ namespace {
 struct PathRow {
     int frame = 0;
     double t = 0, gammaDeg = 0, angleDeg = 0;
-    geometry::analysis::FlickerStats flicker;
+    geometry::analysis::FlickerStats flicker;      // screen space: the same pixel
+    geometry::analysis::FlickerStats worldFlicker; // world space: the same point (reprojected)
     geometry::analysis::SeamStats seam;
     double p95 = 0, falseLit = 0, falseShadow = 0, nPrime = 0;
     bool glError = false;
@@ -30,14 +31,16 @@ struct PathRow {
 
 std::string pathCsv(const std::vector<PathRow>& rows) {
     std::string out = "frame,t,gamma_deg,angle_deg,flicker,flicker_pixels,seam_median,seam_p95,seam_pairs,"
-                      "seam_raw_median,seam_baseline,p95,false_lit,false_shadow,n_prime,gl_errors\n";
+                      "seam_raw_median,seam_baseline,p95,false_lit,false_shadow,n_prime,gl_errors,flicker_world,"
+                      "flicker_world_pixels\n";
     const auto num = formatCsvNumber;
     for (const PathRow& r : rows)
         out += std::to_string(r.frame) + "," + num(r.t) + "," + num(r.gammaDeg) + "," + num(r.angleDeg) + "," +
                num(r.flicker.rate) + "," + std::to_string(r.flicker.stable) + "," + num(r.seam.median) + "," +
                num(r.seam.p95) + "," + std::to_string(r.seam.pairs) + "," + num(r.seam.rawMedian) + "," +
                num(r.seam.baselineMedian) + "," + num(r.p95) + "," + num(r.falseLit) + "," + num(r.falseShadow) + "," +
-               num(r.nPrime) + "," + (r.glError ? "1" : "0") + "\n";
+               num(r.nPrime) + "," + (r.glError ? "1" : "0") + "," + num(r.worldFlicker.rate) + "," +
+               std::to_string(r.worldFlicker.stable) + "\n";
     return out;
 }
 
@@ -62,7 +65,9 @@ std::string pathSvg(const std::vector<PathRow>& rows, const std::string& title) 
     };
     ui::charts::Chart flicker = chart("Flicker: stable-truth pixels that flip", {"fraction", false, 0.0, std::nullopt});
     flicker.series.push_back(series(
-        rows, "flicker", 0, [](const PathRow& r) { return r.flicker.rate; }, true));
+        rows, "flicker (screen)", 0, [](const PathRow& r) { return r.flicker.rate; }, true));
+    flicker.series.push_back(series(
+        rows, "flicker (world)", 1, [](const PathRow& r) { return r.worldFlicker.rate; }, true));
     ui::charts::Chart seam =
         chart("Seams: jump of m across split boundaries", {"median seam (1 = none)", false, 1.0, std::nullopt});
     seam.series.push_back(series(rows, "across split boundaries", 1, [](const PathRow& r) {
@@ -137,10 +142,13 @@ int runSweepPath(const SweepPathOptions& o) {
             r.angleDeg = f.plan.lightViewAngleDeg;
             r.seam = geometry::analysis::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals,
                                                    camera.eye, w, h);
-            if (i > 0)
+            if (i > 0) {
                 r.flicker =
                     geometry::analysis::flickerStats(previous.in.shadow, *previous.in.occluded, previous.in.receiver,
                                                      f.in.shadow, *f.in.occluded, f.in.receiver);
+                r.worldFlicker = geometry::analysis::worldFlickerStats(
+                    previous.in, previous.plan.eyeProj * previous.plan.eyeView, f.in);
+            }
             r.p95 = f.in.aliasing.p95;
             r.falseLit = f.in.truth->falseLit;
             r.falseShadow = f.in.truth->falseShadow;
@@ -173,6 +181,9 @@ int runSweepPath(const SweepPathOptions& o) {
     std::cout << "summary: frames " << o.frames << ", flicker mean "
               << formatCsvNumber(mean(
                      rows, [](const PathRow& r) { return r.flicker.rate; }, afterFirst))
+              << ", world-space flicker mean "
+              << formatCsvNumber(mean(
+                     rows, [](const PathRow& r) { return r.worldFlicker.rate; }, afterFirst))
               << ", seam median mean "
               << formatCsvNumber(mean(
                      rows, [](const PathRow& r) { return r.seam.median; }, withSeams))

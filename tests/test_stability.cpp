@@ -9,6 +9,7 @@
 
 #include "random_util.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -303,4 +304,40 @@ TEST(CasterCoverage, AMapThatMissesCastersIsCaught) {
     EXPECT_THROW((void)casterCoverage(g.plan, g.positions, g.aux, std::vector<uint8_t>{1}), std::invalid_argument);
     EXPECT_THROW((void)casterCoverage(g.plan, g.positions, g.aux, receiver, occluded, std::vector<float>{}),
                  std::invalid_argument);
+}
+
+// World-space flicker follows the point: a camera that pans by exactly one pixel sees the same
+// states one pixel over, which screen-space flicker counts along every edge and the world-space
+// measure does not; a state that changes at a point (inside a region) counts.
+TEST(Flicker, WorldSpaceFollowsThePointNotThePixel) {
+    constexpr int W = 40, H = 30;
+    const glm::mat4 proj = glm::ortho(0.f, float(W), 0.f, float(H), -10.f, 10.f);
+    // An orthographic eye over the plane z = 0 (pixel (x, y) sees the world point (x + 0.5, H − y − 0.5)),
+    // w = 1 everywhere: the view depth test compares the same values.
+    const auto frame = [&](float shiftX, float edgeX) {
+        Inspection in;
+        in.width = W;
+        in.height = H;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const glm::vec3 p(float(x) + 0.5f + shiftX, float(H - y) - 0.5f, 0.f);
+                in.positions.push_back(p);
+                in.shadow.push_back(p.x < edgeX ? 0.f : 1.f);
+                in.receiver.push_back(1);
+            }
+        return in;
+    };
+    const Inspection before = frame(0.f, 20.f), after = frame(1.f, 20.f);
+    const FlickerStats screen = flickerStats(before.shadow, std::vector<uint8_t>(W * H, 0), before.receiver,
+                                             after.shadow, std::vector<uint8_t>(W * H, 0), after.receiver);
+    EXPECT_GT(screen.flips, 0u) << "the edge slides one pixel across the screen";
+    const FlickerStats world = worldFlickerStats(before, proj, after);
+    EXPECT_EQ(world.flips, 0u) << "every point keeps its state";
+    EXPECT_GT(world.stable, size_t(W * H / 2));
+    // The edge itself moving by 5 world units flips the points it passes, inside both regions.
+    const FlickerStats moved = worldFlickerStats(before, proj, frame(1.f, 25.f));
+    EXPECT_GE(moved.flips, size_t(3 * H));
+    Inspection bad = frame(0.f, 20.f);
+    bad.shadow.pop_back();
+    EXPECT_THROW((void)worldFlickerStats(bad, proj, after), std::invalid_argument);
 }

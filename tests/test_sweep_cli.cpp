@@ -208,7 +208,8 @@ TEST(SweepGamma, BadInputIsAOneLineError) {
     }
     const CommandResult noPath = run("sweep path --backend osmesa --scene " + kScene + " --path nosuch" + out);
     EXPECT_NE(noPath.exitCode, 0);
-    EXPECT_NE(noPath.output.find("available: grazing_walk, sun_arc"), std::string::npos) << noPath.output;
+    EXPECT_NE(noPath.output.find("available: deck_dolly, deck_pan, grazing_walk, sun_arc"), std::string::npos)
+        << noPath.output;
     const CommandResult frames =
         run("sweep path --backend osmesa --scene " + kScene + " --path sun_arc --frames 0" + out);
     EXPECT_NE(frames.exitCode, 0);

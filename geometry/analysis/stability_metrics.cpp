@@ -102,4 +102,50 @@ SeamStats seamStats(std::span<const float> m, std::span<const glm::vec4> aux, st
     return out;
 }
 
+FlickerStats worldFlickerStats(const Inspection& before, const glm::mat4& beforeViewProj, const Inspection& after) {
+    const auto check = [](const Inspection& in, const char* which) {
+        const size_t n = size_t(std::max(in.width, 0)) * size_t(std::max(in.height, 0));
+        if (in.shadow.size() != n || in.receiver.size() != n || in.positions.size() != n ||
+            (in.occluded && in.occluded->size() != n))
+            throw std::invalid_argument(std::string("worldFlickerStats: the ") + which +
+                                        " frame's fields do not match its size");
+    };
+    check(before, "previous");
+    check(after, "current");
+    const bool truth = before.occluded && after.occluded;
+    const glm::dmat4 vp(beforeViewProj);
+    FlickerStats out;
+    for (size_t i = 0; i < after.shadow.size(); ++i) {
+        if (!after.receiver[i] || !std::isfinite(after.shadow[i])) continue;
+        const glm::dvec4 c = vp * glm::dvec4(glm::dvec3(after.positions[i]), 1.0);
+        if (!(c.w > 0.0)) continue;
+        const double x = (c.x / c.w * 0.5 + 0.5) * before.width, y = (0.5 - c.y / c.w * 0.5) * before.height;
+        if (!(x >= 0.0 && y >= 0.0 && x < before.width && y < before.height)) continue;
+        const int jx = int(x), jy = int(y);
+        const size_t j = size_t(jy) * size_t(before.width) + size_t(jx);
+        if (!before.receiver[j] || !std::isfinite(before.shadow[j])) continue;
+        // The previous frame saw the same surface there: its view depth agrees (c.w is view depth).
+        const double depth = (vp * glm::dvec4(glm::dvec3(before.positions[j]), 1.0)).w;
+        if (!(std::abs(depth - c.w) <= 0.02 * c.w)) continue;
+        if (truth && (*before.occluded)[j] != (*after.occluded)[i]) continue;
+        // The point lay inside a rendered region of the previous frame, not on its edge: the nearest
+        // pixel is up to half a pixel from the point, so a state change across a rendered edge that
+        // held still would be sampling noise, not shimmer.
+        const bool lit = before.shadow[j] >= 0.5f;
+        bool inside = true;
+        for (int dy = -1; dy <= 1 && inside; ++dy)
+            for (int dx = -1; dx <= 1 && inside; ++dx) {
+                const int nx = jx + dx, ny = jy + dy;
+                if (nx < 0 || ny < 0 || nx >= before.width || ny >= before.height) continue;
+                const size_t k = size_t(ny) * size_t(before.width) + size_t(nx);
+                if (before.receiver[k] && std::isfinite(before.shadow[k])) inside = (before.shadow[k] >= 0.5f) == lit;
+            }
+        if (!inside) continue;
+        ++out.stable;
+        out.flips += lit != (after.shadow[i] >= 0.5f);
+    }
+    out.rate = out.stable ? double(out.flips) / double(out.stable) : 0.0;
+    return out;
+}
+
 } // namespace geometry::analysis

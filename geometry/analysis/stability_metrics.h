@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <span>
 
+#include "geometry/analysis/inspection.h"
 #include "geometry/analysis/metrics.h"
 
 namespace geometry::analysis {
@@ -28,6 +29,20 @@ struct FlickerStats {
 [[nodiscard]] FlickerStats flickerStats(std::span<const float> sBefore, std::span<const uint8_t> occludedBefore,
                                         std::span<const uint8_t> receiverBefore, std::span<const float> sAfter,
                                         std::span<const uint8_t> occludedAfter, std::span<const uint8_t> receiverAfter);
+
+/// World-space flicker (shimmer): the same world point, followed from frame to frame. Each receiver
+/// pixel of `after` is reprojected through `beforeViewProj` (the previous frame's eye) to the nearest
+/// pixel of `before`; it counts when that pixel is a receiver whose view depth agrees within 2 %
+/// (the previous frame saw the same surface), whose truth equals this pixel's, and whose 3 × 3
+/// neighbourhood shares its rendered state (s ≥ 0.5): the point lay inside a rendered region, so a
+/// flip is the state changing there, not the half-pixel gap between the point and the nearest pixel
+/// straddling an edge that held still. It flips when the rendered states differ. (Edges that move
+/// by less than a pixel are not counted: shimmer of maps finer than the screen.) Unlike flickerStats, a camera move
+/// does not count world-fixed stair-steps sliding across pixels, only states that change at a point. Without truth in
+/// both frames the truth condition is dropped. Throws std::invalid_argument when a frame's fields do not match its
+/// size.
+[[nodiscard]] FlickerStats worldFlickerStats(const Inspection& before, const glm::mat4& beforeViewProj,
+                                             const Inspection& after);
 
 /// Seams (docs/design.md §4: "ratio of m on the two sides of each split boundary"). Walks every row and
 /// column through four consecutive pixels c, a | b, e (a and b neighbours): a split boundary
