@@ -3,8 +3,11 @@
 #include "app/resources.h"
 
 #include "geometry/analysis/ground_truth.h"
+#include "geometry/analysis/stability_metrics.h"
+#include "geometry/analysis/statistics.h"
 #include "geometry/io/preset.h"
 #include "geometry/io/scene_file.h"
+#include "geometry/scene/path_interpolation.h"
 #include "geometry/shadow/shadow_plan.h"
 #include "renderer/context.h"
 #include "renderer/measure.h"
@@ -20,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -106,6 +110,15 @@ void addBenchCommand(CLI::App& cmd, BenchOptions& o) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     addTruthOptions(cmd, o.truth, "Also measure misclassification against ray-traced truth (Embree)");
+    cmd.add_option("--path", o.path,
+                   "Also walk this camera/light path of the scene file in --frames frames per configuration: "
+                   "flicker_mean, flicker_p95 (world space), flicker_screen and seam columns");
+    cmd.add_option("--x", o.x, "Trade-off chart x axis")
+        ->check(CLI::IsMember(ui::charts::tradeoffXNames()))
+        ->capture_default_str();
+    cmd.add_option("--y", o.y, "Trade-off chart y axis (interior, edge, misclassified need --truth; flicker --path)")
+        ->check(CLI::IsMember(ui::charts::tradeoffYNames()))
+        ->capture_default_str();
 }
 
 namespace {
@@ -117,25 +130,86 @@ struct Row {
     bool truth = false;
 };
 
-ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows,
-                             bool gpuTimes) {
-    // One point per configuration: mean frame time and geometric-mean p95 over the views.
-    std::vector<ui::charts::TradeoffPoint> points;
-    for (const auto& cfg : configs) {
-        double t = 0, logE = 0;
-        int n = 0;
-        for (const Row& r : rows)
-            if (r.config == cfg.label && std::isfinite(r.p95) && r.p95 > 0) {
-                t += gpuTimes ? r.gpuMs : r.cpuMs;
-                logE += std::log(r.p95);
-                ++n;
-            }
-        points.push_back({cfg.label, cfg.preset, n ? t / n : NAN, n ? std::exp(logE / n) : NAN});
+/// A configuration walked along --path: world-space flicker per frame pair, screen-space flicker,
+/// the seam per frame.
+struct PathFigures {
+    double flickerMean = NAN, flickerP95 = NAN, flickerScreen = NAN, seam = NAN;
+};
+
+PathFigures walkPath(renderer::Renderer& r, const geometry::shadow::ShadowSettings& settings,
+                     geometry::scene::Scene& scene, const geometry::io::ScenePath& path, int frames,
+                     geometry::shadow::Viewport size, const geometry::analysis::GroundTruth& truth, int truthSamples) {
+    std::vector<double> world, screen, seams;
+    std::optional<geometry::analysis::Inspection> previous;
+    glm::mat4 previousViewProj(1.f);
+    const geometry::scene::Camera start = scene.camera;
+    const glm::vec3 sun = scene.light.direction;
+    for (int i = 0; i < frames; ++i) {
+        const double t = geometry::scene::pathParameter(i, frames);
+        const geometry::scene::Camera camera =
+            path.cameras.empty() ? start : geometry::scene::cameraAlongPath(path.cameras, t);
+        const geometry::scene::DirectionalLight light{
+            path.lights.empty() ? sun : geometry::scene::lightAlongPath(path.lights, t)};
+        renderer::Measurement m =
+            renderer::measure(r, settings, scene.bounds(), camera, light, size,
+                              {.warmup = 0, .frames = 1, .timed = false, .truthSamples = truthSamples}, &truth);
+        geometry::analysis::Inspection& in = m.inspection;
+        const auto seam = geometry::analysis::seamStats(in.m, in.aux, in.receiver, in.positions, in.normals, camera.eye,
+                                                        in.width, in.height);
+        if (seam.pairs > 0) seams.push_back(seam.median);
+        if (previous) {
+            world.push_back(geometry::analysis::worldFlickerStats(*previous, previousViewProj, in).rate);
+            screen.push_back(geometry::analysis::flickerStats(previous->shadow, *previous->occluded, previous->receiver,
+                                                              in.shadow, *in.occluded, in.receiver)
+                                 .rate);
+        }
+        previousViewProj = m.plan.eyeProj * m.plan.eyeView;
+        previous = std::move(in);
     }
-    ui::charts::Chart c =
-        ui::charts::tradeoffChart(points, gpuTimes ? "frame time, GPU median (ms)" : "frame time, CPU median (ms)");
-    if (rows.size() > configs.size()) c.title += ", mean over views";
-    return c;
+    PathFigures f;
+    if (!world.empty()) {
+        double sum = 0, sumScreen = 0;
+        for (size_t k = 0; k < world.size(); ++k) sum += world[k], sumScreen += screen[k];
+        f.flickerMean = sum / double(world.size());
+        f.flickerScreen = sumScreen / double(screen.size());
+        f.flickerP95 = geometry::analysis::percentile(std::span(world), 95);
+    }
+    if (!seams.empty()) f.seam = geometry::analysis::median(std::span(seams));
+    return f;
+}
+
+ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows,
+                             const std::vector<PathFigures>& paths, ui::charts::TradeoffX xAxis,
+                             ui::charts::TradeoffY yAxis) {
+    // One point per configuration: the mean cost over the views; the geometric-mean p95 or the
+    // mean fraction over the views; the path's mean flicker.
+    using ui::charts::TradeoffX;
+    using ui::charts::TradeoffY;
+    std::vector<ui::charts::TradeoffPoint> points;
+    for (size_t c = 0; c < configs.size(); ++c) {
+        const auto& cfg = configs[c];
+        double x = 0, y = 0;
+        int n = 0;
+        for (const Row& r : rows) {
+            if (r.config != cfg.label) continue;
+            const double cost = xAxis == TradeoffX::GpuMs ? r.gpuMs : xAxis == TradeoffX::CpuMs ? r.cpuMs : r.memoryMiB;
+            const auto& k = r.classes;
+            const double figure = yAxis == TradeoffY::P95        ? std::log(r.p95)
+                                  : yAxis == TradeoffY::Interior ? k.interiorFalseShadow + k.interiorFalseLit
+                                  : yAxis == TradeoffY::Edge     ? k.edgeError
+                                                                 : r.falseLit + r.falseShadow;
+            if (!std::isfinite(cost) || !std::isfinite(figure)) continue;
+            x += cost;
+            y += figure;
+            ++n;
+        }
+        double value = n ? (yAxis == TradeoffY::P95 ? std::exp(y / n) : y / n) : NAN;
+        if (yAxis == TradeoffY::Flicker) value = c < paths.size() ? paths[c].flickerMean : NAN;
+        points.push_back({cfg.label, cfg.preset, n ? x / n : NAN, value});
+    }
+    ui::charts::Chart chart = ui::charts::tradeoffChart(points, xAxis, yAxis);
+    if (rows.size() > configs.size()) chart.title += ", mean over views";
+    return chart;
 }
 
 } // namespace
@@ -152,13 +226,26 @@ int runBench(const BenchOptions& o) {
         views.emplace_back(*it);
     }
     if (views.empty()) views.emplace_back("default", geometry::io::CanonicalView{file.scene.camera, file.scene.light});
+    const ui::charts::TradeoffX xAxis = ui::charts::parseTradeoffX(o.x).value_or(ui::charts::TradeoffX::GpuMs);
+    const ui::charts::TradeoffY yAxis = ui::charts::parseTradeoffY(o.y).value_or(ui::charts::TradeoffY::P95);
+    const bool needsTruth = yAxis == ui::charts::TradeoffY::Interior || yAxis == ui::charts::TradeoffY::Edge ||
+                            yAxis == ui::charts::TradeoffY::Misclassified;
+    if (needsTruth && !o.truth.enabled) throw std::invalid_argument("--y " + o.y + " needs --truth");
+    if (yAxis == ui::charts::TradeoffY::Flicker && o.path.empty())
+        throw std::invalid_argument("--y flicker needs --path");
+    std::optional<geometry::io::ScenePath> path;
+    if (!o.path.empty()) {
+        const auto it = file.paths.find(o.path);
+        if (it == file.paths.end()) throw std::invalid_argument("--path " + o.path + ": the scene has no such path");
+        path = it->second;
+    }
     std::filesystem::create_directories(o.common.out);
 
     auto context = renderer::createHeadlessContext(renderer::parseBackend(o.common.backend));
     geometry::scene::Scene& scene = file.scene;
     renderer::Renderer r(scene);
     std::unique_ptr<geometry::analysis::GroundTruth> truth;
-    if (o.truth.enabled) truth = std::make_unique<geometry::analysis::GroundTruth>(scene);
+    if (o.truth.enabled || path) truth = std::make_unique<geometry::analysis::GroundTruth>(scene);
     std::cerr << "bench: " << configs.size() << " configuration(s) × " << views.size() << " view(s), " << o.frames
               << " frames each on " << context->rendererString() << '\n';
 
@@ -169,9 +256,10 @@ int runBench(const BenchOptions& o) {
         for (const auto& [viewName, view] : views) {
             scene.camera = view.camera;
             scene.light = view.light;
-            const renderer::Measurement m = renderer::measure(
-                r, cfg.settings, scene.bounds(), scene.camera, scene.light, o.common.size,
-                {.warmup = o.warmup, .frames = o.frames, .truthSamples = o.truth.samples}, truth.get());
+            const renderer::Measurement m =
+                renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, scene.light, o.common.size,
+                                  {.warmup = o.warmup, .frames = o.frames, .truthSamples = o.truth.samples},
+                                  o.truth.enabled ? truth.get() : nullptr);
             if (m.gpuFrames == 0) gpuTimes = false;
             const geometry::analysis::Inspection& in = m.inspection;
             Row row;
@@ -193,6 +281,16 @@ int runBench(const BenchOptions& o) {
             std::cerr << "[" << rows.size() << "/" << total << "] " << cfg.label << " @ " << viewName << ": GPU "
                       << row.gpuMs << " ms, CPU " << row.cpuMs << " ms, p95 m " << row.p95 << '\n';
         }
+    std::vector<PathFigures> paths(configs.size());
+    if (path)
+        for (size_t c = 0; c < configs.size(); ++c) {
+            scene.camera = views.front().second.camera;
+            scene.light = views.front().second.light;
+            paths[c] = walkPath(r, configs[c].settings, scene, *path, o.frames, o.common.size, *truth, o.truth.samples);
+            std::cerr << "[path " << o.path << ", " << (c + 1) << "/" << configs.size() << "] " << configs[c].label
+                      << ": world-space flicker " << paths[c].flickerMean << ", screen " << paths[c].flickerScreen
+                      << ", seam " << paths[c].seam << '\n';
+        }
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
 
@@ -201,7 +299,7 @@ int runBench(const BenchOptions& o) {
         std::ofstream csv(dir / "results.csv");
         csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
                "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
-               "edge_displacement_texels,ambiguous\n";
+               "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam\n";
         for (const Row& w : rows) {
             csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
                 << w.cpuMs << ',' << w.p95 << ',';
@@ -214,11 +312,18 @@ int runBench(const BenchOptions& o) {
                 csv << c.interiorFalseShadow << ',' << c.interiorFalseLit << ',' << c.edgeError << ','
                     << c.edgeDisplacementTexelsMedian << ',' << c.ambiguous;
             else csv << ",,,,";
+            const auto cfg = std::find_if(configs.begin(), configs.end(),
+                                          [&](const BenchConfiguration& b) { return b.label == w.config; });
+            const PathFigures& f = paths[size_t(cfg - configs.begin())];
+            if (path) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
+            else csv << ",,,,";
             csv << '\n';
         }
         if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
     }
-    const ui::charts::Chart chart = benchChart(configs, rows, gpuTimes);
+    const ui::charts::TradeoffX x =
+        xAxis == ui::charts::TradeoffX::GpuMs && !gpuTimes ? ui::charts::TradeoffX::CpuMs : xAxis;
+    const ui::charts::Chart chart = benchChart(configs, rows, paths, x, yAxis);
     ui::charts::writeSvg(dir / "tradeoff.svg", chart, 1000, 620);
     geometry::analysis::writePng((dir / "tradeoff.png").string(), ui::renderChartImage(chart, 1000, 620));
     for (const char* f : {"results.csv", "tradeoff.svg", "tradeoff.png"}) std::cout << (dir / f).string() << '\n';

@@ -22,6 +22,9 @@ struct BenchOptions {
     int frames = 10;
     int warmup = 2;
     TruthOptions truth;
+    std::string path;         // a camera/light path of the scene file, walked in `frames` frames
+    std::string x = "gpu_ms"; // the trade-off chart's axes (ui/charts/tradeoff_chart.h)
+    std::string y = "p95";
 
     [[nodiscard]] static RenderOptions benchDefaults() {
         RenderOptions o;

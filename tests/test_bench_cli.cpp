@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -144,4 +145,42 @@ TEST(Bench, SharesTheRenderOptionsDeclaration) {
     ASSERT_EQ(rows.size(), 3u);
     EXPECT_EQ(rows[1][0], "ssm");
     EXPECT_EQ(rows[2][0], "lispsm");
+}
+
+// bench --path: each configuration also walks a path of the scene file; results.csv gains world-
+// and screen-space flicker and the seam, and the trade-off chart takes its axes from --x / --y.
+// A snapped uniform map does not shimmer along deck_dolly; the unsnapped one does.
+TEST(Bench, PathFlickerColumnsAndChartAxes) {
+    const std::string scene = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/platform.json";
+    const std::string preset = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/presets/ssm.json";
+    const auto dir = testutil::freshDir("bench_path");
+    const auto r =
+        runShadowscope("bench --backend osmesa --scene " + scene + " --view deck --size 160x120 --preset " + preset +
+                       " --set shadow_map.resolution=512 --sweep stabilize.mode=off,snap --path deck_dolly "
+                       "--frames 6 --warmup 1 --x memory_mib --y flicker --out " +
+                       dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto rows = readCsv(dir / "results.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    const auto column = [&](const std::string& name) {
+        const auto it = std::find(rows[0].begin(), rows[0].end(), name);
+        EXPECT_NE(it, rows[0].end()) << name;
+        return size_t(it - rows[0].begin());
+    };
+    const size_t mean = column("flicker_mean"), p95 = column("flicker_p95"), screen = column("flicker_screen");
+    (void)column("seam");
+    ASSERT_EQ(rows[1].size(), rows[0].size());
+    const double off = std::stod(rows[1][mean]), snap = std::stod(rows[2][mean]);
+    EXPECT_GT(off, 1e-3) << "unsnapped: " << rows[1][0];
+    EXPECT_LE(snap, off / 10) << rows[2][0];
+    EXPECT_GE(std::stod(rows[1][p95]), off);
+    EXPECT_GT(std::stod(rows[1][screen]), 0.0);
+    const std::string svg = slurp(dir / "tradeoff.svg");
+    EXPECT_NE(svg.find("world-space flicker"), std::string::npos);
+    EXPECT_NE(svg.find("shadow-map memory (MiB)"), std::string::npos);
+    for (const std::string bad : {"--y edge", "--y flicker", "--path nosuch", "--x speed"}) {
+        const auto b = runShadowscope("bench --backend osmesa --scene " + scene + " --view deck --size 32x32 " + bad +
+                                      " --frames 1 --warmup 1 --out " + testutil::freshDir("bench_bad").string());
+        EXPECT_EQ(b.exitCode, 2) << bad << ": " << b.output;
+    }
 }

@@ -225,11 +225,17 @@ TEST_F(HeadlessDashboardTest, ChartTabsDrawTheCurvesAndTheTradeoffSweepRuns) {
     ASSERT_GE(results.size(), 5u) << "4 presets + the current settings";
     double ssm = 0, paper = 0;
     for (const auto& p : results) {
-        EXPECT_TRUE(std::isfinite(p.frameMs) && p.frameMs > 0) << p.label;
-        if (p.preset == "ssm") ssm = p.p95;
-        if (p.preset == "paper") paper = p.p95;
+        EXPECT_TRUE(std::isfinite(p.x) && p.x > 0) << p.label;
+        if (p.preset == "ssm") ssm = p.y;
+        if (p.preset == "paper") paper = p.y;
     }
     EXPECT_GT(ssm, paper) << "the uniform map aliases more than the paper's setup";
+    // Other axes re-plot the same measurements: memory against edge error (truth is on by default).
+    d->dashboard().setTradeoffAxes(ui::charts::TradeoffX::MemoryMiB, ui::charts::TradeoffY::Edge);
+    for (const auto& p : d->dashboard().tradeoffResults()) {
+        EXPECT_GT(p.x, 0.0) << p.label;
+        EXPECT_TRUE(p.y >= 0.0 && p.y <= 1.0) << p.label << ": " << p.y;
+    }
 }
 
 } // namespace

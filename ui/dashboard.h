@@ -16,6 +16,7 @@
 #include "ui/charts/tradeoff_chart.h"
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -95,8 +96,13 @@ public:
     [[nodiscard]] bool loading() const noexcept { return loader_.busy(); }
     /// Selects a tab of the stats panel: 0 Stats, 1 n'(γ), 2 λ(θ), 3 m_z(z), 4 Trade-off.
     void showTab(int tab) noexcept { requestedTab_ = tab; }
-    /// The trade-off sweep's results so far (Charts panel).
-    [[nodiscard]] const std::vector<charts::TradeoffPoint>& tradeoffResults() const noexcept { return sweep_.results; }
+    /// The trade-off sweep's results so far, on the tab's chosen axes (Charts panel).
+    [[nodiscard]] std::vector<charts::TradeoffPoint> tradeoffResults() const;
+    /// The trade-off chart's axes (the tab's x and y choices).
+    void setTradeoffAxes(charts::TradeoffX x, charts::TradeoffY y) noexcept {
+        sweep_.x = x;
+        sweep_.y = y;
+    }
     [[nodiscard]] bool tradeoffRunning() const noexcept { return sweep_.running; }
     /// Starts the trade-off sweep (the "Run sweep" button).
     void startTradeoffSweep();
@@ -190,10 +196,18 @@ private:
             std::string label, preset;
             geometry::shadow::ShadowSettings settings;
         };
+        /// What one configuration measured: every figure the chart's axes can show.
+        struct Figures {
+            std::string label, preset;
+            double gpuMs = 0, cpuMs = 0, memoryMiB = 0, p95 = 0;
+            double interior = NAN, edge = NAN, misclassified = NAN; // with ground truth on
+        };
         std::vector<Config> configs;
         size_t next = 0;
         bool running = false;
-        std::vector<charts::TradeoffPoint> results;
+        std::vector<Figures> results;
+        charts::TradeoffX x = charts::TradeoffX::GpuMs;
+        charts::TradeoffY y = charts::TradeoffY::P95;
         std::unique_ptr<renderer::Renderer> renderer;
         int generation = -1; // scene generation the renderer holds
     } sweep_;

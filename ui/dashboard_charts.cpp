@@ -110,9 +110,20 @@ void Dashboard::drawTradeoffTab() {
         widgetMapRecord("tradeoff.cancel");
     }
     ImGui::SameLine();
+    // The chart's axes: a cost against an accuracy figure (flicker needs a path: `bench --path`).
+    int x = int(s.x), y = int(s.y);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7);
+    if (ImGui::Combo("x", &x, "gpu_ms\0cpu_ms\0memory_mib\0")) s.x = charts::TradeoffX(x);
+    widgetMapRecord("tradeoff.x");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7);
+    if (ImGui::Combo("y", &y, "p95\0interior\0edge\0misclassified\0")) s.y = charts::TradeoffY(y);
+    widgetMapRecord("tradeoff.y");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("interior, edge and misclassified need ground truth (Views); flicker: bench --path");
+    ImGui::SameLine();
     const bool tune = recommend_.showChart && recommend_.tuner;
-    const charts::Chart chart =
-        tune ? recommendChart() : charts::tradeoffChart(s.results, "frame time, GPU median (ms)");
+    const charts::Chart chart = tune ? recommendChart() : charts::tradeoffChart(tradeoffResults(), s.x, s.y);
     if (ImGui::SmallButton("Export SVG + PNG")) exportChart(chart, tune ? "tune" : "tradeoff");
     widgetMapRecord("export.tradeoff");
     drawRecommendControls();
@@ -120,6 +131,22 @@ void Dashboard::drawTradeoffTab() {
     const float* mouse = nullptr;
     const Rect area = chartArea("tradeoff_area", &mouse, storage);
     charts::drawChart(ImGui::GetWindowDrawList(), chart, {area.x, area.y, area.w, area.h}, mouse);
+}
+
+std::vector<charts::TradeoffPoint> Dashboard::tradeoffResults() const {
+    std::vector<charts::TradeoffPoint> points;
+    for (const auto& f : sweep_.results) {
+        const double x = sweep_.x == charts::TradeoffX::GpuMs   ? f.gpuMs
+                         : sweep_.x == charts::TradeoffX::CpuMs ? f.cpuMs
+                                                                : f.memoryMiB;
+        const double y = sweep_.y == charts::TradeoffY::P95             ? f.p95
+                         : sweep_.y == charts::TradeoffY::Interior      ? f.interior
+                         : sweep_.y == charts::TradeoffY::Edge          ? f.edge
+                         : sweep_.y == charts::TradeoffY::Misclassified ? f.misclassified
+                                                                        : NAN;
+        points.push_back({f.label, f.preset, x, y});
+    }
+    return points;
 }
 
 void Dashboard::startTradeoffSweep() {
@@ -157,9 +184,22 @@ void Dashboard::stepTradeoffSweep() {
     const geometry::shadow::Viewport size =
         sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360};
     try {
-        const renderer::Measurement m = renderer::measure(*s.renderer, cfg.settings, scene.bounds(), scene.camera,
-                                                          scene.light, size, {.warmup = 1, .frames = 3});
-        s.results.push_back({cfg.label, cfg.preset, m.gpuMs, m.inspection.aliasing.p95});
+        const renderer::Measurement m =
+            renderer::measure(*s.renderer, cfg.settings, scene.bounds(), scene.camera, scene.light, size,
+                              {.warmup = 1, .frames = 3, .truthSamples = state_.views.truthSamples},
+                              state_.views.truth ? scene_.truth.get() : nullptr);
+        TradeoffSweep::Figures f{cfg.label,
+                                 cfg.preset,
+                                 m.gpuMs,
+                                 m.cpuMs,
+                                 double(m.shadowMemoryBytes) / (1024.0 * 1024.0),
+                                 m.inspection.aliasing.p95};
+        if (const auto& t = m.inspection.truthClasses) {
+            f.interior = t->interiorFalseShadow + t->interiorFalseLit;
+            f.edge = t->edgeError;
+        }
+        if (const auto& t = m.inspection.truth) f.misclassified = t->falseShadow + t->falseLit;
+        s.results.push_back(f);
     } catch (const std::exception& e) {
         status_ = "trade-off sweep: " + cfg.label + ": " + e.what();
     }
