@@ -34,7 +34,7 @@ const WarpMethod kMethods[] = {WarpMethod::Uniform, WarpMethod::Psm,   WarpMetho
 } // namespace
 
 // Every point of V_i ∩ S and every point of S between it and the light lands in split i's unit
-// cube, for every warp, both warp directions, 1–4 splits and stabilization off and snap
+// cube, for every warp, both warp directions, 1–4 splits and every stabilization mode
 // (docs/design.md §3.1, §3.2).
 TEST(Plan, WarpedSplitsKeepReceiversAndCastersInTheirUnitCube) {
     std::mt19937 rng(99);
@@ -48,7 +48,9 @@ TEST(Plan, WarpedSplitsKeepReceiversAndCastersInTheirUnitCube) {
         settings.direction = (trial / 6) % 2 ? WarpDirection::Middle : WarpDirection::Standard;
         settings.splits.count = 1 + (trial / 12) % 4;
         settings.splits.scheme = SplitScheme((trial / 48) % 5);
-        settings.stabilize = trial % 7 < 3 ? StabilizeMode::Snap : StabilizeMode::Off;
+        settings.stabilize = trial % 7 < 2   ? StabilizeMode::Snap
+                             : trial % 7 < 4 ? StabilizeMode::Quantize
+                                             : StabilizeMode::Off;
         Camera cam;
         cam.eye = {uniform(rng, -60, 60), uniform(rng, -5, 40), uniform(rng, -70, 40)};
         cam.target = cam.eye + randomUnit(rng);
@@ -251,4 +253,26 @@ TEST(Plan, SnapHoldsTheUniformMapsTexelGridStill) {
         if (!on.splits[i].warped()) continue;
         EXPECT_EQ(on.splits[i].lightViewProj, off.splits[i].lightViewProj) << i;
     }
+}
+
+// stabilize.mode = quantize: a warped split's frame (V_P, n', projection centre, extent) is held to
+// steps, so a camera move far below a step leaves it exactly as it was; without it the warp drifts.
+TEST(Plan, QuantizeHoldsAWarpedFrameForSmallMoves) {
+    const Scene scene = makePlaneScene();
+    ShadowSettings s;
+    s.resolution = 1024;
+    s.warp.method = WarpMethod::Lispsm;
+    const Viewport vp{320, 240};
+    Camera moved = scene.camera;
+    moved.eye += glm::vec3(2e-4f, 0.f, -1e-4f);
+    moved.target += glm::vec3(2e-4f, 0.f, -1e-4f);
+    const auto same = [&](StabilizeMode mode) {
+        s.stabilize = mode;
+        const ShadowPlan a = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+        const ShadowPlan b = planShadows(s, scene.bounds(), moved, scene.light, vp);
+        EXPECT_TRUE(a.splits[0].warped());
+        return a.splits[0].lightViewProj == b.splits[0].lightViewProj;
+    };
+    EXPECT_TRUE(same(StabilizeMode::Quantize));
+    EXPECT_FALSE(same(StabilizeMode::Off));
 }

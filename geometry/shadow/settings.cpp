@@ -155,9 +155,11 @@ const std::vector<SettingInfo>& settingsDeclaration() {
             Kind::Float, 0, 10, [](ShadowSettings & s) -> auto& { return s.filter.eyeBlurFalloff; }, true),
         choice(
             "stabilize.mode",
-            "Stabilization: off, or snap (unwarped maps fitted to their split's bounding sphere, moved in whole "
-            "texels: edges hold still while the camera moves, at the cost of a larger map footprint)",
-            {"off", "snap"}, [](ShadowSettings & s) -> auto& { return s.stabilize; }),
+            "Stabilization: off; snap (unwarped maps fitted to their split's bounding sphere, moved in whole "
+            "texels: edges hold still while the camera moves, at the cost of a larger map footprint); quantize "
+            "(snap, and warped maps' V_P in 1 deg steps, n' in 1/16 octaves, projection centre and extent on a "
+            "texel grid)",
+            {"off", "snap", "quantize"}, [](ShadowSettings & s) -> auto& { return s.stabilize; }),
         choice(
             "warp.method",
             "Warp: uniform (none), psm (n' = n / sin(gamma)), lispsm (Wimmer), glispsm (Barroso eqs 13-18), gmnpr "

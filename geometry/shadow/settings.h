@@ -40,9 +40,10 @@ struct FilterSettings {
     float eyeBlurFalloff = 0.05f; // filter.eye_blur.falloff: how fast the blur shrinks with view depth
 };
 
-/// stabilize.mode: off, or snap (unwarped maps fitted to their split's bounding sphere and moved in
-/// whole texels, so a moving camera does not make shadow edges shimmer).
-enum class StabilizeMode { Off, Snap };
+/// stabilize.mode: off; snap (unwarped maps fitted to their split's bounding sphere and moved in
+/// whole texels, so a moving camera does not make shadow edges shimmer); quantize (snap, and for
+/// warped maps V_P, n', the projection centre and the map's extent held to steps).
+enum class StabilizeMode { Off, Snap, Quantize };
 
 struct ShadowSettings {
     int resolution = 2048; // shadow_map.resolution

@@ -119,8 +119,18 @@ struct SplitFrame {
 /// Builds L and the projection after it for B (Wimmer's LiSPSM construction, docs/design.md §3.2).
 /// B's points pulled back to S's light-facing boundary are fitted too, so every caster between
 /// B and the light stays in the map.
+/// v rounded up to a 1/64 octave: a size that float noise and small camera moves leave alone.
+double octaveStep(double v) noexcept { return std::exp2(std::ceil(std::log2(std::max(v, 1e-12)) * 64.0) / 64.0); }
+
+/// stabilize.mode = quantize for a warped split: what moves the warp, held to steps (the map
+/// resolution sets the step sizes).
+struct WarpQuantization {
+    bool on = false;
+    int resolution = 0;
+};
+
 SplitFrame frameForSplit(const std::vector<glm::vec3>& body, const dvec3& l, const dvec3& vp, const dvec3& eye,
-                         const scene::Aabb& S, double nPrime) {
+                         const scene::Aabb& S, double nPrime, const WarpQuantization& q = {}) {
     SplitFrame out{};
     out.lightView = glm::lookAt(dvec3(0.0), l, vp); // −z along l, +y along V_P
     std::vector<dvec3> pts;
@@ -148,13 +158,21 @@ SplitFrame frameForSplit(const std::vector<glm::vec3>& body, const dvec3& l, con
         return out;
     }
     // P looks along +y of L from c, which sits n' before B's near boundary along V_P.
-    const dvec3 c(eyeL.x, bodyBox.lo.y - nPrime, 0.5 * (bodyBox.lo.z + std::max(bodyBox.hi.z, zTop)));
+    dvec3 c(eyeL.x, bodyBox.lo.y - nPrime, 0.5 * (bodyBox.lo.z + std::max(bodyBox.hi.z, zTop)));
+    double depth = std::max(out.d, 1e-9);
+    double step = 0.0;
+    if (q.on) { // c on a grid of d/res, d in 1/64 octaves; c moves back (floor) so B stays ≥ n' ahead
+        depth = octaveStep(depth);
+        step = depth / double(std::max(q.resolution, 1));
+        c = {std::round(c.x / step) * step, std::floor(c.y / step) * step, std::round(c.z / step) * step};
+        depth += step;
+    }
     dmat4 toP(0.0); // L → P's eye space: x = x_L, y = z_L (towards the light), z = −y_L (looks along +y_L)
     toP[0][0] = 1.0;
     toP[2][1] = 1.0;
     toP[1][2] = -1.0;
     toP[3] = dvec4(-c.x, -c.z, c.y, 1.0);
-    const dmat4 P = glm::frustum(-1.0, 1.0, -1.0, 1.0, nPrime, nPrime + std::max(out.d, 1e-9));
+    const dmat4 P = glm::frustum(-1.0, 1.0, -1.0, 1.0, nPrime, nPrime + depth);
     dmat4 swizzle(0.0); // (X, Y, Z) → (X, Z, −Y): image plane (lateral, warp axis), depth away from light
     swizzle[0][0] = 1.0;
     swizzle[2][1] = 1.0;
@@ -162,7 +180,13 @@ SplitFrame frameForSplit(const std::vector<glm::vec3>& body, const dvec3& l, con
     swizzle[3][3] = 1.0;
     const dmat4 warp = swizzle * P * toP;
     Box box;
-    for (const auto& q : pts) box.add(project(warp, q));
+    for (const auto& p : pts) box.add(project(warp, p));
+    if (q.on) // the map's extents (and depth range) in 1/64 octaves, its corner on that texel grid
+        for (int k = 0; k < 3; ++k) {
+            const double size = octaveStep(box.hi[k] - box.lo[k]), texel = size / double(std::max(q.resolution, 1));
+            box.lo[k] = std::floor(box.lo[k] / texel) * texel;
+            box.hi[k] = box.lo[k] + size + texel;
+        }
     out.lightProj = fitUnitCube(box) * warp;
     out.warpCentre = dvec3(glm::inverse(out.lightView) * dvec4(c, 1.0));
     return out;
@@ -281,9 +305,17 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
             lo = std::min(lo, t);
             hi = std::max(hi, t);
         }
-        const double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, c[i], c[i + 1], phi, gamma, hi - lo);
-        SplitFrame frame = frameForSplit(split.body, l, vp, eye, S, nPrime);
-        if (settings.stabilize == StabilizeMode::Snap && frame.nPrime == kUniform)
+        double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, c[i], c[i + 1], phi, gamma, hi - lo);
+        const bool quantize = settings.stabilize == StabilizeMode::Quantize;
+        if (quantize && !degenerate) { // V_P in 1° steps about l, n' in 1/16 octaves
+            const dvec3 e1 = perpendicular(l), e2 = glm::cross(l, e1);
+            const double angle = std::round(glm::degrees(std::atan2(glm::dot(vp, e2), glm::dot(vp, e1))));
+            vp = std::cos(glm::radians(angle)) * e1 + std::sin(glm::radians(angle)) * e2;
+            if (std::isfinite(nPrime) && nPrime > 0.0 && nPrime < kUniform)
+                nPrime = std::exp2(std::round(std::log2(nPrime) * 16.0) / 16.0);
+        }
+        SplitFrame frame = frameForSplit(split.body, l, vp, eye, S, nPrime, {quantize, split.resolution});
+        if (settings.stabilize != StabilizeMode::Off && frame.nPrime == kUniform)
             frame = stableFrame(focusFrustum, l, eye, S, split.resolution);
         const dmat4 viewProj = frame.lightProj * frame.lightView;
         split.lightView = glm::mat4(frame.lightView);
