@@ -3,11 +3,8 @@
 #include "app/resources.h"
 
 #include "geometry/analysis/ground_truth.h"
-#include "geometry/analysis/stability_metrics.h"
-#include "geometry/analysis/statistics.h"
 #include "geometry/io/preset.h"
 #include "geometry/io/scene_file.h"
-#include "geometry/scene/path_interpolation.h"
 #include "geometry/shadow/shadow_plan.h"
 #include "renderer/context.h"
 #include "renderer/measure.h"
@@ -130,56 +127,8 @@ struct Row {
     bool truth = false;
 };
 
-/// A configuration walked along --path: world-space flicker per frame pair, screen-space flicker,
-/// the seam per frame.
-struct PathFigures {
-    double flickerMean = NAN, flickerP95 = NAN, flickerScreen = NAN, seam = NAN;
-};
-
-PathFigures walkPath(renderer::Renderer& r, const geometry::shadow::ShadowSettings& settings,
-                     geometry::scene::Scene& scene, const geometry::io::ScenePath& path, int frames,
-                     geometry::shadow::Viewport size, const geometry::analysis::GroundTruth& truth, int truthSamples) {
-    std::vector<double> world, screen, seams;
-    std::optional<geometry::analysis::Inspection> previous;
-    glm::mat4 previousViewProj(1.f);
-    const geometry::scene::Camera start = scene.camera;
-    const glm::vec3 sun = scene.light.direction;
-    for (int i = 0; i < frames; ++i) {
-        const double t = geometry::scene::pathParameter(i, frames);
-        const geometry::scene::Camera camera =
-            path.cameras.empty() ? start : geometry::scene::cameraAlongPath(path.cameras, t);
-        const geometry::scene::DirectionalLight light{
-            path.lights.empty() ? sun : geometry::scene::lightAlongPath(path.lights, t)};
-        renderer::Measurement m =
-            renderer::measure(r, settings, scene.bounds(), camera, light, size,
-                              {.warmup = 0, .frames = 1, .timed = false, .truthSamples = truthSamples}, &truth);
-        geometry::analysis::Inspection& in = m.inspection;
-        const auto seam = geometry::analysis::seamStats(in.m, in.aux, in.receiver, in.positions, in.normals, camera.eye,
-                                                        in.width, in.height);
-        if (seam.pairs > 0) seams.push_back(seam.median);
-        if (previous) {
-            world.push_back(geometry::analysis::worldFlickerStats(*previous, previousViewProj, in).rate);
-            screen.push_back(geometry::analysis::flickerStats(previous->shadow, *previous->occluded, previous->receiver,
-                                                              in.shadow, *in.occluded, in.receiver)
-                                 .rate);
-        }
-        previousViewProj = m.plan.eyeProj * m.plan.eyeView;
-        previous = std::move(in);
-    }
-    PathFigures f;
-    if (!world.empty()) {
-        double sum = 0, sumScreen = 0;
-        for (size_t k = 0; k < world.size(); ++k) sum += world[k], sumScreen += screen[k];
-        f.flickerMean = sum / double(world.size());
-        f.flickerScreen = sumScreen / double(screen.size());
-        f.flickerP95 = geometry::analysis::percentile(std::span(world), 95);
-    }
-    if (!seams.empty()) f.seam = geometry::analysis::median(std::span(seams));
-    return f;
-}
-
 ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows,
-                             const std::vector<PathFigures>& paths, ui::charts::TradeoffX xAxis,
+                             const std::vector<renderer::PathFigures>& paths, ui::charts::TradeoffX xAxis,
                              ui::charts::TradeoffY yAxis) {
     // One point per configuration: the mean cost over the views; the geometric-mean p95 or the
     // mean fraction over the views; the path's mean flicker.
@@ -281,12 +230,14 @@ int runBench(const BenchOptions& o) {
             std::cerr << "[" << rows.size() << "/" << total << "] " << cfg.label << " @ " << viewName << ": GPU "
                       << row.gpuMs << " ms, CPU " << row.cpuMs << " ms, p95 m " << row.p95 << '\n';
         }
-    std::vector<PathFigures> paths(configs.size());
+    std::vector<renderer::PathFigures> paths(configs.size());
     if (path)
         for (size_t c = 0; c < configs.size(); ++c) {
             scene.camera = views.front().second.camera;
             scene.light = views.front().second.light;
-            paths[c] = walkPath(r, configs[c].settings, scene, *path, o.frames, o.common.size, *truth, o.truth.samples);
+            paths[c] =
+                renderer::measurePath(r, configs[c].settings, scene.bounds(), {path->cameras, path->lights},
+                                      {scene.camera, scene.light}, o.frames, o.common.size, *truth, o.truth.samples);
             std::cerr << "[path " << o.path << ", " << (c + 1) << "/" << configs.size() << "] " << configs[c].label
                       << ": world-space flicker " << paths[c].flickerMean << ", screen " << paths[c].flickerScreen
                       << ", seam " << paths[c].seam << '\n';
@@ -314,7 +265,7 @@ int runBench(const BenchOptions& o) {
             else csv << ",,,,";
             const auto cfg = std::find_if(configs.begin(), configs.end(),
                                           [&](const BenchConfiguration& b) { return b.label == w.config; });
-            const PathFigures& f = paths[size_t(cfg - configs.begin())];
+            const renderer::PathFigures& f = paths[size_t(cfg - configs.begin())];
             if (path) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
             else csv << ",,,,";
             csv << '\n';

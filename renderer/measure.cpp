@@ -1,10 +1,13 @@
 #include "renderer/measure.h"
 
+#include "geometry/analysis/stability_metrics.h"
 #include "geometry/analysis/statistics.h"
+#include "geometry/scene/path_interpolation.h"
 #include "renderer/inspection.h"
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace renderer {
@@ -54,6 +57,46 @@ geometry::analysis::TuneFigures measureTuneRequest(Renderer& renderer, const geo
                                                           m.shadowMemoryBytes));
     }
     return geometry::analysis::combineViews(figures);
+}
+
+PathFigures measurePath(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
+                        const geometry::scene::Aabb& S, const MeasurePath& path, const MeasureView& start, int frames,
+                        const geometry::shadow::Viewport& size, const geometry::analysis::GroundTruth& truth,
+                        int truthSamples) {
+    std::vector<double> world, screen, seams;
+    std::optional<geometry::analysis::Inspection> previous;
+    glm::mat4 previousViewProj(1.f);
+    for (int i = 0; i < frames; ++i) {
+        const double t = geometry::scene::pathParameter(i, frames);
+        const geometry::scene::Camera camera =
+            path.cameras.empty() ? start.camera : geometry::scene::cameraAlongPath(path.cameras, t);
+        const geometry::scene::DirectionalLight light{
+            path.lights.empty() ? start.light.direction : geometry::scene::lightAlongPath(path.lights, t)};
+        Measurement m = measure(renderer, settings, S, camera, light, size,
+                                {.warmup = 0, .frames = 1, .timed = false, .truthSamples = truthSamples}, &truth);
+        geometry::analysis::Inspection& in = m.inspection;
+        const auto seam = geometry::analysis::seamStats(in.m, in.aux, in.receiver, in.positions, in.normals, camera.eye,
+                                                        in.width, in.height);
+        if (seam.pairs > 0) seams.push_back(seam.median);
+        if (previous) {
+            world.push_back(geometry::analysis::worldFlickerStats(*previous, previousViewProj, in).rate);
+            screen.push_back(geometry::analysis::flickerStats(previous->shadow, *previous->occluded, previous->receiver,
+                                                              in.shadow, *in.occluded, in.receiver)
+                                 .rate);
+        }
+        previousViewProj = m.plan.eyeProj * m.plan.eyeView;
+        previous = std::move(in);
+    }
+    PathFigures f;
+    if (!world.empty()) {
+        double sum = 0, sumScreen = 0;
+        for (size_t k = 0; k < world.size(); ++k) sum += world[k], sumScreen += screen[k];
+        f.flickerMean = sum / double(world.size());
+        f.flickerScreen = sumScreen / double(screen.size());
+        f.flickerP95 = geometry::analysis::percentile(std::span(world), 95);
+    }
+    if (!seams.empty()) f.seam = geometry::analysis::median(std::span(seams));
+    return f;
 }
 
 } // namespace renderer

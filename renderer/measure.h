@@ -9,7 +9,9 @@
 #include "geometry/shadow/shadow_plan.h"
 #include "renderer/renderer.h"
 
+#include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace renderer {
 
@@ -49,5 +51,24 @@ struct MeasureView {
 measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& request, const geometry::scene::Aabb& S,
                    const std::vector<MeasureView>& views, const geometry::analysis::GroundTruth& truth,
                    int truthSamples, const MeasureOptions& options = {});
+
+/// A camera/light path (keys as a scene file's "paths" hold them; empty: the start stays put).
+struct MeasurePath {
+    std::vector<geometry::scene::Camera> cameras;
+    std::vector<glm::vec3> lights;
+};
+
+/// One configuration walked along a path: world-space flicker over the frame pairs (mean and 95th
+/// percentile), screen-space flicker (mean) and the median seam (geometry/analysis/stability_metrics.h).
+struct PathFigures {
+    double flickerMean = NAN, flickerP95 = NAN, flickerScreen = NAN, seam = NAN;
+};
+
+/// Renders `frames` frames along `path` (untimed), starting from `start` where the path has no
+/// camera or light keys, with truth (truthSamples² samples) for the flicker's truth condition.
+[[nodiscard]] PathFigures measurePath(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
+                                      const geometry::scene::Aabb& S, const MeasurePath& path, const MeasureView& start,
+                                      int frames, const geometry::shadow::Viewport& size,
+                                      const geometry::analysis::GroundTruth& truth, int truthSamples = 1);
 
 } // namespace renderer

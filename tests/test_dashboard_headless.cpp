@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -241,6 +243,32 @@ TEST_F(HeadlessDashboardTest, ChartTabsDrawTheCurvesAndTheTradeoffSweepRuns) {
 } // namespace
 
 namespace {
+
+// The Trade-off tab's flicker axis: each configuration walks the chosen path of the scene file and
+// reports its world-space flicker.
+TEST_F(HeadlessDashboardTest, TradeoffFlickerWalksTheScenePath) {
+    const std::string file = ::testing::TempDir() + "plane_with_path.json";
+    std::ofstream(file) << R"({"meshes": [{"builtin": "plane"}],
+        "paths": {"dolly": {"camera": [{"eye": [0, 7, 16], "target": [0, 0, -2]},
+                                        {"eye": [1, 7, 15.4], "target": [1, 0, -2.6]}]}}})";
+    options_.scene = file;
+    auto d = make();
+    (void)d->render(1);
+    ui::Dashboard& dash = d->dashboard();
+    ASSERT_EQ(dash.scene().file.paths.count("dolly"), 1u);
+    dash.setTradeoffAxes(ui::charts::TradeoffX::GpuMs, ui::charts::TradeoffY::Flicker);
+    dash.setTradeoffPath("dolly");
+    dash.startTradeoffSweep();
+    for (int i = 0; i < 20 && dash.tradeoffRunning(); ++i) (void)d->render(1);
+    const auto points = dash.tradeoffResults();
+    ASSERT_GE(points.size(), 5u);
+    double ssm = -1;
+    for (const auto& p : points) {
+        EXPECT_TRUE(std::isfinite(p.y) && p.y >= 0.0 && p.y <= 1.0) << p.label << ": " << p.y;
+        if (p.preset == "ssm") ssm = p.y;
+    }
+    EXPECT_GT(ssm, 0.0) << "an unsnapped uniform map shimmers along the dolly";
+}
 
 // The Views group's "truth samples" reaches the inspection: 2 × 2 rays give fractional coverage.
 TEST_F(HeadlessDashboardTest, TruthSamplesReachTheInspection) {

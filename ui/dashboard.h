@@ -98,6 +98,8 @@ public:
     void showTab(int tab) noexcept { requestedTab_ = tab; }
     /// The trade-off sweep's results so far, on the tab's chosen axes (Charts panel).
     [[nodiscard]] std::vector<charts::TradeoffPoint> tradeoffResults() const;
+    /// The path of the scene file the trade-off sweep walks for the flicker axis ("" none).
+    void setTradeoffPath(std::string name) { sweep_.path = std::move(name); }
     /// The trade-off chart's axes (the tab's x and y choices).
     void setTradeoffAxes(charts::TradeoffX x, charts::TradeoffY y) noexcept {
         sweep_.x = x;
@@ -201,6 +203,7 @@ private:
             std::string label, preset;
             double gpuMs = 0, cpuMs = 0, memoryMiB = 0, p95 = 0;
             double interior = NAN, edge = NAN, misclassified = NAN; // with ground truth on
+            double flicker = NAN; // world-space, along `path` (when the sweep ran with one)
         };
         std::vector<Config> configs;
         size_t next = 0;
@@ -208,6 +211,8 @@ private:
         std::vector<Figures> results;
         charts::TradeoffX x = charts::TradeoffX::GpuMs;
         charts::TradeoffY y = charts::TradeoffY::P95;
+        std::string path;        // the scene file's path each configuration walks for flicker ("" none)
+        std::string runningPath; // the path of the sweep under way
         std::unique_ptr<renderer::Renderer> renderer;
         int generation = -1; // scene generation the renderer holds
     } sweep_;

@@ -117,10 +117,21 @@ void Dashboard::drawTradeoffTab() {
     widgetMapRecord("tradeoff.x");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7);
-    if (ImGui::Combo("y", &y, "p95\0interior\0edge\0misclassified\0")) s.y = charts::TradeoffY(y);
+    if (ImGui::Combo("y", &y, "p95\0interior\0edge\0misclassified\0flicker\0")) s.y = charts::TradeoffY(y);
     widgetMapRecord("tradeoff.y");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("interior, edge and misclassified need ground truth (Views); flicker: bench --path");
+        ImGui::SetTooltip("interior, edge and misclassified need ground truth (Views); flicker, a path of the scene "
+                          "file that each configuration walks (world-space flicker, 10 frames)");
+    if (s.y == charts::TradeoffY::Flicker) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+        if (ImGui::BeginCombo("path", s.path.empty() ? "(none)" : s.path.c_str())) {
+            for (const auto& [name, path] : scene_.file.paths)
+                if (ImGui::Selectable(name.c_str(), name == s.path)) s.path = name;
+            ImGui::EndCombo();
+        }
+        widgetMapRecord("tradeoff.path");
+    }
     ImGui::SameLine();
     const bool tune = recommend_.showChart && recommend_.tuner;
     const charts::Chart chart = tune ? recommendChart() : charts::tradeoffChart(tradeoffResults(), s.x, s.y);
@@ -143,7 +154,7 @@ std::vector<charts::TradeoffPoint> Dashboard::tradeoffResults() const {
                          : sweep_.y == charts::TradeoffY::Interior      ? f.interior
                          : sweep_.y == charts::TradeoffY::Edge          ? f.edge
                          : sweep_.y == charts::TradeoffY::Misclassified ? f.misclassified
-                                                                        : NAN;
+                                                                        : f.flicker;
         points.push_back({f.label, f.preset, x, y});
     }
     return points;
@@ -163,6 +174,7 @@ void Dashboard::startTradeoffSweep() {
     }
     s.configs.push_back({"current A", "", state_.settings[0]});
     if (comparing()) s.configs.push_back({"current B", "", state_.settings[1]});
+    s.runningPath = s.path;
     s.next = 0;
     s.running = true;
 }
@@ -199,6 +211,12 @@ void Dashboard::stepTradeoffSweep() {
             f.edge = t->edgeError;
         }
         if (const auto& t = m.inspection.truth) f.misclassified = t->falseShadow + t->falseLit;
+        const auto path = scene_.file.paths.find(s.runningPath);
+        if (path != scene_.file.paths.end() && scene_.truth)
+            f.flicker = renderer::measurePath(*s.renderer, cfg.settings, scene.bounds(),
+                                              {path->second.cameras, path->second.lights}, {scene.camera, scene.light},
+                                              10, size, *scene_.truth, state_.views.truthSamples)
+                            .flickerMean;
         s.results.push_back(f);
     } catch (const std::exception& e) {
         status_ = "trade-off sweep: " + cfg.label + ": " + e.what();
