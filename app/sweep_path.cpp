@@ -143,11 +143,10 @@ int runSweepPath(const SweepPathOptions& o) {
             r.seam = geometry::analysis::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals,
                                                    camera.eye, w, h);
             if (i > 0) {
-                r.flicker =
-                    geometry::analysis::flickerStats(previous.in.shadow, *previous.in.occluded, previous.in.receiver,
-                                                     f.in.shadow, *f.in.occluded, f.in.receiver);
-                r.worldFlicker = geometry::analysis::worldFlickerStats(
+                const auto pair = geometry::analysis::framePairFlicker(
                     previous.in, previous.plan.eyeProj * previous.plan.eyeView, f.in);
+                r.flicker = pair.screen;
+                r.worldFlicker = pair.world;
             }
             r.p95 = f.in.aliasing.p95;
             r.falseLit = f.in.truth->falseLit;

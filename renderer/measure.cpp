@@ -79,10 +79,9 @@ PathFigures measurePath(Renderer& renderer, const geometry::shadow::ShadowSettin
                                                         in.width, in.height);
         if (seam.pairs > 0) seams.push_back(seam.median);
         if (previous) {
-            world.push_back(geometry::analysis::worldFlickerStats(*previous, previousViewProj, in).rate);
-            screen.push_back(geometry::analysis::flickerStats(previous->shadow, *previous->occluded, previous->receiver,
-                                                              in.shadow, *in.occluded, in.receiver)
-                                 .rate);
+            const auto pair = geometry::analysis::framePairFlicker(*previous, previousViewProj, in);
+            world.push_back(pair.world.rate);
+            screen.push_back(pair.screen.rate);
         }
         previousViewProj = m.plan.eyeProj * m.plan.eyeView;
         previous = std::move(in);

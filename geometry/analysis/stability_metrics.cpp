@@ -148,4 +148,11 @@ FlickerStats worldFlickerStats(const Inspection& before, const glm::mat4& before
     return out;
 }
 
+FramePairFlicker framePairFlicker(const Inspection& before, const glm::mat4& beforeViewProj, const Inspection& after) {
+    if (!before.occluded || !after.occluded) throw std::invalid_argument("framePairFlicker: both frames need truth");
+    return {
+        flickerStats(before.shadow, *before.occluded, before.receiver, after.shadow, *after.occluded, after.receiver),
+        worldFlickerStats(before, beforeViewProj, after)};
+}
+
 } // namespace geometry::analysis

@@ -44,6 +44,15 @@ struct FlickerStats {
 [[nodiscard]] FlickerStats worldFlickerStats(const Inspection& before, const glm::mat4& beforeViewProj,
                                              const Inspection& after);
 
+/// Both flickers of one frame pair with truth (flickerStats on the same pixels, worldFlickerStats
+/// on the same points): what `sweep path` and renderer::measurePath record per pair. Throws
+/// std::invalid_argument when either frame lacks truth.
+struct FramePairFlicker {
+    FlickerStats screen, world;
+};
+[[nodiscard]] FramePairFlicker framePairFlicker(const Inspection& before, const glm::mat4& beforeViewProj,
+                                                const Inspection& after);
+
 /// Seams (docs/design.md §4: "ratio of m on the two sides of each split boundary"). Walks every row and
 /// column through four consecutive pixels c, a | b, e (a and b neighbours): a split boundary
 /// lies between a and b when their split indices (aux[i].z, rounded; < 0 for sky) differ, while
