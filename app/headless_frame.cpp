@@ -1,5 +1,7 @@
 #include "headless_frame.h"
 
+#include "renderer/plan_frame.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -12,12 +14,15 @@ HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames, ren
     f.scene = loadScene(options);
     f.context = renderer::createHeadlessContext(renderer::parseBackend(options.backend));
     const geometry::shadow::ShadowSettings& settings = options.settings;
-    const auto t0 = std::chrono::steady_clock::now();
-    f.plan = geometry::shadow::planShadows(settings, f.scene.bounds(), f.scene.camera, f.scene.light, options.size);
-    f.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
     f.renderer = std::make_unique<renderer::Renderer>(f.scene);
     if (views.lightViewSize <= 0) views.lightViewSize = lightViewSize(settings.resolution);
-    for (int i = 0; i <= warmupFrames; ++i) f.renderer->render(f.plan, options.size, views);
+    for (int i = 0; i <= warmupFrames; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        f.plan =
+            renderer::planFrame(*f.renderer, settings, f.scene.bounds(), f.scene.camera, f.scene.light, options.size);
+        f.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+        f.renderer->render(f.plan, options.size, views);
+    }
     f.renderer->waitForTimings();
     return f;
 }

@@ -55,6 +55,8 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
                           {"lambda", s.lambda},
                           {"resolution", s.resolution},
                           {"empty", s.empty()},
+                          {"samples", s.samples},
+                          {"skipped", s.skipped},
                           {"triangles", i < stats.splitTriangles.size() ? stats.splitTriangles[i] : 0}});
     }
     j["splits"] = splits;
@@ -68,7 +70,11 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
                    {"near", f.scene.camera.near},
                    {"far", f.scene.camera.far}};
     j["light"] = {f.plan.l.x, f.plan.l.y, f.plan.l.z};
-    j["timing_ms"] = {{"shadow", stats.gpu.of(Pass::Shadow)},
+    j["focus"] = {{"mode", f.plan.fittedToSamples ? "samples" : "geometry"},
+                  {"samples", f.plan.sampleCount},
+                  {"sample_depth_range", {f.plan.sampleDepthRange.x, f.plan.sampleDepthRange.y}}};
+    j["timing_ms"] = {{"prepass", stats.gpu.of(Pass::Prepass)},
+                      {"shadow", stats.gpu.of(Pass::Shadow)},
                       {"eye", stats.gpu.of(Pass::Eye)},
                       {"light_view", stats.gpu.of(Pass::LightView)},
                       {"frame", stats.gpu.frame()},

@@ -8,15 +8,16 @@
 
 namespace renderer {
 
-enum class Pass { Shadow, Eye, LightView, Count };
+/// Prepass: the eye's depth pre-pass, and with focus.mode = samples the reduction of its samples.
+enum class Pass { Prepass, Shadow, Eye, LightView, Count };
 
 struct PassTimes {
     std::array<double, static_cast<std::size_t>(Pass::Count)> ms{}; // GPU milliseconds per pass
     bool valid = false;
     [[nodiscard]] double of(Pass p) const noexcept { return ms[static_cast<std::size_t>(p)]; }
     [[nodiscard]] double total() const noexcept; // every pass, the inspection views included
-    /// The shadowing itself: shadow maps and eye view, without the inspection views.
-    [[nodiscard]] double frame() const noexcept { return of(Pass::Shadow) + of(Pass::Eye); }
+    /// The shadowing itself: depth pre-pass, shadow maps and eye view, without the inspection views.
+    [[nodiscard]] double frame() const noexcept { return of(Pass::Prepass) + of(Pass::Shadow) + of(Pass::Eye); }
 };
 
 class GpuTimers {

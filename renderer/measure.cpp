@@ -4,6 +4,7 @@
 #include "geometry/analysis/statistics.h"
 #include "geometry/scene/path_interpolation.h"
 #include "renderer/inspection.h"
+#include "renderer/plan_frame.h"
 
 #include <chrono>
 #include <cmath>
@@ -25,7 +26,7 @@ Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& 
     const int total = std::max(options.warmup, 0) + std::max(options.frames, 1);
     for (int i = 0; i < total; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
-        out.plan = geometry::shadow::planShadows(settings, S, camera, light, viewport);
+        out.plan = planFrame(renderer, settings, S, camera, light, viewport);
         renderer.render(out.plan, viewport, views);
         if (!options.timed) continue;
         glFinish();

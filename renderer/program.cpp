@@ -67,14 +67,27 @@ Program::Program(std::string_view vertexName, std::string_view fragmentName, std
     glLinkProgram(id_);
     glDeleteShader(vs);
     glDeleteShader(fs);
+    link(std::string(vertexName) + "+" + std::string(fragmentName));
+}
+
+Program::Program(Compute, std::string_view computeName, std::string_view defines) {
+    const GLuint cs = compile(GL_COMPUTE_SHADER, computeName, defines);
+    id_ = glCreateProgram();
+    glAttachShader(id_, cs);
+    glLinkProgram(id_);
+    glDeleteShader(cs);
+    link(computeName);
+}
+
+/// Throws with the log when the program just linked did not.
+void Program::link(std::string_view what) {
     GLint ok = GL_FALSE;
     glGetProgramiv(id_, GL_LINK_STATUS, &ok);
     if (!ok) {
         char log[2048] = {};
         glGetProgramInfoLog(id_, sizeof log, nullptr, log);
         glDeleteProgram(id_);
-        throw std::runtime_error("program " + std::string(vertexName) + "+" + std::string(fragmentName) +
-                                 " does not link: " + log);
+        throw std::runtime_error("program " + std::string(what) + " does not link: " + log);
     }
 }
 

@@ -13,6 +13,9 @@ public:
     /// Compiles built-in shaders by file name, with `defines` ("#define X\n" lines) inserted after
     /// each #version line; throws std::runtime_error with the GL log.
     Program(std::string_view vertexName, std::string_view fragmentName, std::string_view defines = "");
+    /// A compute program from one built-in shader.
+    struct Compute {};
+    Program(Compute, std::string_view computeName, std::string_view defines = "");
     ~Program();
     Program(const Program&) = delete;
     Program& operator=(const Program&) = delete;
@@ -26,8 +29,10 @@ public:
     void set(const char* name, const glm::ivec2& v) { glUniform2i(location(name), v.x, v.y); }
     void set(const char* name, const glm::vec3& v) { glUniform3f(location(name), v.x, v.y, v.z); }
     void set(const char* name, const glm::mat4& m) { glUniformMatrix4fv(location(name), 1, GL_FALSE, &m[0][0]); }
+    void set(const char* name, const glm::vec3* v, int count) { glUniform3fv(location(name), count, &v[0][0]); }
 
 private:
+    void link(std::string_view what);
     GLuint id_ = 0;
     std::unordered_map<std::string, GLint> locations_;
 };

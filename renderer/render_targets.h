@@ -72,6 +72,7 @@ public:
     void bindBlur(int i) const noexcept;
     [[nodiscard]] GLuint texture(Attachment a) const noexcept { return textures_[a]; }
     [[nodiscard]] GLuint blurTexture(int i) const noexcept { return blur_[i]; }
+    [[nodiscard]] GLuint depthTexture() const noexcept { return depth_; }
     [[nodiscard]] int width() const noexcept { return width_; }
     [[nodiscard]] int height() const noexcept { return height_; }
 

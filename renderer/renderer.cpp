@@ -1,9 +1,9 @@
 // Index
 //   [SECTION] GL helpers ................ makeSampler, bindTexture, needsPeeling
 //   [SECTION] Set-up and shared state ... Renderer, ~Renderer, setScene, warnOnce, depthProgram, uploadShadowBlock
-//   [SECTION] The frame ................. render, waitForTimings
+//   [SECTION] The frame ................. render, eyeSamples, waitForTimings
 //   [SECTION] Shadow maps ............... drawCasters, shadowPass, peelAndCombine, momentsPass
-//   [SECTION] Eye view .................. eyePass, eyeBlurAndCompose
+//   [SECTION] Eye view .................. depthPrePass, eyePass, eyeBlurAndCompose
 //   [SECTION] Light views ............... lightViewPass, unwarpedViewPass
 //   [SECTION] Reading back .............. readShadowMask, readShadowDepth, readShadowMap, readAux, readPositions,
 //                                         readNormals
@@ -112,10 +112,16 @@ void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::
     if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
     stats_.shadowTriangles = stats_.eyeTriangles = 0;
     stats_.splitTriangles.assign(plan.splits.size(), 0);
+    const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
+    if (!prepassReady_ || prepassViewProj_ != viewProj || prepassSize_ != glm::ivec2(viewport.width, viewport.height)) {
+        timers_.begin(Pass::Prepass);
+        depthPrePass(plan, viewport);
+    }
+    prepassReady_ = false;
     timers_.begin(Pass::Shadow);
     shadowPass(plan);
     timers_.begin(Pass::Eye);
-    eyePass(plan, viewport);
+    eyePass(plan);
     eyeBlurAndCompose(plan);
     timers_.begin(Pass::LightView);
     lightViewPass(plan, views);
@@ -124,6 +130,19 @@ void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     for (int unit = 0; unit < 4; ++unit) glBindSampler(unit, 0);
     stats_.gpu = timers_.latest();
+}
+
+geometry::shadow::SampleBounds Renderer::eyeSamples(const geometry::shadow::ShadowPlan& plan,
+                                                    const geometry::shadow::Viewport& viewport) {
+    timers_.begin(Pass::Prepass);
+    depthPrePass(plan, viewport);
+    if (!sampleReduction_) sampleReduction_ = std::make_unique<SampleReduction>();
+    const SampleView view{plan.eyeView, plan.eyeProj, plan.cameraNear, plan.cameraFar, plan.l};
+    auto bounds = sampleReduction_->reduce(eyeBuffers_.depthTexture(), viewport.width, viewport.height, view);
+    prepassReady_ = true;
+    prepassViewProj_ = plan.eyeProj * plan.eyeView;
+    prepassSize_ = {viewport.width, viewport.height};
+    return bounds;
 }
 
 const PassTimes& Renderer::waitForTimings() noexcept {
@@ -278,7 +297,9 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
 
 // ---- [SECTION] Eye view ---------------------------------------------------------------------
 
-void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport) {
+/// The eye's depth pre-pass: the heavy eye shader (filter taps, six targets) then runs once per
+/// pixel instead of once per overlapping surface, and focus.mode = samples reduces its depths.
+void Renderer::depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport) {
     // 58 bytes per pixel over eight targets; refuse before the driver fails (or swaps) on a huge size.
     const double bytes = 58.0 * viewport.width * viewport.height;
     if (viewport.width > maxTextureSize_ || viewport.height > maxTextureSize_ || bytes > limits_.viewMemoryBytes)
@@ -291,6 +312,27 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan, const geometry:
     stats_.eyeWidth = viewport.width;
     stats_.eyeHeight = viewport.height;
     eyeBuffers_.bind();
+    glDepthMask(GL_TRUE);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
+    Program& depthOnly = depthProgram("#define EYE_DEPTH\n");
+    depthOnly.use();
+    depthOnly.set("uViewProj", viewProj);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    for (const auto& m : scene_->meshes()) {
+        depthOnly.set("uModel", m.transform);
+        scene_->draw(
+            m, [&](const geometry::scene::Aabb& box) { return geometry::shadow::intersectsClipVolume(box, viewProj); });
+    }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
+    eyeBuffers_.bind();
     const float zero[4] = {0.f, 0.f, 0.f, 0.f}, lit[4] = {1.f, 1.f, 1.f, 1.f}, sky[4] = {0.f, 0.f, -1.f, 0.f};
     glClearBufferfv(GL_COLOR, EyeBuffers::Base, zero);
     glClearBufferfv(GL_COLOR, EyeBuffers::Direct, zero);
@@ -298,25 +340,12 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan, const geometry:
     glClearBufferfv(GL_COLOR, EyeBuffers::Aux, sky);
     glClearBufferfv(GL_COLOR, EyeBuffers::Position, zero);
     glClearBufferfv(GL_COLOR, EyeBuffers::Normal, zero);
-    glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
     const auto inView = [&](const geometry::scene::Aabb& box) {
         return geometry::shadow::intersectsClipVolume(box, viewProj);
     };
-    // Depth pre-pass: the heavy eye shader (filter taps, six targets) then runs once per pixel
-    // instead of once per overlapping surface.
-    Program& depthOnly = depthProgram("#define EYE_DEPTH\n");
-    depthOnly.use();
-    depthOnly.set("uViewProj", viewProj);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    for (const auto& m : scene_->meshes()) {
-        depthOnly.set("uModel", m.transform);
-        scene_->draw(m, inView);
-    }
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
     eyeProgram_.use();

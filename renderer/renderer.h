@@ -9,6 +9,7 @@
 #include "line_renderer.h"
 #include "program.h"
 #include "render_targets.h"
+#include "sample_reduction.h"
 #include "shadow_block.h"
 
 #include <map>
@@ -52,6 +53,11 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     void setScene(const geometry::scene::Scene& scene);
+    /// focus.mode = samples: draws the eye's depth pre-pass for `plan`'s camera at `viewport` and
+    /// reduces its samples on the GPU (sample_reduction.h). The next render() with the same camera
+    /// and viewport reuses that pre-pass, so the frame draws it once.
+    [[nodiscard]] geometry::shadow::SampleBounds eyeSamples(const geometry::shadow::ShadowPlan& plan,
+                                                            const geometry::shadow::Viewport& viewport);
     /// Renders the eye view at `viewport` and the light views into textures.
     void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
                 const ViewOptions& views);
@@ -98,7 +104,8 @@ private:
     void drawCasters(const geometry::shadow::SplitPlan& split, Program& program, int index, bool backFacesOnly);
     void peelAndCombine(const geometry::shadow::ShadowPlan& plan);
     void momentsPass(const geometry::shadow::ShadowPlan& plan);
-    void eyePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport);
+    void depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport);
+    void eyePass(const geometry::shadow::ShadowPlan& plan);
     void eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan);
     void lightViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views);
     void unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views);
@@ -127,6 +134,10 @@ private:
     LayeredTarget firstDepth_, secondDepth_, combinedDepth_, moments_, momentsTemp_;
     GLuint sampledDepth_ = 0; // the depth array the eye pass reads this frame
     EyeBuffers eyeBuffers_;
+    std::unique_ptr<SampleReduction> sampleReduction_; // made on first use
+    bool prepassReady_ = false;                        // eyeSamples drew the pre-pass for this camera:
+    glm::mat4 prepassViewProj_{1.f};                   // …
+    glm::ivec2 prepassSize_{0};                        // … at this size
     ColorTarget eye_, light_, lightUnwarped_;
     GpuTimers timers_;
     FrameStats stats_;

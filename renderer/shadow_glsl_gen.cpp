@@ -2,6 +2,7 @@
 // enum values and the split limit from the C++ declarations (geometry/shadow), and the uniform block
 // from renderer/shadow_block.inc — as a C++ source holding that text (renderer::kShadowBlockGlsl).
 // Usage: shadow_glsl_gen OUTPUT.cpp
+#include "geometry/shadow/sample_bounds.h"
 #include "geometry/shadow/settings.h"
 #include "renderer/shadow_block.h"
 
@@ -26,6 +27,8 @@ std::string glsl() {
     std::ostringstream out;
     out << "// Generated at build time from geometry/shadow (settings and kMaxSplits) and renderer/shadow_block.inc.\n";
     out << "const int MAX_SPLITS = " << geometry::shadow::kMaxSplits << ";\n";
+    out << "const int SAMPLE_BINS = " << geometry::shadow::kSampleBins << ";\n";
+    out << "const int SAMPLE_DIRECTIONS = " << geometry::shadow::kSampleDirections << ";\n";
     // Enum values by their settings names, in declaration order (= the C++ enum's values).
     for (const auto& [key, prefix] : {std::pair{"bias.type", "BIAS_"}, std::pair{"filter.type", "FILTER_"}}) {
         const auto* info = geometry::shadow::findSetting(key);

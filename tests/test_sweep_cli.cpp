@@ -114,6 +114,23 @@ TEST(SweepGamma, EveryMethodPassesTheCheckAtCiSize) {
     }
 }
 
+// Fitted to the eye's samples, no caster is lost at any angle: the lost-caster check
+// (false_lit_clipped, clipped_casters) stays 0 over a 15° γ sweep of every method, and --check passes.
+TEST(SweepGamma, SampleFocusLosesNoCasterAtAnyAngle) {
+    const fs::path dir = freshDir("sweep_gamma_samples");
+    const CommandResult r =
+        run("sweep gamma " + kSmall + "--step 15 --check --set focus.mode=samples --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto rows = readCsv(dir / "sweep.csv");
+    ASSERT_EQ(rows.size(), 13u * 5u);
+    for (const auto& row : rows) {
+        SCOPED_TRACE(row.at("method") + " at " + row.at("angle_deg"));
+        EXPECT_EQ(num(row, "false_lit_clipped"), 0);
+        EXPECT_EQ(num(row, "clipped_casters"), 0);
+        EXPECT_GT(num(row, "receivers"), 200);
+    }
+}
+
 // Continuity is judged at 1° steps (docs/stability.md): the window on the dueling side where the
 // gain of every continuity method changes fastest, across γ_lim ≈ 30.5° and φ = 30° (angles 149.5
 // and 150), where GLiSPSM and GMNPR switch formulas.

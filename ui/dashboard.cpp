@@ -3,6 +3,7 @@
 #include "geometry/analysis/view_images.h"
 #include "geometry/io/preset.h"
 #include "geometry/shadow/shadow_plan.h"
+#include "renderer/plan_frame.h"
 #include "widget_map.h"
 
 #include <imgui.h>
@@ -24,7 +25,7 @@ const std::vector<std::string>& controlGroups() {
 
 std::string settingGroup(std::string_view key) {
     if (key.starts_with("warp.") || key.starts_with("shadow_map.") || key.starts_with("stabilize.")) return "Warp";
-    if (key.starts_with("splits.")) return "Partitions";
+    if (key.starts_with("splits.") || key.starts_with("focus.") || key.starts_with("casters.")) return "Partitions";
     if (key.starts_with("bias.")) return "Bias";
     if (key.starts_with("filter.")) return "Filtering";
     return "Views";
@@ -161,8 +162,8 @@ void Dashboard::renderViews(const FrameInput& input) {
         if (!side.renderer) side.renderer = std::make_unique<renderer::Renderer>(scene);
         try {
             const auto p0 = std::chrono::steady_clock::now();
-            side.plan =
-                geometry::shadow::planShadows(state_.settings[i], scene.bounds(), scene.camera, scene.light, size);
+            side.plan = renderer::planFrame(*side.renderer, state_.settings[i], scene.bounds(), scene.camera,
+                                            scene.light, size);
             side.planMicroseconds =
                 std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - p0).count();
             renderer::ViewOptions v;

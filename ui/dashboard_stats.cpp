@@ -90,6 +90,21 @@ void Dashboard::drawStatsTable() {
             row("γ / light–view angle", [&](int i) {
                 return fmt("%.2f°", sides_[i].plan.gammaDeg) + " / " + fmt("%.1f°", sides_[i].plan.lightViewAngleDeg);
             });
+            row("GPU depth pre-pass", gpu(renderer::Pass::Prepass),
+                "GPU time of the eye's depth pre-pass (and, with focus.mode = samples, the sample reduction)");
+            row(
+                "focus",
+                [&](int i) {
+                    const auto& p = sides_[i].plan;
+                    if (!p.fittedToSamples) return std::string("geometry");
+                    std::string skipped;
+                    for (size_t k = 0; k < p.splits.size(); ++k)
+                        if (p.splits[k].skipped) skipped += (skipped.empty() ? "" : ",") + std::to_string(k);
+                    return "samples " + fmt("%.3g", p.sampleDepthRange.x) + "–" + fmt("%.3g", p.sampleDepthRange.y) +
+                           (skipped.empty() ? std::string() : ", skipped " + skipped);
+                },
+                "focus.mode = samples: the visible samples' view-depth range, from this frame's depth pre-pass "
+                "(reduced on the GPU before the shadow maps are drawn), and the splits skipped for having none");
             row("GPU shadow pass", gpu(renderer::Pass::Shadow),
                 "GPU time of the shadow maps (all splits), from a few frames ago");
             row("GPU eye pass", gpu(renderer::Pass::Eye), "GPU time of the eye view with filtering and blur");

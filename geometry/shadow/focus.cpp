@@ -33,9 +33,12 @@ glm::vec3 exitTowardLight(const glm::vec3& p, const glm::vec3& l, const scene::A
     return p + tExit * dir;
 }
 
-std::vector<glm::vec3> focusBody(const std::array<glm::vec3, 8>& frustum, const scene::Aabb& S, const glm::vec3& l) {
+std::vector<glm::vec3> focusBody(const std::array<glm::vec3, 8>& frustum, const scene::Aabb& S, const glm::vec3& l,
+                                 std::span<const Plane> clip) {
     ConvexBody body = ConvexBody::fromCorners(frustum);
     body.clip(S);
+    for (const Plane& plane : clip)
+        if (!body.empty()) body.clip(plane);
     std::vector<glm::vec3> points = body.vertices();
     const size_t n = points.size();
     for (size_t i = 0; i < n; ++i) points.push_back(exitTowardLight(points[i], l, S));

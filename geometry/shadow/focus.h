@@ -5,6 +5,7 @@
 #include "geometry/shadow/convex_body.h"
 
 #include <array>
+#include <span>
 #include <vector>
 
 namespace geometry::shadow {
@@ -18,9 +19,10 @@ namespace geometry::shadow {
 /// outside or the ray is degenerate.
 [[nodiscard]] glm::vec3 exitTowardLight(const glm::vec3& p, const glm::vec3& l, const scene::Aabb& S) noexcept;
 
-/// B_i as a point set: the vertices of V_i ∩ S and, for each, its exit point towards the light.
-/// Empty (not NaN) when V_i misses S.
+/// B_i as a point set: the vertices of V_i ∩ S (∩ every plane of `clip`: the visible samples' prism,
+/// focus.mode = samples) and, for each, its exit point towards the light, so no caster between the
+/// focus and the light is lost. Empty (not NaN) when nothing is left.
 [[nodiscard]] std::vector<glm::vec3> focusBody(const std::array<glm::vec3, 8>& frustum, const scene::Aabb& S,
-                                               const glm::vec3& l);
+                                               const glm::vec3& l, std::span<const Plane> clip = {});
 
 } // namespace geometry::shadow

@@ -15,22 +15,28 @@ void addBoxEdges(std::vector<OverlaySegment>& out, const std::array<glm::vec3, 8
 
 std::array<glm::vec3, 8> corners(const scene::Aabb& b) { return b.corners(); }
 
-/// B_i's outline in a map: the hull of its points projected by `viewProj` (points behind the
-/// projection centre are skipped).
-std::vector<glm::vec2> bodyOutline(const SplitPlan& s, const glm::mat4& viewProj) {
+/// An outline in a map: the hull of `points` projected by `viewProj` (points behind the projection
+/// centre are skipped).
+std::vector<glm::vec2> outline(const std::vector<glm::vec3>& points, const glm::mat4& viewProj) {
     std::vector<glm::vec2> pts;
-    for (const auto& p : s.body) {
+    for (const auto& p : points) {
         const glm::vec4 c = viewProj * glm::vec4(p, 1.f);
         if (c.w > 0.f) pts.emplace_back(c.x / c.w, c.y / c.w);
     }
     return convexHull2D(std::move(pts));
 }
 
-void addOutline(std::vector<OverlaySegment>& out, const std::vector<glm::vec2>& hull) {
+void addOutline(std::vector<OverlaySegment>& out, const std::vector<glm::vec2>& hull, OverlayKind kind) {
     for (size_t i = 0; i < hull.size(); ++i) {
         const glm::vec2 a = hull[i], b = hull[(i + 1) % hull.size()];
-        out.push_back({{a, 0.f}, {b, 0.f}, OverlayKind::FocusBody, true});
+        out.push_back({{a, 0.f}, {b, 0.f}, kind, true});
     }
+}
+
+/// B_i's outline, and the samples' within it, as `viewProj` sees them.
+void addBodyOutlines(std::vector<OverlaySegment>& out, const SplitPlan& s, const glm::mat4& viewProj) {
+    addOutline(out, outline(s.body, viewProj), OverlayKind::FocusBody);
+    if (!s.sampleRegion.empty()) addOutline(out, outline(s.sampleRegion, viewProj), OverlayKind::SampleBounds);
 }
 
 } // namespace
@@ -66,7 +72,7 @@ std::vector<OverlaySegment> warpedViewOverlays(const ShadowPlan& plan, int split
     addBoxEdges(out, plan.viewFrustum, OverlayKind::ViewFrustum);
     addBoxEdges(out, s.frustum, OverlayKind::SplitFrustum);
     if (!s.empty()) {
-        addOutline(out, bodyOutline(s, s.lightViewProj));
+        addBodyOutlines(out, s, s.lightViewProj);
         addBoxEdges(out, s.mapVolume, OverlayKind::WarpFrustum);
     }
     return out;
@@ -79,7 +85,7 @@ std::vector<OverlaySegment> unwarpedViewOverlays(const ShadowPlan& plan) {
     for (const auto& s : plan.splits) {
         addBoxEdges(out, s.frustum, OverlayKind::SplitFrustum);
         if (s.empty()) continue;
-        addOutline(out, bodyOutline(s, plan.unwarpedViewProj));
+        addBodyOutlines(out, s, plan.unwarpedViewProj);
         addBoxEdges(out, s.mapVolume, OverlayKind::WarpFrustum);
     }
     return out;

@@ -8,7 +8,8 @@
 
 namespace geometry::shadow {
 
-enum class OverlayKind { SceneBounds, ViewFrustum, SplitFrustum, FocusBody, WarpFrustum, Count };
+/// SampleBounds: focus.mode = samples, where the visible samples are (V_i ∩ S ∩ their prism).
+enum class OverlayKind { SceneBounds, ViewFrustum, SplitFrustum, FocusBody, WarpFrustum, SampleBounds, Count };
 
 struct OverlaySegment {
     glm::vec3 a{0.f}, b{0.f};
@@ -17,7 +18,8 @@ struct OverlaySegment {
 };
 
 /// Overlays for split `split`'s warped map: S, V, V_i, the outline of B_i as the map sees it (2D
-/// convex hull of its points in map coordinates) and P (the map volume). World segments are to be
+/// convex hull of its points in map coordinates), the samples' outline when fitted to them, and P
+/// (the map volume). World segments are to be
 /// drawn through the split's lightViewProj with depth clamping; GL clips what lies outside.
 [[nodiscard]] std::vector<OverlaySegment> warpedViewOverlays(const ShadowPlan& plan, int split);
 

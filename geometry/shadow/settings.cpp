@@ -161,6 +161,12 @@ const std::vector<SettingInfo>& settingsDeclaration() {
             "texel grid)",
             {"off", "snap", "quantize"}, [](ShadowSettings & s) -> auto& { return s.stabilize; }),
         choice(
+            "focus.mode",
+            "Fit the maps to: geometry (each split's view sub-frustum clipped by the scene bounds) or samples "
+            "(the depth range and light-space bounds of the pixels the eye sees, from a GPU reduction of the "
+            "depth pre-pass; splits without samples are skipped)",
+            {"geometry", "samples"}, [](ShadowSettings & s) -> auto& { return s.focus; }),
+        choice(
             "warp.method",
             "Warp: uniform (none), psm (n' = n / sin(gamma)), lispsm (Wimmer), glispsm (Barroso eqs 13-18), gmnpr "
             "(Zhang eq 8), "

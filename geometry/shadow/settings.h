@@ -45,9 +45,14 @@ struct FilterSettings {
 /// warped maps V_P, n', the projection centre and the map's extent held to steps).
 enum class StabilizeMode { Off, Snap, Quantize };
 
+/// focus.mode: what each split's map is fitted to. geometry: the view sub-frustum clipped by the
+/// scene bounds; samples: the visible samples' depth range and light-space bounds (SDSM).
+enum class FocusMode { Geometry, Samples };
+
 struct ShadowSettings {
     int resolution = 2048; // shadow_map.resolution
     StabilizeMode stabilize = StabilizeMode::Off;
+    FocusMode focus = FocusMode::Geometry;
     BiasSettings bias;
     FilterSettings filter;
     WarpParams warp{WarpMethod::Uniform};

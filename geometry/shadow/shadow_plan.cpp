@@ -251,7 +251,7 @@ dvec3 warpDirection(WarpDirection mode, const dvec3& l, const dvec3& v, const dv
 }
 
 ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
-                       const scene::DirectionalLight& light, const Viewport& viewport) {
+                       const scene::DirectionalLight& light, const Viewport& viewport, const SampleBounds* samples) {
     ShadowPlan plan;
     plan.l = light.l();
     plan.v = camera.viewDir();
@@ -271,10 +271,26 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
     const dvec3 l(plan.l), v(plan.v), eye(camera.eye);
     const double gamma = glm::radians(double(plan.gammaDeg));
     const double phi = glm::radians(double(camera.fovYDeg)) * 0.5;
-    const std::vector<double> c = splitDistances(settings.splits, camera.near, camera.far, gamma);
     plan.viewFrustum = frustumCorners(camera, viewport.aspect(), camera.near, camera.far);
     plan.sceneBounds = S;
     plan.eye = camera.eye;
+    plan.cameraNear = camera.near;
+    plan.cameraFar = camera.far;
+    const bool fit = settings.focus == FocusMode::Samples && samples != nullptr;
+    plan.fittedToSamples = fit;
+    // The splits partition [n, f]; with samples, the samples' depth range instead (a sliver beyond
+    // it, so float noise cannot leave the nearest or farthest pixel out).
+    std::vector<double> c = splitDistances(settings.splits, camera.near, camera.far, gamma);
+    if (fit) {
+        plan.sampleCount = samples->count;
+        plan.sampleDepthRange = {samples->zMin, samples->zMax};
+        const double zLo = std::max(double(camera.near), samples->zMin * (1.0 - 1e-3));
+        const double zHi = std::min(double(camera.far), std::max(samples->zMax * (1.0 + 1e-3), zLo * (1.0 + 1e-3)));
+        if (!samples->empty()) c = splitDistances(settings.splits, zLo, zHi, gamma);
+    }
+    // Lookups reach past the sample they are for: filter taps, normal offset; a margin of that many
+    // texels (as a fraction of the map) keeps them on the map.
+    const double reachTexels = settings.filter.kernel / 2 + settings.filter.radius + settings.bias.normalOffset + 2.0;
 
     for (int i = 0; i + 1 < int(c.size()); ++i) {
         SplitPlan split;
@@ -290,7 +306,19 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         const double focusNear = i > 0 ? std::max(camera.near, float(c[i] - blend * (c[i] - c[i - 1]))) : c[i];
         const auto focusFrustum =
             focusNear < c[i] ? frustumCorners(camera, viewport.aspect(), float(focusNear), split.far) : split.frustum;
-        if (c[i + 1] > c[i]) split.body = focusBody(focusFrustum, S, plan.l);
+        if (fit) {
+            const SampleSlab slab =
+                samplesWithin(*samples, focusNear, c[i + 1], reachTexels / std::max(split.resolution, 1));
+            split.samples = slab.count;
+            split.skipped = slab.count == 0;
+            if (!split.skipped) {
+                split.body = focusBody(focusFrustum, S, plan.l, slab.planes);
+                split.sampleRegion.assign(split.body.begin(),
+                                          split.body.begin() + std::ptrdiff_t(split.body.size() / 2));
+            }
+        } else if (c[i + 1] > c[i]) {
+            split.body = focusBody(focusFrustum, S, plan.l);
+        }
         if (split.empty()) {
             plan.splits.push_back(std::move(split));
             continue;
@@ -305,7 +333,13 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
             lo = std::min(lo, t);
             hi = std::max(hi, t);
         }
-        double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, c[i], c[i + 1], phi, gamma, hi - lo);
+        // The warp's n' from the fitted range, except that the first split's n sits between the
+        // camera's n and the nearest sample (n^(2/3)·z_min^(1/3)): the fitted z_min alone weakens
+        // the warp too much where a few near samples see a long frustum (deck: p95 m 3.21 → 4.39),
+        // the camera's n keeps it too strong for a far-off focus (overview); docs/accuracy.md
+        // "Fitting to the samples" has the variants measured.
+        const double nI = fit && i == 0 ? std::cbrt(double(camera.near) * camera.near * c[0]) : c[i], fI = c[i + 1];
+        double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, nI, fI, phi, gamma, hi - lo);
         const bool quantize = settings.stabilize == StabilizeMode::Quantize;
         if (quantize && !degenerate) { // V_P in 1° steps about l, n' in 1/16 octaves
             const dvec3 e1 = perpendicular(l), e2 = glm::cross(l, e1);
@@ -322,7 +356,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         split.lightProj = glm::mat4(frame.lightProj);
         split.lightViewProj = glm::mat4(viewProj);
         split.nPrime = frame.nPrime;
-        split.lambda = lambdaFromNPrime(frame.nPrime, c[i], c[i + 1], phi, gamma);
+        split.lambda = lambdaFromNPrime(frame.nPrime, nI, fI, phi, gamma);
         split.warpDir = glm::vec3(vp);
         split.warpCentre = glm::vec3(frame.warpCentre);
         split.warpDepth = float(frame.d);

@@ -2,6 +2,7 @@
 // The shadow plan: everything the renderer needs to draw shadows, decided here and nowhere
 // else (docs/design.md §2). A plain value: rendering, overlays, charts and tests use the same plan.
 #include "geometry/scene/scene.h"
+#include "geometry/shadow/sample_bounds.h"
 #include "geometry/shadow/settings.h"
 
 #include <array>
@@ -38,6 +39,12 @@ struct SplitPlan {
                                           // split's (splits.blend); = far: no band
     glm::vec2 lookupShift{0.f};           // texels the eye pass shifts its lookups by: 0, except where a
                                           // test plants a misplaced map
+    // focus.mode = samples: the visible samples in [near, far] (as the depth bins tell), and where
+    // they are: V_i ∩ S ∩ their prism (B_i is this, extruded towards the light). A split without
+    // samples is skipped: empty body, no pass.
+    uint64_t samples = 0;
+    bool skipped = false;
+    std::vector<glm::vec3> sampleRegion;
     [[nodiscard]] bool empty() const noexcept { return body.empty(); }
     [[nodiscard]] bool warped() const noexcept { return nPrime < kUniform; }
 };
@@ -51,6 +58,11 @@ struct ShadowPlan {
     std::array<glm::vec3, 8> viewFrustum{}; // V's corners, near to far
     scene::Aabb sceneBounds;                // S
     glm::vec3 eye{0.f};
+    float cameraNear = 0.f, cameraFar = 0.f; // the camera's n and f (the splits may cover less)
+    /// Fitted to the eye's samples (focus.mode = samples with sample bounds given), their view-depth range.
+    bool fittedToSamples = false;
+    glm::vec2 sampleDepthRange{0.f};
+    uint64_t sampleCount = 0;
     /// An orthographic view from the light framing every B_i, the eye and P's projection centres,
     /// for the unwarped light view (what the warp does, seen without it).
     glm::mat4 unwarpedViewProj{1.f};
@@ -69,9 +81,12 @@ struct ShadowPlan {
 
 /// Plans the shadow maps for one frame. Pure; never returns NaN matrices (an empty focus body
 /// gives an empty split, which the renderer treats as "nothing casts a shadow"). Settings are
-/// assumed valid (validateOrThrow); the camera's n > 0 and f > n.
+/// assumed valid (validateOrThrow); the camera's n > 0 and f > n. With focus.mode = samples and
+/// `samples` given (this frame's, for this camera and light), splits and focus bodies are fitted
+/// to them (docs/design.md §3.7); without, the plan is the geometric one.
 [[nodiscard]] ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
-                                     const scene::DirectionalLight& light, const Viewport& viewport);
+                                     const scene::DirectionalLight& light, const Viewport& viewport,
+                                     const SampleBounds* samples = nullptr);
 
 /// The warp direction V_P ⊥ l: the view direction projected onto the light's plane ("standard"), or
 /// Scherzer's middle vector over `body` seen from `eye`. Zero when degenerate (v ∥ l).
