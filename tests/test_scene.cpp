@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 using namespace geometry::scene;
@@ -70,4 +71,82 @@ TEST(MeshBuilder, NormalsPointOutOfClosedSolids) {
         const glm::vec3 n = m.normals[m.indices[3 * t]];
         EXPECT_GT(glm::dot(wound, n), 0.f) << "triangle " << t;
     }
+}
+
+namespace {
+
+/// Signed volume enclosed by a mesh (divergence theorem): the solid's volume when it is closed
+/// and wound outwards, whether or not its faces share vertices.
+double signedVolume(const Mesh& m) {
+    double v = 0.0;
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::dvec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                         c = m.positions[m.indices[3 * t + 2]];
+        v += glm::dot(a, glm::cross(b, c)) / 6.0;
+    }
+    return v;
+}
+
+/// Every triangle's winding agrees with its first vertex's normal.
+void expectWoundLikeNormals(const Mesh& m) {
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        c = m.positions[m.indices[3 * t + 2]];
+        ASSERT_GT(glm::dot(glm::cross(b - a, c - a), m.normals[m.indices[3 * t]]), 0.f) << m.name << " triangle " << t;
+    }
+}
+
+/// Area of a regular `sides`-gon inscribed in a circle of radius r.
+double polygonArea(double r, int sides) { return 0.5 * sides * r * r * std::sin(2.0 * std::numbers::pi / sides); }
+
+} // namespace
+
+TEST(MeshBuilder, SweptSolidsAreClosedOutwardAndCountedExactly) {
+    const int sides = 24;
+    {
+        // Straight tube with a ring at every metre, along a tilted axis.
+        MeshBuilder mb("tube", glm::vec3(1.f));
+        std::vector<glm::vec3> path;
+        const glm::vec3 dir = glm::normalize(glm::vec3(1, 2, -1));
+        for (int i = 0; i <= 4; ++i) path.push_back(glm::vec3(3, 1, 2) + static_cast<float>(i) * dir);
+        mb.addTube(path, 0.5f, sides);
+        EXPECT_EQ(mb.triangleCount(), MeshBuilder::tubeTriangles(path.size(), sides, true));
+        const Mesh m = mb.build();
+        expectWoundLikeNormals(m);
+        EXPECT_NEAR(signedVolume(m), polygonArea(0.5, sides) * 4.0, 1e-3);
+        EXPECT_LT(m.positions.size(), m.triangleCount()); // rings shared between steps
+    }
+    {
+        // Quarter elbow, capped: a quarter of the torus's volume (Pappus, for the polygonal section).
+        MeshBuilder mb("elbow", glm::vec3(1.f));
+        mb.addTorus({1, 2, 3}, {0, 0, 1}, {0, -1, 0}, 2.f, 0.4f, 0.5f * std::numbers::pi_v<float>, 64, sides);
+        EXPECT_EQ(mb.triangleCount(), MeshBuilder::torusTriangles(0.5f * std::numbers::pi_v<float>, 64, sides, true));
+        const Mesh m = mb.build();
+        expectWoundLikeNormals(m);
+        EXPECT_NEAR(signedVolume(m), polygonArea(0.4, sides) * 2.0 * std::numbers::pi * 2.0 / 4.0, 0.01);
+    }
+    {
+        // A full turn closes on itself without caps (a handwheel rim).
+        MeshBuilder mb("rim", glm::vec3(1.f));
+        mb.addTorus({0, 0, 0}, {0, 1, 0}, {1, 0, 0}, 1.f, 0.1f, 2.f * std::numbers::pi_v<float>, 96, sides);
+        EXPECT_EQ(mb.triangleCount(), MeshBuilder::torusTriangles(2.f * std::numbers::pi_v<float>, 96, sides, true));
+        EXPECT_EQ(mb.triangleCount(), 2u * 96u * sides);
+        const Mesh m = mb.build();
+        expectWoundLikeNormals(m);
+        EXPECT_NEAR(signedVolume(m), polygonArea(0.1, sides) * 2.0 * std::numbers::pi, 2e-3);
+    }
+    {
+        MeshBuilder mb("flange", glm::vec3(1.f));
+        mb.addRing({0, 1, 0}, {0.2f, 1, 0}, 0.3f, 0.5f, sides);
+        EXPECT_EQ(mb.triangleCount(), MeshBuilder::ringTriangles(sides));
+        const Mesh m = mb.build();
+        expectWoundLikeNormals(m);
+        EXPECT_NEAR(signedVolume(m), (polygonArea(0.5, sides) - polygonArea(0.3, sides)) * 0.2, 1e-4);
+    }
+    MeshBuilder mb("cylinder", glm::vec3(1.f));
+    mb.addCylinder({0, 0, 0}, {0, 1, 0}, 0.5f, sides, false);
+    EXPECT_EQ(mb.triangleCount(), MeshBuilder::cylinderTriangles(sides, false));
+    mb.addCylinder({2, 0, 0}, {2, 1, 0}, 0.5f, sides, true);
+    EXPECT_EQ(mb.triangleCount(),
+              MeshBuilder::cylinderTriangles(sides, false) + MeshBuilder::cylinderTriangles(sides, true));
 }

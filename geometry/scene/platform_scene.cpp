@@ -13,7 +13,7 @@
 // is ~7k at its lowest detail.
 //
 // Index
-//   [SECTION] Randomness and detail ..... Rng, detailFor
+//   [SECTION] Detail .................... detailFor
 //   [SECTION] Small geometry helpers .... legPoint, bayLevel, perpendicularBasis, addTruss
 //   [SECTION] Jacket and deck columns ... addJacket
 //   [SECTION] Decks ..................... addDeckFrame, solveGrating, addGrating, addRailings, addModules
@@ -23,12 +23,12 @@
 //   [SECTION] Building the scene ........ makePlatformScene
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/mesh_builder.h"
+#include "geometry/scene/rng.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include <random>
 
 namespace geometry::scene {
 namespace {
@@ -72,24 +72,7 @@ const glm::vec3 kFlareTipColor{0.90f, 0.50f, 0.10f};
 // Triangles per MeshBuilder::addBeam.
 constexpr size_t kBeamTriangles = 12;
 
-// ---- [SECTION] Randomness and detail --------------------------------------------------------
-
-/// mt19937 with hand-rolled mappings: the std distributions differ between standard libraries,
-/// and the scene must be the same everywhere for a given seed.
-class Rng {
-public:
-    explicit Rng(uint32_t seed) : gen_(seed) {}
-    float uniform(float lo, float hi) {
-        return lo + (hi - lo) * (static_cast<float>(gen_() >> 8) * (1.f / 16777216.f));
-    }
-    int below(int n) { return static_cast<int>(gen_() % static_cast<uint32_t>(n)); }
-    bool chance(int percent) { return below(100) < percent; }
-
-private:
-    std::mt19937 gen_;
-};
-
-// ---- Detail ---------------------------------------------------------------------------------
+// ---- [SECTION] Detail -----------------------------------------------------------------------
 
 struct Detail {
     int seaCells;
