@@ -174,8 +174,8 @@ std::string unknownView(const RenderOptions& o, const geometry::io::SceneFile& f
 void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
     const bool bench = use == OptionUse::Bench;
     cmd.add_option("--scene", o.scene,
-                   "Scene: a built-in name (platform, plane), a scene file (resources/scenes/*.json) or a model "
-                   "file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
+                   "Scene: a built-in name (platform, piperack, plane), a scene file (resources/scenes/*.json) or "
+                   "a model file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
         ->capture_default_str();
     if (bench)
         cmd.add_option("--view", o.views,

@@ -93,6 +93,32 @@ TEST(SceneFile, ShippedPlatformHasItsCanonicalViews) {
     EXPECT_EQ(f.paths.at("sun_arc").lights.size(), 5u);
 }
 
+TEST(SceneFile, ShippedPiperackHasItsCanonicalViews) {
+    const SceneFile f = loadSceneFile((kScenes / "piperack.json").string());
+    EXPECT_EQ(f.scene.name, "piperack");
+    EXPECT_NEAR(static_cast<double>(f.scene.triangleCount()), 1e6, 1e5); // the file's params reach the builder
+    const Scene builtin = makePiperackScene({50'000, 1});                // its camera and light do not vary
+    expectNear(f.scene.camera.eye, builtin.camera.eye);
+    for (const char* name : {"walk", "overview", "grazing", "dueling"}) ASSERT_TRUE(f.views.count(name)) << name;
+    const CanonicalView& walk = f.views.at("walk");
+    expectNear(walk.camera.eye, builtin.camera.eye);
+    expectNear(walk.camera.target, builtin.camera.target);
+    expectNear(walk.light.direction, builtin.light.direction);
+    EXPECT_FLOAT_EQ(walk.camera.far, builtin.camera.far);
+    const auto gamma = [&](const char* n) { return gammaDeg(f.views.at(n).camera.viewDir(), f.views.at(n).light.l()); };
+    const CanonicalView& overview = f.views.at("overview");
+    EXPECT_GT(gamma("overview"), 60.f);
+    EXPECT_GT(elevationDeg(overview.camera.viewDir()), 25.f); // looking down on the rack
+    Aabb rack;                                                // the whole rack, ground aside, in view
+    for (const Mesh& m : f.scene.meshes)
+        if (m.name != "ground") rack.add(m.worldBounds());
+    EXPECT_TRUE(seesCorners(overview.camera, rack, 16.f / 9.f));
+    EXPECT_LT(gamma("grazing"), 20.f);
+    EXPECT_LT(elevationDeg(f.views.at("grazing").light.direction), 20.f);
+    const CanonicalView& dueling = f.views.at("dueling");
+    EXPECT_GT(lightViewAngleDeg(dueling.camera.viewDir(), dueling.light.l()), 150.f);
+}
+
 TEST(SceneFile, ShippedPlaneHasDefaultAndGamma90) {
     const SceneFile f = loadSceneFile((kScenes / "plane.json").string());
     const Scene builtin = makePlaneScene();
@@ -251,6 +277,9 @@ TEST(SceneFile, EveryErrorIsOneLineNamingTheFileAndTheKey) {
         {R"({"meshes": [{"builtin": "platform", "params": {"seed": -1}}]})", "meshes[0].params.seed"},
         {R"({"meshes": [{"builtin": "platform", "params": {"seed": 1.5}}]})", "meshes[0].params.seed"},
         {R"({"meshes": [{"builtin": "platform", "params": {"tris": 5}}]})", "meshes[0].params.tris: unknown key"},
+        {R"({"meshes": [{"builtin": "piperack", "params": {"triangles": 20000001}}]})", "meshes[0].params.triangles"},
+        {R"({"meshes": [{"builtin": "piperack", "params": {"seed": "one"}}]})", "meshes[0].params.seed"},
+        {R"({"meshes": [{"builtin": "piperack", "params": []}]})", "meshes[0].params: expected an object"},
         {R"({"meshes": [{"file": "missing.stl"}]})", "meshes[0].file: "},
         {R"({"meshes": [{"file": ""}]})", "meshes[0].file"},
         {R"({})", "empty scene"},

@@ -2,7 +2,8 @@
 //   [SECTION] Typed values with key paths ... member, element, describe, Reader
 //   [SECTION] Placement ..................... rotationXyz, readPlacement, reboundChunks, place
 //   [SECTION] Scene pieces .................. makeGround, framedCamera, meshBounds, endsWithIgnoreCase
-//   [SECTION] The scene file ................ builtinEntry, readMeshEntry, readViews, readPaths, readSceneFile
+//   [SECTION] The scene file ................ budgetParams, builtinEntry, readMeshEntry, readViews,
+//                                             readPaths, readSceneFile
 //   [SECTION] Public functions .............. frameCamera, defaultLight, loadSceneFile, resolveScene
 
 #include "geometry/io/scene_file.h"
@@ -279,6 +280,20 @@ struct Defaults {
     std::optional<scene::DirectionalLight> light;
 };
 
+/// The `params` of a built-in scene that takes a triangle budget and a seed.
+template <class Params> Params budgetParams(const Reader& r, const json& e, const std::string& key) {
+    Params params;
+    if (!e.contains("params")) return params;
+    const std::string k = member(key, "params");
+    const json& p = e["params"];
+    r.checkObject(p, k, {"triangles", "seed"});
+    // The upper bound keeps a typo from asking for gigabytes of triangles.
+    if (p.contains("triangles"))
+        params.targetTriangles = r.unsignedInt(p["triangles"], member(k, "triangles"), 1, 20'000'000);
+    if (p.contains("seed")) params.seed = r.unsignedInt(p["seed"], member(k, "seed"), 0, UINT32_MAX);
+    return params;
+}
+
 scene::Scene builtinEntry(const Reader& r, const json& e, const std::string& key) {
     const std::string name = r.string(e["builtin"], member(key, "builtin"));
     const auto& names = scene::builtinSceneNames();
@@ -287,21 +302,10 @@ scene::Scene builtinEntry(const Reader& r, const json& e, const std::string& key
         for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
         r.fail(member(key, "builtin"), "unknown built-in scene '" + name + "' (built-in scenes: " + list + ")");
     }
-    if (name != "platform") {
-        if (e.contains("params")) r.fail(member(key, "params"), "the " + name + " scene takes no parameters");
-        return scene::makeBuiltinScene(name);
-    }
-    scene::PlatformParams params;
-    if (e.contains("params")) {
-        const std::string k = member(key, "params");
-        const json& p = e["params"];
-        r.checkObject(p, k, {"triangles", "seed"});
-        // The upper bound keeps a typo from asking for gigabytes of triangles.
-        if (p.contains("triangles"))
-            params.targetTriangles = r.unsignedInt(p["triangles"], member(k, "triangles"), 1, 20'000'000);
-        if (p.contains("seed")) params.seed = r.unsignedInt(p["seed"], member(k, "seed"), 0, UINT32_MAX);
-    }
-    return scene::makePlatformScene(params);
+    if (name == "platform") return scene::makePlatformScene(budgetParams<scene::PlatformParams>(r, e, key));
+    if (name == "piperack") return scene::makePiperackScene(budgetParams<scene::PiperackParams>(r, e, key));
+    if (e.contains("params")) r.fail(member(key, "params"), "the " + name + " scene takes no parameters");
+    return scene::makeBuiltinScene(name);
 }
 
 std::vector<scene::Mesh> fileEntry(const Reader& r, const json& e, const std::string& key, const fs::path& folder,

@@ -17,6 +17,16 @@ struct PlatformParams {
 /// grating, pipes, railings, a flare boom, on a large sea plane (depth range near 0.5, far ≥ 1000).
 [[nodiscard]] Scene makePlatformScene(const PlatformParams& params = {});
 
+struct PiperackParams {
+    uint32_t targetTriangles = 250'000; // ±10 % from 50k up; builds 4M in a few seconds
+    uint32_t seed = 1;
+};
+
+/// Plant pipe rack as a CAD export tessellates it: ≥ 80 % of the triangles on curved surfaces
+/// (pipes, elbows, flanges, valves) over I-section steel, on a 1 km ground plane (depth range
+/// near 0.5, far 1500). The budget is met by the chord tolerance and the rack's length.
+[[nodiscard]] Scene makePiperackScene(const PiperackParams& params = {});
+
 /// Ground plane with a few thin vertical poles: checks with a known answer.
 struct Pole {
     glm::vec3 base;

@@ -35,14 +35,16 @@ Scene makePlaneScene() {
 }
 
 const std::vector<std::string>& builtinSceneNames() {
-    static const std::vector<std::string> names = {"platform", "plane"};
+    static const std::vector<std::string> names = {"platform", "piperack", "plane"};
     return names;
 }
 
 Scene makeBuiltinScene(std::string_view name) {
     if (name == "platform") return makePlatformScene();
+    if (name == "piperack") return makePiperackScene();
     if (name == "plane") return makePlaneScene();
-    throw std::invalid_argument("unknown scene '" + std::string(name) + "' (built-in scenes: platform, plane)");
+    throw std::invalid_argument("unknown scene '" + std::string(name) +
+                                "' (built-in scenes: platform, piperack, plane)");
 }
 
 } // namespace geometry::scene
