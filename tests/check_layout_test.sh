@@ -31,7 +31,16 @@ mkdir -p "$tmp/imgui/geometry/analysis"
 printf '#include <imgui.h>\n' >"$tmp/imgui/geometry/analysis/heatmap.cpp"
 expect_failure "$tmp/imgui" "<imgui.h>"
 
-mkdir -p "$tmp/ok/ui/charts" "$tmp/ok/app"
+mkdir -p "$tmp/lod/geometry/lod" "$tmp/lod/geometry/shadow"
+printf '#pragma once\n' >"$tmp/lod/geometry/shadow/warp.h"
+printf '#include "geometry/shadow/warp.h"\n' >"$tmp/lod/geometry/lod/caster_lod.cpp"
+expect_failure "$tmp/lod" "geometry/lod/caster_lod.cpp:1"
+mkdir -p "$tmp/lodgl/geometry/lod"
+printf '#include <GL/gl.h>\n' >"$tmp/lodgl/geometry/lod/caster_lod.cpp"
+expect_failure "$tmp/lodgl" "<GL/gl.h>"
+
+mkdir -p "$tmp/ok/ui/charts" "$tmp/ok/app" "$tmp/ok/renderer"
+printf '#include "geometry/lod/caster_lod.h"\n' >"$tmp/ok/renderer/renderer.cpp"
 printf '#include "geometry/shadow/warp.h"\n#include <imgui.h>\n' >"$tmp/ok/ui/charts/chart.cpp"
 printf '#include "ui/charts/chart.h"\n#include "renderer/renderer.h"\n' >"$tmp/ok/app/main.cpp"
 "$check" "$tmp/ok" >/dev/null || { echo "FAIL: check-layout refused allowed includes"; exit 1; }

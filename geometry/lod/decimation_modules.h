@@ -1,0 +1,197 @@
+#pragma once
+// The mesh type the levels are decimated on, and two OpenMesh decimater modules:
+//   ModDeviationT      binary: every vertex of the original stays within a tolerance of the mesh
+//   ModQuadricPriorityT  ModQuadricT as the priority, with rounding below zero clamped
+// Internal to geometry/lod.
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/ModBaseT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace geometry::lod::detail {
+
+/// Points in double: tolerances are ~1e-3 of a chunk, which may sit a kilometre from the origin.
+struct LodTraits : OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3d;
+    using Normal = OpenMesh::Vec3d;
+    VertexAttributes(OpenMesh::Attributes::Status);
+    EdgeAttributes(OpenMesh::Attributes::Status);
+    FaceAttributes(OpenMesh::Attributes::Status | OpenMesh::Attributes::Normal);
+};
+using LodMesh = OpenMesh::TriMesh_ArrayKernelT<LodTraits>;
+
+/// A triangle prepared for many distance queries.
+struct DistanceTriangle {
+    OpenMesh::Vec3d a, b, c, n; // n: unnormalized normal
+    double nn = 0.;             // |n|²; 0 for a degenerate triangle (measured as its edges)
+
+    DistanceTriangle() = default;
+    DistanceTriangle(const OpenMesh::Vec3d& a_, const OpenMesh::Vec3d& b_, const OpenMesh::Vec3d& c_) noexcept
+        : a(a_), b(b_), c(c_), n((b_ - a_) % (c_ - a_)), nn(n.sqrnorm()) {
+        const double longest = std::max({(b - a).sqrnorm(), (c - b).sqrnorm(), (a - c).sqrnorm()});
+        // Collinear within rounding: the plane is meaningless, the edges are not.
+        if (!(nn > 1e-24 * longest * longest)) nn = 0.;
+    }
+};
+
+[[nodiscard]] inline double sqrDistanceToSegment(const OpenMesh::Vec3d& p, const OpenMesh::Vec3d& a,
+                                                 const OpenMesh::Vec3d& b) noexcept {
+    const OpenMesh::Vec3d ab = b - a;
+    const double len2 = ab.sqrnorm();
+    const double t = len2 > 0. ? std::clamp(((p - a) | ab) / len2, 0., 1.) : 0.;
+    return (a + ab * t - p).sqrnorm();
+}
+
+/// Squared distance from p to the closed triangle. Unlike ModHausdorffT's, it answers a
+/// degenerate triangle with the distance to its edges, not with -1 (which passes every test).
+[[nodiscard]] inline double sqrDistance(const OpenMesh::Vec3d& p, const DistanceTriangle& t) noexcept {
+    if (t.nn > 0.) {
+        // Inside the prism over the triangle: the distance to its plane.
+        const bool inAB = (((t.b - t.a) % (p - t.a)) | t.n) >= 0.;
+        const bool inBC = (((t.c - t.b) % (p - t.b)) | t.n) >= 0.;
+        const bool inCA = (((t.a - t.c) % (p - t.c)) | t.n) >= 0.;
+        if (inAB && inBC && inCA) {
+            const double d = (p - t.a) | t.n;
+            return d * d / t.nn;
+        }
+    }
+    return std::min(
+        {sqrDistanceToSegment(p, t.a, t.b), sqrDistanceToSegment(p, t.b, t.c), sqrDistanceToSegment(p, t.c, t.a)});
+}
+
+/// Binary module: a collapse is legal only if every vertex of the original mesh stays within
+/// the tolerance of the collapsed surface. Like ModHausdorffT, each removed vertex is kept as a
+/// point attached to a face within the tolerance, and a collapse must find, for every point on
+/// the faces around v0, a face of the new one-ring within the tolerance. Differences: degenerate
+/// faces are measured, not waved through; a point is tried first against its own face; only the
+/// points whose face changed are redistributed; and the points live on across decimate() calls
+/// (initialize() clears nothing), so levels decimated in cascade stay bounded to the original.
+template <class MeshT> class ModDeviationT : public OpenMesh::Decimater::ModBaseT<MeshT> {
+public:
+    DECIMATING_MODULE(ModDeviationT, MeshT, Deviation);
+    using Point = typename MeshT::Point;
+    using FaceHandle = typename MeshT::FaceHandle;
+
+    explicit ModDeviationT(MeshT& mesh) : Base(mesh, true) { mesh.add_property(points_); }
+    ~ModDeviationT() override { Base::mesh().remove_property(points_); }
+    ModDeviationT(const ModDeviationT&) = delete;
+    ModDeviationT& operator=(const ModDeviationT&) = delete;
+
+    /// Object units. A vertex still in the mesh deviates by 0, so no point needs attaching yet.
+    void set_tolerance(double tolerance) noexcept { sqrTolerance_ = tolerance * tolerance; }
+
+    float collapse_priority(const CollapseInfo& ci) override {
+        MeshT& mesh = Base::mesh();
+        // The one-ring of v0 after the collapse: its faces but fl and fr, with v0 moved to p1.
+        ring_.clear();
+        ringFaces_.clear();
+        for (auto vf = mesh.cvf_iter(ci.v0); vf.is_valid(); ++vf) {
+            if (*vf == ci.fl || *vf == ci.fr) continue;
+            auto fv = mesh.cfv_iter(*vf);
+            std::array<Point, 3> p;
+            for (auto& q : p) {
+                q = *fv == ci.v0 ? ci.p1 : mesh.point(*fv);
+                ++fv;
+            }
+            ring_.emplace_back(p[0], p[1], p[2]);
+            ringFaces_.push_back(*vf);
+        }
+        if (!within(ci.p0, ring_.size())) return Base::ILLEGAL_COLLAPSE;
+        for (auto vf = mesh.cvf_iter(ci.v0); vf.is_valid(); ++vf) {
+            const size_t own = size_t(std::find(ringFaces_.begin(), ringFaces_.end(), *vf) - ringFaces_.begin());
+            for (const Point& p : mesh.property(points_, *vf))
+                if (!within(p, own)) return Base::ILLEGAL_COLLAPSE;
+        }
+        return Base::LEGAL_COLLAPSE;
+    }
+
+    void preprocess_collapse(const CollapseInfo& ci) override {
+        changed_.clear();
+        for (auto vf = Base::mesh().cvf_iter(ci.v0); vf.is_valid(); ++vf)
+            if (*vf != ci.fl && *vf != ci.fr) changed_.push_back(*vf);
+    }
+
+    void postprocess_collapse(const CollapseInfo& ci) override {
+        MeshT& mesh = Base::mesh();
+        // Faces around v1 that did not touch v0 are unchanged, and so are their points' distances:
+        // only the points of changed and deleted faces, and v0 itself, move to their nearest face.
+        moving_.clear();
+        moving_.push_back(ci.p0);
+        auto take = [&](FaceHandle f) {
+            if (!f.is_valid()) return;
+            auto& pts = mesh.property(points_, f);
+            moving_.insert(moving_.end(), pts.begin(), pts.end());
+            pts.clear();
+            pts.shrink_to_fit();
+        };
+        for (FaceHandle f : changed_) take(f);
+        take(ci.fl);
+        take(ci.fr);
+        ring_.clear();
+        ringFaces_.clear();
+        for (auto vf = mesh.cvf_iter(ci.v1); vf.is_valid(); ++vf) {
+            auto fv = mesh.cfv_iter(*vf);
+            const Point& a = mesh.point(*fv);
+            const Point& b = mesh.point(*++fv);
+            const Point& c = mesh.point(*++fv);
+            ring_.emplace_back(a, b, c);
+            ringFaces_.push_back(*vf);
+        }
+        if (ring_.empty()) return; // v1 lost its last face: nothing left to attach to
+        for (const Point& p : moving_) {
+            size_t best = 0;
+            double bestD = std::numeric_limits<double>::infinity();
+            for (size_t i = 0; i < ring_.size(); ++i) {
+                const double d = sqrDistance(p, ring_[i]);
+                if (d < bestD) bestD = d, best = i;
+            }
+            mesh.property(points_, ringFaces_[best]).push_back(p);
+        }
+    }
+
+private:
+    /// Whether p lies within the tolerance of a face of ring_, trying ring_[first] first.
+    [[nodiscard]] bool within(const Point& p, size_t first) const noexcept {
+        if (first < ring_.size() && sqrDistance(p, ring_[first]) <= sqrTolerance_) return true;
+        for (size_t i = 0; i < ring_.size(); ++i)
+            if (i != first && sqrDistance(p, ring_[i]) <= sqrTolerance_) return true;
+        return false;
+    }
+
+    OpenMesh::FPropHandleT<std::vector<Point>> points_;
+    double sqrTolerance_ = 0.;
+    std::vector<DistanceTriangle> ring_;
+    std::vector<FaceHandle> ringFaces_, changed_;
+    std::vector<Point> moving_;
+};
+
+/// ModQuadricT as the priority module, with two changes. The quadric error of a collapse within
+/// a plane rounds to a tiny negative now and then, which the decimater reads as "illegal": it is
+/// clamped to 0. And ties are broken towards short edges: on a tessellated tube every collapse
+/// along the tube costs exactly 0, and taken in heap order they pile whole rows into one vertex,
+/// whose valence then makes each later collapse quadratic; shortest first halves the rows evenly.
+template <class MeshT> class ModQuadricPriorityT : public OpenMesh::Decimater::ModQuadricT<MeshT> {
+public:
+    using Base = OpenMesh::Decimater::ModQuadricT<MeshT>;
+    using Base::Base;
+
+    /// Weight of |p1 - p0|² in the priority: small against the quadric error of a collapse that
+    /// moves the surface by the tolerance (≈ edge² × tolerance²).
+    void set_tolerance(double tolerance) noexcept { lengthWeight_ = 1e-3 * tolerance * tolerance; }
+
+    float collapse_priority(const typename Base::CollapseInfo& ci) override {
+        const float e = Base::collapse_priority(ci);
+        // Without a max error set, ModQuadricT answers ILLEGAL_COLLAPSE (-1) only for NaN.
+        if (e == float(Base::ILLEGAL_COLLAPSE)) return e;
+        return std::max(e, 0.f) + float(lengthWeight_ * (ci.p1 - ci.p0).sqrnorm());
+    }
+
+private:
+    double lengthWeight_ = 0.;
+};
+
+} // namespace geometry::lod::detail

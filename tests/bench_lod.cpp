@@ -1,0 +1,81 @@
+// Caster levels (geometry/lod) on (a) 4 million triangles of tessellated tubes (32 sides, radius
+// 0.3 m, 5 m long, 64 rows along; in 4 meshes) and (b) the built-in platform (box-shaped bars,
+// which should simplify little). Counters: for each relative error r of the default options, the
+// triangles a shadow pass draws if it allows r × each chunk's diagonal, over the source's.
+// Run: lod_benchmark --benchmark_min_time=1x (one build is seconds; no need for repetitions).
+#include "geometry/lod/caster_lod.h"
+#include "geometry/scene/builtin_scenes.h"
+#include "geometry/scene/chunking.h"
+#include "lod_test_meshes.h"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+using namespace geometry;
+
+namespace {
+
+scene::Scene tubeScene() {
+    scene::Scene s;
+    constexpr int kMeshes = 4, kTubesPerMesh = 245; // × 4096 triangles ≈ 4.01 million
+    const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int m = 0; m < kMeshes; ++m) {
+        scene::Mesh mesh;
+        mesh.name = "tubes" + std::to_string(m);
+        mesh.twoSided = false;
+        for (int i = 0; i < kTubesPerMesh; ++i) {
+            const glm::vec3 cell(float(i % 7) * 6.f, float((i / 7) % 7) * 6.f + 50.f * float(m), float(i / 49) * 6.f);
+            testutil::addTube(mesh, cell, axes[(i + m) % 3], 0.3f, 5.f, 32, 64, true);
+        }
+        scene::chunkMesh(mesh);
+        s.meshes.push_back(std::move(mesh));
+    }
+    return s;
+}
+
+void report(benchmark::State& state, const scene::Scene& s, const lod::SceneLod& lod) {
+    const std::vector<float> relative = lod::LodOptions{}.relativeErrors;
+    for (size_t i = 0; i < relative.size(); ++i) {
+        uint64_t drawn = 0;
+        for (size_t m = 0; m < s.meshes.size(); ++m)
+            for (size_t c = 0; c < s.meshes[m].chunks.size(); ++c) {
+                const scene::Chunk& chunk = s.meshes[m].chunks[c];
+                const auto& levels = lod.meshes[m].chunkLevels[c];
+                const float allowed = relative[i] * glm::length(chunk.bounds.extent()) * 1.0001f;
+                const int k = lod::coarsestLevelWithin(levels, allowed);
+                drawn += k < 0 ? chunk.triangleCount : levels[size_t(k)].triangleCount;
+            }
+        state.counters["drawn@1/" + std::to_string(int(1.f / relative[i] + 0.5f))] =
+            double(drawn) / double(lod.sourceTriangles);
+    }
+    state.counters["source_Mtri"] = double(lod.sourceTriangles) * 1e-6;
+    state.counters["levels_Mtri"] = double(lod.lodTriangles) * 1e-6;
+}
+
+void run(benchmark::State& state, const scene::Scene& s) {
+    lod::LodOptions options;
+    options.threads = unsigned(state.range(0));
+    lod::SceneLod lod;
+    for (auto _ : state) {
+        lod = lod::buildCasterLod(s, options);
+        benchmark::DoNotOptimize(lod.meshes.data());
+    }
+    report(state, s, lod);
+}
+
+} // namespace
+
+static void BM_Tubes(benchmark::State& state) {
+    static const scene::Scene s = tubeScene();
+    run(state, s);
+}
+BENCHMARK(BM_Tubes)->Arg(2)->Arg(1)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
+static void BM_Platform(benchmark::State& state) {
+    static const scene::Scene s = scene::makePlatformScene();
+    run(state, s);
+}
+BENCHMARK(BM_Platform)->Arg(2)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
+BENCHMARK_MAIN();
