@@ -1,7 +1,7 @@
 // Caster levels (geometry/lod) on (a) 4 million triangles of tessellated tubes (32 sides, radius
 // 0.3 m, 5 m long, 64 rows along; in 4 meshes) and (b) the built-in platform (box-shaped bars,
-// which should simplify little). Counters: for each relative error r of the default options, the
-// triangles a shadow pass draws if it allows r × each chunk's diagonal, over the source's.
+// which should simplify little), and the tubes again with one chunk per tube. Counters: for each relative error r of
+// the default options, the triangles a shadow pass draws if it allows r × each chunk's diagonal, over the source's.
 // Run: lod_benchmark --benchmark_min_time=1x (one build is seconds; no need for repetitions).
 #include "geometry/lod/caster_lod.h"
 #include "geometry/scene/builtin_scenes.h"
@@ -16,7 +16,9 @@ using namespace geometry;
 
 namespace {
 
-scene::Scene tubeScene() {
+/// perTubeChunks: one chunk per tube (each is 4096 triangles) instead of chunkMesh's median
+/// splits, which cut tubes across and along; every cut is locked, so this shows what they cost.
+scene::Scene tubeScene(bool perTubeChunks) {
     scene::Scene s;
     constexpr int kMeshes = 4, kTubesPerMesh = 245; // × 4096 triangles ≈ 4.01 million
     const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -28,7 +30,15 @@ scene::Scene tubeScene() {
             const glm::vec3 cell(float(i % 7) * 6.f, float((i / 7) % 7) * 6.f + 50.f * float(m), float(i / 49) * 6.f);
             testutil::addTube(mesh, cell, axes[(i + m) % 3], 0.3f, 5.f, 32, 64, true);
         }
-        scene::chunkMesh(mesh);
+        if (perTubeChunks) {
+            for (uint32_t first = 0; first < mesh.triangleCount(); first += 4096) {
+                scene::Chunk c{first, 4096, {}};
+                for (uint32_t i = 3 * first; i < 3 * (first + 4096); ++i) c.bounds.add(mesh.positions[mesh.indices[i]]);
+                mesh.chunks.push_back(c);
+            }
+        } else {
+            scene::chunkMesh(mesh);
+        }
         s.meshes.push_back(std::move(mesh));
     }
     return s;
@@ -67,10 +77,16 @@ void run(benchmark::State& state, const scene::Scene& s) {
 } // namespace
 
 static void BM_Tubes(benchmark::State& state) {
-    static const scene::Scene s = tubeScene();
+    static const scene::Scene s = tubeScene(false);
     run(state, s);
 }
 BENCHMARK(BM_Tubes)->Arg(2)->Arg(1)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+
+static void BM_TubesChunkPerTube(benchmark::State& state) {
+    static const scene::Scene s = tubeScene(true);
+    run(state, s);
+}
+BENCHMARK(BM_TubesChunkPerTube)->Arg(2)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 static void BM_Platform(benchmark::State& state) {
     static const scene::Scene s = scene::makePlatformScene();

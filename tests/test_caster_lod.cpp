@@ -1,5 +1,6 @@
 #include "geometry/lod/caster_lod.h"
 #include "geometry/scene/chunking.h"
+#include "geometry/scene/mesh_builder.h"
 #include "lod_test_meshes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -75,6 +76,41 @@ std::vector<glm::vec3> samples(const std::array<glm::vec3, 3>& t, int n = 6) {
             out.push_back(t[0] + a * (t[1] - t[0]) + b * (t[2] - t[0]));
         }
     return out;
+}
+
+std::vector<std::array<glm::vec3, 3>> meshTriangles(const scene::Mesh& m) {
+    std::vector<std::array<glm::vec3, 3>> out;
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+        std::array<glm::vec3, 3> tri{};
+        for (int k = 0; k < 3; ++k) tri[k] = glm::vec3(m.transform * glm::vec4(m.positions[m.indices[3 * t + k]], 1.f));
+        out.push_back(tri);
+    }
+    return out;
+}
+
+float distanceToSet(const glm::vec3& p, const std::vector<std::array<glm::vec3, 3>>& set) {
+    float d = std::numeric_limits<float>::infinity();
+    for (const auto& t : set) d = std::min(d, distanceToTriangle(p, t));
+    return d;
+}
+
+/// The bound the builder guarantees: the farthest vertex or edge midpoint of `from` from `to`.
+float farthestVertexOrMidpoint(const std::vector<std::array<glm::vec3, 3>>& from,
+                               const std::vector<std::array<glm::vec3, 3>>& to) {
+    float farthest = 0.f;
+    for (const auto& t : from)
+        for (int k = 0; k < 3; ++k)
+            farthest = std::max({farthest, distanceToSet(t[k], to), distanceToSet(0.5f * (t[k] + t[(k + 1) % 3]), to)});
+    return farthest;
+}
+
+/// How far the level strays from the original, sampled (measured, not guaranteed).
+float farthestSample(const std::vector<std::array<glm::vec3, 3>>& level,
+                     const std::vector<std::array<glm::vec3, 3>>& original) {
+    float farthest = 0.f;
+    for (const auto& t : level)
+        for (const glm::vec3& p : samples(t, 4)) farthest = std::max(farthest, distanceToSet(p, original));
+    return farthest;
 }
 
 bool allFinite(const MeshLod& lod) {
@@ -157,7 +193,7 @@ TEST_P(CasterLodBound, LevelsStayWithinTheirErrorAndDoNotShrink) {
         return glm::length((p - a) - glm::dot(p - a, d) * d);
     };
     const float eps = GetParam() == 0 ? 1e-5f : 2e-4f; // float rounding of world positions ~300 m out
-    const scene::Mesh& mesh = s.meshes[0];
+    const auto original = meshTriangles(s.meshes[0]);
     for (const LodRange& level : levels) {
         const auto tris = levelTriangles(lod.meshes[0], level, transform);
         for (const auto& t : tris)
@@ -166,20 +202,60 @@ TEST_P(CasterLodBound, LevelsStayWithinTheirErrorAndDoNotShrink) {
         for (const auto& t : tris)
             for (const glm::vec3& p : samples(t)) closest = std::min(closest, axisDistance(p));
         EXPECT_GE(closest, rInner - level.error - eps) << "error " << level.error;
-        // The bound the builder guarantees: every original vertex within `error` of the level.
-        float farthest = 0.f;
-        for (const glm::vec3& q : mesh.positions) {
-            const glm::vec3 w = glm::vec3(transform * glm::vec4(q, 1.f));
-            float d = std::numeric_limits<float>::infinity();
-            for (const auto& t : tris) d = std::min(d, distanceToTriangle(w, t));
-            farthest = std::max(farthest, d);
-        }
+        // The bound the builder guarantees: every original vertex and edge midpoint within `error`.
+        const float farthest = farthestVertexOrMidpoint(original, tris);
         EXPECT_LE(farthest, level.error + eps);
         EXPECT_GT(farthest, 0.25f * level.error) << "the level uses little of its error";
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(IdentityAndScaled, CasterLodBound, ::testing::Values(0, 1));
+
+// Creases: a flange (a short capped cylinder, caps with their own vertices as CAD exports them)
+// keeps its rims within the error; vertices alone would let a level cut across a long rim edge.
+TEST(CasterLod, CreasesStayWithinError) {
+    scene::MeshBuilder mb("flange", glm::vec3(1.f));
+    mb.addCylinder(glm::vec3(0.f), glm::vec3(0.f, 0.4f, 0.f), 1.f, 96);
+    const scene::Scene s = sceneOf(mb.build());
+    const lod::SceneLod lod = lod::buildCasterLod(s);
+    const auto& levels = lod.meshes[0].chunkLevels[0];
+    ASSERT_GE(levels.size(), 2u);
+    EXPECT_LE(levels.back().triangleCount, s.meshes[0].chunks[0].triangleCount / 4);
+    const auto original = meshTriangles(s.meshes[0]);
+    for (const LodRange& level : levels) {
+        const auto tris = levelTriangles(lod.meshes[0], level, glm::mat4(1.f));
+        EXPECT_LE(farthestVertexOrMidpoint(original, tris), level.error + 1e-5f);
+        EXPECT_LE(farthestSample(tris, original), level.error + 1e-5f) << "measured on this model, not guaranteed";
+    }
+}
+
+// A flat open sheet is thin only by its width: a wide grid simplifies, a narrow strip stays exact.
+TEST(CasterLod, SheetsAreThinByTheirWidth) {
+    scene::MeshBuilder mb("deck", glm::vec3(1.f));
+    mb.addGroundGrid(glm::vec3(0.f), 10.f, 40); // 3200 triangles
+    scene::Mesh m = mb.build();
+    const auto stripFirst = uint32_t(m.positions.size());
+    for (int i = 0; i <= 50; ++i) // a 2 cm × 10 m strip at y = 1, 100 triangles
+        for (float z : {0.f, 0.02f}) {
+            m.positions.push_back({-5.f + 0.2f * float(i), 1.f, z});
+            m.normals.push_back({0, 1, 0});
+        }
+    for (uint32_t i = 0; i < 50; ++i) {
+        const uint32_t p = stripFirst + 2 * i;
+        m.indices.insert(m.indices.end(), {p, p + 1, p + 3, p, p + 3, p + 2});
+    }
+    const scene::Scene s = sceneOf(m);
+    ASSERT_EQ(s.meshes[0].chunks.size(), 1u);
+    const lod::SceneLod lod = lod::buildCasterLod(s);
+    const auto& levels = lod.meshes[0].chunkLevels[0];
+    ASSERT_FALSE(levels.empty());
+    for (const LodRange& r : levels) {
+        uint32_t strip = 0, grid = 0;
+        for (const auto& t : levelTriangles(lod.meshes[0], r, glm::mat4(1.f))) (t[0].y == 1.f ? strip : grid) += 1;
+        EXPECT_EQ(strip, 100u);
+        EXPECT_LE(grid, 3200u / 20);
+    }
+}
 
 // (3) A 2.4 cm bar sharing a chunk with a large tube stays exact in every level; without the
 // thin rule it would be decimated (the control that this test can fail): it is straight, so

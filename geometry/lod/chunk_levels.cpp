@@ -28,7 +28,7 @@ std::vector<uint32_t> firstThinLevels(const ChunkTriangles& chunk, std::span<con
         world[part[v]].push_back(glm::vec3(s.transform * glm::vec4(chunk.positions[v], 1.f)));
     std::vector<uint32_t> first(parts, uint32_t(s.errors.size()));
     for (uint32_t p = 0; p < parts; ++p) {
-        const float thickness = smallestExtent(world[p]);
+        const float thickness = partThickness(world[p]);
         for (uint32_t k = 0; k < s.errors.size() && first[p] == s.errors.size(); ++k)
             if (!(thickness >= s.thinFactor * s.errors[k])) first[p] = k; // NaN: thin, kept exact
     }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -28,10 +29,12 @@ using LodMesh = OpenMesh::TriMesh_ArrayKernelT<LodTraits>;
 struct DistanceTriangle {
     OpenMesh::Vec3d a, b, c, n; // n: unnormalized normal
     double nn = 0.;             // |n|²; 0 for a degenerate triangle (measured as its edges)
+    OpenMesh::Vec3d lo, hi;     // bounding box
 
     DistanceTriangle() = default;
     DistanceTriangle(const OpenMesh::Vec3d& a_, const OpenMesh::Vec3d& b_, const OpenMesh::Vec3d& c_) noexcept
-        : a(a_), b(b_), c(c_), n((b_ - a_) % (c_ - a_)), nn(n.sqrnorm()) {
+        : a(a_), b(b_), c(c_), n((b_ - a_) % (c_ - a_)), nn(n.sqrnorm()), lo(a_.min(b_).min(c_)),
+          hi(a_.max(b_).max(c_)) {
         const double longest = std::max({(b - a).sqrnorm(), (c - b).sqrnorm(), (a - c).sqrnorm()});
         // Collinear within rounding: the plane is meaningless, the edges are not.
         if (!(nn > 1e-24 * longest * longest)) nn = 0.;
@@ -46,35 +49,51 @@ struct DistanceTriangle {
     return (a + ab * t - p).sqrnorm();
 }
 
-/// Squared distance from p to the closed triangle. Unlike ModHausdorffT's, it answers a
+/// Squared distance from p to the closed triangle, by the Voronoi regions of its corners and
+/// edges (Ericson, Real-Time Collision Detection §5.1.5). Unlike ModHausdorffT's, it answers a
 /// degenerate triangle with the distance to its edges, not with -1 (which passes every test).
 [[nodiscard]] inline double sqrDistance(const OpenMesh::Vec3d& p, const DistanceTriangle& t) noexcept {
-    if (t.nn > 0.) {
-        // Inside the prism over the triangle: the distance to its plane.
-        const bool inAB = (((t.b - t.a) % (p - t.a)) | t.n) >= 0.;
-        const bool inBC = (((t.c - t.b) % (p - t.b)) | t.n) >= 0.;
-        const bool inCA = (((t.a - t.c) % (p - t.c)) | t.n) >= 0.;
-        if (inAB && inBC && inCA) {
-            const double d = (p - t.a) | t.n;
-            return d * d / t.nn;
-        }
-    }
-    return std::min(
-        {sqrDistanceToSegment(p, t.a, t.b), sqrDistanceToSegment(p, t.b, t.c), sqrDistanceToSegment(p, t.c, t.a)});
+    if (!(t.nn > 0.))
+        return std::min(
+            {sqrDistanceToSegment(p, t.a, t.b), sqrDistanceToSegment(p, t.b, t.c), sqrDistanceToSegment(p, t.c, t.a)});
+    const OpenMesh::Vec3d ab = t.b - t.a, ac = t.c - t.a, ap = p - t.a;
+    const double d1 = ab | ap, d2 = ac | ap;
+    if (d1 <= 0. && d2 <= 0.) return ap.sqrnorm();
+    const OpenMesh::Vec3d bp = p - t.b;
+    const double d3 = ab | bp, d4 = ac | bp;
+    if (d3 >= 0. && d4 <= d3) return bp.sqrnorm();
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0. && d1 >= 0. && d3 <= 0.) return (ap - ab * (d1 / (d1 - d3))).sqrnorm();
+    const OpenMesh::Vec3d cp = p - t.c;
+    const double d5 = ab | cp, d6 = ac | cp;
+    if (d6 >= 0. && d5 <= d6) return cp.sqrnorm();
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0. && d2 >= 0. && d6 <= 0.) return (ap - ac * (d2 / (d2 - d6))).sqrnorm();
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0. && d4 - d3 >= 0. && d5 - d6 >= 0.)
+        return (bp - (t.c - t.b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))).sqrnorm();
+    const double d = ap | t.n; // inside the prism over the triangle: the distance to its plane
+    return d * d / t.nn;
 }
 
-/// Binary module: a collapse is legal only if every vertex of the original mesh stays within
-/// the tolerance of the collapsed surface. Like ModHausdorffT, each removed vertex is kept as a
-/// point attached to a face within the tolerance, and a collapse must find, for every point on
-/// the faces around v0, a face of the new one-ring within the tolerance. Differences: degenerate
-/// faces are measured, not waved through; a point is tried first against its own face; only the
-/// points whose face changed are redistributed; and the points live on across decimate() calls
-/// (initialize() clears nothing), so levels decimated in cascade stay bounded to the original.
+/// Binary module: a collapse is legal only if every vertex and every edge midpoint of the
+/// original mesh stays within the tolerance of the collapsed surface. Like ModHausdorffT, each
+/// such point (a removed vertex, a midpoint) is attached to a face within the tolerance, and a
+/// collapse must find, for every point on the faces around v0, a face of the new one-ring within
+/// the tolerance. Differences: edge midpoints are sampled too; degenerate faces are measured, not
+/// waved through; a point is tried first against its own face and stays on it while it is within
+/// the tolerance; and the points live on across decimation runs (only initialize() attaches), so
+/// levels decimated in cascade stay bounded to the original. The caller must re-check every
+/// vertex around v1 after a collapse (LodDecimater does), since points move onto all its faces.
 template <class MeshT> class ModDeviationT : public OpenMesh::Decimater::ModBaseT<MeshT> {
 public:
     DECIMATING_MODULE(ModDeviationT, MeshT, Deviation);
     using Point = typename MeshT::Point;
     using FaceHandle = typename MeshT::FaceHandle;
+
+    /// A collapse whose faces carry more points is refused: a check costs points × faces, and
+    /// faces this heavy are already few and large (a flat deck near its last triangles).
+    static constexpr size_t kMaxPoints = 1024;
 
     explicit ModDeviationT(MeshT& mesh) : Base(mesh, true) { mesh.add_property(points_); }
     ~ModDeviationT() override { Base::mesh().remove_property(points_); }
@@ -83,6 +102,19 @@ public:
 
     /// Object units. A vertex still in the mesh deviates by 0, so no point needs attaching yet.
     void set_tolerance(double tolerance) noexcept { sqrTolerance_ = tolerance * tolerance; }
+
+    /// Attaches the midpoint of every edge to a face of it. Vertices alone miss a corner cut
+    /// across a long crease (a box's edge, a flange's rim), which has no vertex inside it.
+    void initialize() override {
+        MeshT& mesh = Base::mesh();
+        for (const auto e : mesh.edges()) {
+            const auto h = mesh.halfedge_handle(e, 0);
+            const FaceHandle f = mesh.is_boundary(h) ? mesh.opposite_face_handle(h) : mesh.face_handle(h);
+            if (f.is_valid())
+                mesh.property(points_, f)
+                    .push_back(0.5 * (mesh.point(mesh.from_vertex_handle(h)) + mesh.point(mesh.to_vertex_handle(h))));
+        }
+    }
 
     float collapse_priority(const CollapseInfo& ci) override {
         MeshT& mesh = Base::mesh();
@@ -101,10 +133,19 @@ public:
             ringFaces_.push_back(*vf);
         }
         if (!within(ci.p0, ring_.size())) return Base::ILLEGAL_COLLAPSE;
+        size_t points = 0;
+        for (auto vf = mesh.cvf_iter(ci.v0); vf.is_valid(); ++vf) points += mesh.property(points_, *vf).size();
+        if (points > kMaxPoints) return Base::ILLEGAL_COLLAPSE;
         for (auto vf = mesh.cvf_iter(ci.v0); vf.is_valid(); ++vf) {
             const size_t own = size_t(std::find(ringFaces_.begin(), ringFaces_.end(), *vf) - ringFaces_.begin());
-            for (const Point& p : mesh.property(points_, *vf))
-                if (!within(p, own)) return Base::ILLEGAL_COLLAPSE;
+            auto& pts = mesh.property(points_, *vf);
+            for (auto p = pts.begin(); p != pts.end(); ++p)
+                if (!within(*p, own)) {
+                    // To the front: the points that block one collapse tend to block the next
+                    // ones tried around here, and a refusal is cheap only if it comes early.
+                    std::iter_swap(pts.begin(), p);
+                    return Base::ILLEGAL_COLLAPSE;
+                }
         }
         return Base::LEGAL_COLLAPSE;
     }
@@ -117,28 +158,36 @@ public:
 
     void postprocess_collapse(const CollapseInfo& ci) override {
         MeshT& mesh = Base::mesh();
-        // Faces around v1 that did not touch v0 are unchanged, and so are their points' distances:
-        // only the points of changed and deleted faces, and v0 itself, move to their nearest face.
-        moving_.clear();
-        moving_.push_back(ci.p0);
-        auto take = [&](FaceHandle f) {
-            if (!f.is_valid()) return;
-            auto& pts = mesh.property(points_, f);
-            moving_.insert(moving_.end(), pts.begin(), pts.end());
-            pts.clear();
-            pts.shrink_to_fit();
-        };
-        for (FaceHandle f : changed_) take(f);
-        take(ci.fl);
-        take(ci.fr);
-        ring_.clear();
-        ringFaces_.clear();
-        for (auto vf = mesh.cvf_iter(ci.v1); vf.is_valid(); ++vf) {
-            auto fv = mesh.cfv_iter(*vf);
+        auto triangle = [&](FaceHandle f) {
+            auto fv = mesh.cfv_iter(f);
             const Point& a = mesh.point(*fv);
             const Point& b = mesh.point(*++fv);
             const Point& c = mesh.point(*++fv);
-            ring_.emplace_back(a, b, c);
+            return DistanceTriangle(a, b, c);
+        };
+        // Points stay on their face while it is within the tolerance (faces that did not touch
+        // v0 did not move at all); the others, v0 and those of the deleted faces move to their
+        // nearest face around v1.
+        moving_.clear();
+        moving_.push_back(ci.p0);
+        for (FaceHandle f : changed_) {
+            auto& pts = mesh.property(points_, f);
+            if (pts.empty()) continue;
+            const DistanceTriangle t = triangle(f);
+            const auto away = std::partition(pts.begin(), pts.end(), [&](const Point& p) { return within(p, t); });
+            moving_.insert(moving_.end(), away, pts.end());
+            pts.erase(away, pts.end());
+        }
+        for (FaceHandle f : {ci.fl, ci.fr}) {
+            if (!f.is_valid()) continue;
+            auto& pts = mesh.property(points_, f);
+            moving_.insert(moving_.end(), pts.begin(), pts.end());
+            std::vector<Point>().swap(pts);
+        }
+        ring_.clear();
+        ringFaces_.clear();
+        for (auto vf = mesh.cvf_iter(ci.v1); vf.is_valid(); ++vf) {
+            ring_.push_back(triangle(*vf));
             ringFaces_.push_back(*vf);
         }
         if (ring_.empty()) return; // v1 lost its last face: nothing left to attach to
@@ -154,11 +203,21 @@ public:
     }
 
 private:
+    /// Whether p lies within the tolerance of t: two cheap refusals (its box, its plane) first.
+    [[nodiscard]] bool within(const Point& p, const DistanceTriangle& t) const noexcept {
+        const double tol = std::sqrt(sqrTolerance_);
+        for (int i = 0; i < 3; ++i)
+            if (p[i] < t.lo[i] - tol || p[i] > t.hi[i] + tol) return false;
+        const double d = (p - t.a) | t.n;
+        if (d * d > sqrTolerance_ * t.nn) return false;
+        return sqrDistance(p, t) <= sqrTolerance_;
+    }
+
     /// Whether p lies within the tolerance of a face of ring_, trying ring_[first] first.
     [[nodiscard]] bool within(const Point& p, size_t first) const noexcept {
-        if (first < ring_.size() && sqrDistance(p, ring_[first]) <= sqrTolerance_) return true;
+        if (first < ring_.size() && within(p, ring_[first])) return true;
         for (size_t i = 0; i < ring_.size(); ++i)
-            if (i != first && sqrDistance(p, ring_[i]) <= sqrTolerance_) return true;
+            if (i != first && within(p, ring_[i])) return true;
         return false;
     }
 

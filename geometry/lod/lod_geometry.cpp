@@ -1,6 +1,7 @@
 #include "geometry/lod/lod_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -68,11 +69,12 @@ glm::dmat3 symmetricEigen(const glm::dmat3& input, glm::dvec3& values) noexcept 
     return v;
 }
 
-float smallestExtent(std::span<const glm::vec3> points) noexcept {
+float partThickness(std::span<const glm::vec3> points) noexcept {
     if (points.size() < 2) return 0.f;
     glm::dvec3 mean(0.);
     for (const glm::vec3& p : points) mean += glm::dvec3(p);
     mean /= double(points.size());
+    if (std::isnan(glm::dot(mean, mean))) return std::numeric_limits<float>::quiet_NaN();
     glm::dmat3 cov(0.);
     for (const glm::vec3& p : points) {
         const glm::dvec3 d = glm::dvec3(p) - mean;
@@ -80,15 +82,22 @@ float smallestExtent(std::span<const glm::vec3> points) noexcept {
     }
     glm::dvec3 values;
     const glm::dmat3 axes = symmetricEigen(cov, values);
-    float thinnest = std::numeric_limits<float>::infinity();
+    std::array<float, 3> principal{}; // extents along the principal axes, by ascending variance
+    std::array<int, 3> order = {0, 1, 2};
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return values[a] < values[b]; });
+    for (int i = 0; i < 3; ++i) {
+        const double len = glm::length(axes[order[i]]);
+        principal[i] = len > 0. ? extentAlong(points, axes[order[i]] / len) : 0.f;
+    }
+    // Flat within rounding (a sheet, even one far from the origin or turned by a transform).
+    if (principal[0] <= 1e-4f * principal[1]) return principal[1];
+    float thinnest = std::min({principal[0], principal[1], principal[2]});
     for (int i = 0; i < 3; ++i) {
         glm::dvec3 unit(0.);
         unit[i] = 1.;
         thinnest = std::min(thinnest, extentAlong(points, unit));
-        const double len = glm::length(axes[i]);
-        if (len > 0.) thinnest = std::min(thinnest, extentAlong(points, axes[i] / len));
     }
-    return std::isnan(glm::dot(mean, mean)) ? std::numeric_limits<float>::quiet_NaN() : thinnest;
+    return thinnest;
 }
 
 float largestStretch(const glm::mat4& m) noexcept {

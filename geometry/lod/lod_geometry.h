@@ -14,10 +14,11 @@ namespace geometry::lod::detail {
 /// part of their own.
 [[nodiscard]] std::vector<uint32_t> connectedParts(size_t vertexCount, std::span<const uint32_t> triangles);
 
-/// The smallest extent of the points over the three coordinate axes and their three principal
-/// axes: a part's thickness (a bar's width along any direction across it, a plate's thickness).
-/// 0 for fewer than two points; NaN in, NaN out.
-[[nodiscard]] float smallestExtent(std::span<const glm::vec3> points) noexcept;
+/// How thin a part is, from its points: the smallest extent over the three coordinate axes and
+/// the three principal axes (a bar's width across it, a plate's thickness). A flat part, an open
+/// sheet, can only vanish by narrowing, so its thickness is its width in its plane: the extent
+/// along the middle principal axis. 0 for fewer than two points; NaN in, NaN out.
+[[nodiscard]] float partThickness(std::span<const glm::vec3> points) noexcept;
 
 /// The largest factor by which the linear part of `m` stretches a length (its largest singular
 /// value): an object-space distance d is at most d × this in world space.
