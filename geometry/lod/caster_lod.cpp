@@ -2,14 +2,15 @@
 // chunk's levels on worker threads (chunk_levels.cpp) and gathers them in chunk order.
 //
 // What the error bounds. Levels come from halfedge collapses, so every vertex of a level is a
-// vertex of the original. ModDeviationT refuses any collapse that would leave a vertex of the
-// original farther than error / stretch (object units) from the level's surface, stretch being
-// the transform's largest singular value, so in world units every original vertex lies within
-// `error` of the level. That is a one-sided Hausdorff bound sampled at the original's vertices;
-// the other side (how far the level's triangles stray from the original) is not measured, but
-// ModNormalFlippingT forbids fold-overs, and on tessellated curved surfaces the largest stray, a
-// chord's sagitta, is the distance of the removed vertex above it (tests/test_caster_lod.cpp
-// checks both sides on a cylinder).
+// vertex of the original. ModDeviationT refuses any collapse that would leave a vertex or an
+// edge midpoint of the original farther than error / stretch (object units) from the level's
+// surface, stretch being the transform's largest singular value; so in world units they all lie
+// within `error` of the level. That is a one-sided Hausdorff bound sampled at the original's
+// vertices and edge midpoints, ModHausdorffT's idea with midpoints added. The other side, how far
+// a level's triangles stray from the original, is not bounded; ModNormalFlippingT forbids
+// fold-overs, and a stray needs an original sample under it to be seen. Measured by brute force
+// (tests/test_caster_lod.cpp on tubes and capped cylinders, and on the platform): at most 0.93 ×
+// error, against 1.39 × with vertices alone, whose bound missed corners cut across long creases.
 //
 // Index
 //   [SECTION] Welding ........... weldPositions, sharedVertices

@@ -14,9 +14,9 @@ namespace geometry::lod {
 struct LodRange {
     uint32_t firstTriangle = 0;
     uint32_t triangleCount = 0;
-    /// Bound on the deviation from the original chunk, world units: every vertex of the original
-    /// lies within `error` of this level's surface, and every vertex of this level is a vertex of
-    /// the original (caster_lod.cpp, "What the error bounds").
+    /// Bound on the deviation from the original chunk, world units: every vertex and every edge
+    /// midpoint of the original lies within `error` of this level's surface, and every vertex of
+    /// this level is a vertex of the original (caster_lod.cpp, "What the error bounds").
     float error = 0.f;
 };
 

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -101,7 +100,10 @@ public:
     ModDeviationT& operator=(const ModDeviationT&) = delete;
 
     /// Object units. A vertex still in the mesh deviates by 0, so no point needs attaching yet.
-    void set_tolerance(double tolerance) noexcept { sqrTolerance_ = tolerance * tolerance; }
+    void set_tolerance(double tolerance) noexcept {
+        tolerance_ = tolerance;
+        sqrTolerance_ = tolerance * tolerance;
+    }
 
     /// Attaches the midpoint of every edge to a face of it. Vertices alone miss a corner cut
     /// across a long crease (a box's edge, a flange's rim), which has no vertex inside it.
@@ -205,9 +207,8 @@ public:
 private:
     /// Whether p lies within the tolerance of t: two cheap refusals (its box, its plane) first.
     [[nodiscard]] bool within(const Point& p, const DistanceTriangle& t) const noexcept {
-        const double tol = std::sqrt(sqrTolerance_);
         for (int i = 0; i < 3; ++i)
-            if (p[i] < t.lo[i] - tol || p[i] > t.hi[i] + tol) return false;
+            if (p[i] < t.lo[i] - tolerance_ || p[i] > t.hi[i] + tolerance_) return false;
         const double d = (p - t.a) | t.n;
         if (d * d > sqrTolerance_ * t.nn) return false;
         return sqrDistance(p, t) <= sqrTolerance_;
@@ -222,7 +223,7 @@ private:
     }
 
     OpenMesh::FPropHandleT<std::vector<Point>> points_;
-    double sqrTolerance_ = 0.;
+    double tolerance_ = 0., sqrTolerance_ = 0.;
     std::vector<DistanceTriangle> ring_;
     std::vector<FaceHandle> ringFaces_, changed_;
     std::vector<Point> moving_;

@@ -5,11 +5,11 @@
 // OpenMesh's DecimaterT does the same eagerly: after each collapse it runs every module on every
 // outgoing halfedge of every vertex around it. Here the queue holds a cheap lower bound first
 // (the smallest quadric priority over a vertex's halfedges, no checks), and a vertex is checked
-// only when it reaches the front: its halfedges in priority order until one passes. The order of
-// collapses is the same (the bound is exact whenever the best halfedge is legal), at a few
-// checks per collapse instead of ~40. And after a collapse every vertex around v1 is queued
-// again, not only those around v0: ModDeviationT moves points onto all of v1's faces, and a
-// check made before that would be stale.
+// only when it reaches the front: its halfedges in priority order until one passes. A checked
+// entry at the front beats every other vertex's lower bound, so collapses come in the same order
+// (ties aside), at a few checks per collapse instead of ~40. And after a collapse every vertex
+// around v1 is queued again, not only those around v0: ModDeviationT moves points onto all of
+// v1's faces, and a check made before that would be stale (DecimaterT re-checks only topology).
 #include "geometry/lod/decimation_modules.h"
 
 #include <OpenMesh/Tools/Decimater/CollapseInfoT.hh>
