@@ -209,8 +209,10 @@ private:
     [[nodiscard]] bool within(const Point& p, const DistanceTriangle& t) const noexcept {
         for (int i = 0; i < 3; ++i)
             if (p[i] < t.lo[i] - tolerance_ || p[i] > t.hi[i] + tolerance_) return false;
-        const double d = (p - t.a) | t.n;
-        if (d * d > sqrTolerance_ * t.nn) return false;
+        if (t.nn > 0.) {
+            const double d = (p - t.a) | t.n;
+            if (d * d > sqrTolerance_ * t.nn) return false;
+        }
         return sqrDistance(p, t) <= sqrTolerance_;
     }
 
