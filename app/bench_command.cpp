@@ -1,5 +1,6 @@
 #include "bench_command.h"
 
+#include "app/caster_lod_setup.h"
 #include "app/resources.h"
 
 #include "geometry/analysis/ground_truth.h"
@@ -205,6 +206,7 @@ int runBench(const BenchOptions& o) {
         for (const auto& [viewName, view] : views) {
             scene.camera = view.camera;
             scene.light = view.light;
+            ensureCasterLod(r, scene, cfg.settings);
             const renderer::Measurement m =
                 renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, scene.light, o.common.size,
                                   {.warmup = o.warmup, .frames = o.frames, .truthSamples = o.truth.samples},

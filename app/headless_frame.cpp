@@ -1,5 +1,6 @@
 #include "headless_frame.h"
 
+#include "caster_lod_setup.h"
 #include "renderer/plan_frame.h"
 
 #include <algorithm>
@@ -16,6 +17,7 @@ HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames, ren
     const geometry::shadow::ShadowSettings& settings = options.settings;
     f.renderer = std::make_unique<renderer::Renderer>(f.scene);
     if (views.lightViewSize <= 0) views.lightViewSize = lightViewSize(settings.resolution);
+    ensureCasterLod(*f.renderer, f.scene, settings);
     for (int i = 0; i <= warmupFrames; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
         f.plan =

@@ -49,15 +49,17 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     nlohmann::json splits = nlohmann::json::array();
     for (size_t i = 0; i < f.plan.splits.size(); ++i) {
         const auto& s = f.plan.splits[i];
-        splits.push_back({{"near", s.near},
-                          {"far", s.far},
-                          {"n_prime", s.warped() ? nlohmann::json(s.nPrime) : nlohmann::json("inf")},
-                          {"lambda", s.lambda},
-                          {"resolution", s.resolution},
-                          {"empty", s.empty()},
-                          {"samples", s.samples},
-                          {"skipped", s.skipped},
-                          {"triangles", i < stats.splitTriangles.size() ? stats.splitTriangles[i] : 0}});
+        splits.push_back(
+            {{"near", s.near},
+             {"far", s.far},
+             {"n_prime", s.warped() ? nlohmann::json(s.nPrime) : nlohmann::json("inf")},
+             {"lambda", s.lambda},
+             {"resolution", s.resolution},
+             {"empty", s.empty()},
+             {"samples", s.samples},
+             {"skipped", s.skipped},
+             {"triangles", i < stats.splitTriangles.size() ? stats.splitTriangles[i] : 0},
+             {"triangles_without_lod", i < stats.splitTrianglesFull.size() ? stats.splitTrianglesFull[i] : 0}});
     }
     j["splits"] = splits;
     j["shadow_map_resolution_used"] = stats.shadowResolution;

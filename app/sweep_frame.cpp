@@ -1,5 +1,7 @@
 #include "sweep_frame.h"
 
+#include "caster_lod_setup.h"
+
 #include <unistd.h>
 
 #include <chrono>
@@ -30,6 +32,7 @@ SweepRenderer::SweepRenderer(const geometry::scene::Scene& scene, const std::str
 SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& settings,
                                  const geometry::scene::Camera& camera, const geometry::scene::DirectionalLight& light,
                                  const geometry::shadow::Viewport& viewport) {
+    ensureCasterLod(*renderer_, scene_, settings);
     context_->makeCurrent();
     SweepFrame f;
     renderer::Measurement m = renderer::measure(*renderer_, settings, scene_.bounds(), camera, light, viewport,

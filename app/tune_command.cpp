@@ -1,5 +1,6 @@
 #include "tune_command.h"
 
+#include "app/caster_lod_setup.h"
 #include "app/resources.h"
 
 #include "geometry/analysis/ground_truth.h"
@@ -129,6 +130,7 @@ int runTune(const TuneCommandOptions& o) {
               << context->rendererString() << '\n';
     const auto t0 = std::chrono::steady_clock::now();
     while (const auto request = tuner.next()) {
+        ensureCasterLod(r, scene, request->settings);
         const TuneFigures f = renderer::measureTuneRequest(r, *request, scene.bounds(), views, truth, o.truth.samples,
                                                            {.warmup = 1, .frames = o.frames});
         tuner.report(f);

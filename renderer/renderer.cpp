@@ -10,6 +10,7 @@
 
 #include "renderer.h"
 
+#include "geometry/shadow/caster_detail.h"
 #include "geometry/shadow/culling.h"
 
 #include <algorithm>
@@ -75,6 +76,8 @@ Renderer::~Renderer() {
 
 void Renderer::setScene(const geometry::scene::Scene& scene) { scene_ = std::make_unique<GpuScene>(scene); }
 
+void Renderer::setCasterLod(const geometry::lod::SceneLod& lod) { scene_->setCasterLod(lod); }
+
 void Renderer::warnOnce(const std::string& message) {
     if (std::find(stats_.warnings.begin(), stats_.warnings.end(), message) == stats_.warnings.end())
         stats_.warnings.push_back(message);
@@ -112,6 +115,7 @@ void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::
     if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
     stats_.shadowTriangles = stats_.eyeTriangles = 0;
     stats_.splitTriangles.assign(plan.splits.size(), 0);
+    stats_.splitTrianglesFull.assign(plan.splits.size(), 0);
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
     if (!prepassReady_ || prepassViewProj_ != viewProj || prepassSize_ != glm::ivec2(viewport.width, viewport.height)) {
         timers_.begin(Pass::Prepass);
@@ -152,7 +156,11 @@ const PassTimes& Renderer::waitForTimings() noexcept {
 
 // ---- [SECTION] Shadow maps ------------------------------------------------------------------
 
-void Renderer::drawCasters(const geometry::shadow::SplitPlan& split, Program& program, int index, bool backFacesOnly) {
+void Renderer::drawCasters(const geometry::shadow::ShadowPlan& plan, int index, Program& program, bool backFacesOnly) {
+    const geometry::shadow::SplitPlan& split = plan.splits[size_t(index)];
+    const bool lod = plan.casterLodTexels > 0.f;
+    if (lod && !scene_->hasCasterLod())
+        warnOnce("casters.lod = auto: the caster levels are not built; drawing every triangle");
     program.set("uSplit", index);
     for (const auto& m : scene_->meshes()) {
         // Faces are wound counter-clockwise as seen from the light (the plan's maps never mirror).
@@ -167,11 +175,18 @@ void Renderer::drawCasters(const geometry::shadow::SplitPlan& split, Program& pr
             glDisable(GL_CULL_FACE);
         }
         program.set("uModel", m.transform);
-        const uint64_t n = scene_->draw(m, [&](const geometry::scene::Aabb& b) {
+        const auto inMap = [&](const geometry::scene::Aabb& b) {
             return geometry::shadow::intersectsClipVolume(b, split.lightViewProj);
-        });
-        stats_.shadowTriangles += n;
-        stats_.splitTriangles[index] += n;
+        };
+        // casters.lod = auto: per chunk, the coarsest level the map cannot tell from the original.
+        const auto level = [&](size_t chunk, const geometry::scene::Aabb& b) {
+            return geometry::lod::coarsestLevelWithin(m.lod.chunkLevels[chunk],
+                                                      geometry::shadow::casterErrorBudget(plan, index, b));
+        };
+        const DrawCount n = lod ? scene_->drawLevels(m, inMap, level) : DrawCount{scene_->draw(m, inMap), 0};
+        stats_.shadowTriangles += n.drawn;
+        stats_.splitTriangles[size_t(index)] += n.drawn;
+        stats_.splitTrianglesFull[size_t(index)] += lod ? n.full : n.drawn;
     }
 }
 
@@ -215,7 +230,7 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
         firstDepth_.bindLayer(i, splitResolution(split));
         glClear(GL_DEPTH_BUFFER_BIT);
         if (split.empty()) continue;
-        drawCasters(split, program, i, plan.bias.type == BiasType::SecondDepth);
+        drawCasters(plan, i, program, plan.bias.type == BiasType::SecondDepth);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
@@ -238,7 +253,7 @@ void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
         secondDepth_.bindLayer(i, splitResolution(split));
         glClear(GL_DEPTH_BUFFER_BIT);
         if (split.empty()) continue;
-        drawCasters(split, peel, i, false);
+        drawCasters(plan, i, peel, false);
     }
     combineProgram_.use();
     bindTexture(0, GL_TEXTURE_2D_ARRAY, firstDepth_.depthTexture(), nearestSampler_);
@@ -270,7 +285,7 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
         glClearBufferfv(GL_COLOR, 0, far);
         glClear(GL_DEPTH_BUFFER_BIT);
         if (split.empty()) continue;
-        drawCasters(split, program, i, false);
+        drawCasters(plan, i, program, false);
     }
     glDisable(GL_CULL_FACE);
     const int radius = plan.filter.kernel / 2;

@@ -22,9 +22,10 @@ namespace renderer {
 struct FrameStats {
     uint64_t shadowTriangles = 0; // over all splits (and peeling passes)
     uint64_t eyeTriangles = 0;
-    std::vector<uint64_t> splitTriangles; // per split
-    int shadowResolution = 0;             // of the array actually allocated
-    uint64_t shadowMemoryBytes = 0;       // every shadow texture (depth layers, peeling, moments)
+    std::vector<uint64_t> splitTriangles;     // per split
+    std::vector<uint64_t> splitTrianglesFull; // per split, as many as without caster LOD
+    int shadowResolution = 0;                 // of the array actually allocated
+    uint64_t shadowMemoryBytes = 0;           // every shadow texture (depth layers, peeling, moments)
     int eyeWidth = 0, eyeHeight = 0;
     PassTimes gpu;                     // from an earlier frame (see GpuTimers)
     std::vector<std::string> warnings; // e.g. resolution clamped to the GL limit
@@ -53,6 +54,10 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     void setScene(const geometry::scene::Scene& scene);
+    /// The scene's simplified caster levels (geometry/lod), for plans with casters.lod = auto.
+    /// Until they are given, such plans draw every triangle (with a warning).
+    void setCasterLod(const geometry::lod::SceneLod& lod);
+    [[nodiscard]] bool hasCasterLod() const noexcept { return scene_->hasCasterLod(); }
     /// focus.mode = samples: draws the eye's depth pre-pass for `plan`'s camera at `viewport` and
     /// reduces its samples on the GPU (sample_reduction.h). The next render() with the same camera
     /// and viewport reuses that pre-pass, so the frame draws it once.
@@ -101,7 +106,7 @@ public:
 
 private:
     void shadowPass(const geometry::shadow::ShadowPlan& plan);
-    void drawCasters(const geometry::shadow::SplitPlan& split, Program& program, int index, bool backFacesOnly);
+    void drawCasters(const geometry::shadow::ShadowPlan& plan, int index, Program& program, bool backFacesOnly);
     void peelAndCombine(const geometry::shadow::ShadowPlan& plan);
     void momentsPass(const geometry::shadow::ShadowPlan& plan);
     void depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport);

@@ -38,7 +38,7 @@ Dashboard::Dashboard(LoadedScene scene, DashboardState state, DashboardOptions o
     viewChoice_ = options_.view;
 }
 
-Dashboard::~Dashboard() = default;
+Dashboard::~Dashboard() { cancelCasterLod(); }
 
 const geometry::analysis::Inspection* Dashboard::inspection(int side) const noexcept {
     return sides_[side].inspection ? &*sides_[side].inspection : nullptr;
@@ -60,6 +60,7 @@ void Dashboard::pollSceneLoad() {
 }
 
 void Dashboard::adoptScene(LoadedScene loaded) {
+    cancelCasterLod(); // its build reads the scene being replaced
     scene_ = std::move(loaded);
     for (Side& s : sides_)
         if (s.renderer) s.renderer->setScene(scene_.file.scene);
@@ -113,6 +114,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     heatmapArea_ = contentArea(rects_.heatmap, header, pad);
     lightViewSize_ = std::clamp(int(std::min(lightArea_.w, lightArea_.h)), 16, 2048);
 
+    stepCasterLod();
     renderViews(input);
     stepTradeoffSweep();
     stepRecommend();
@@ -160,6 +162,7 @@ void Dashboard::renderViews(const FrameInput& input) {
     for (int i = 0; i < sides; ++i) {
         Side& side = sides_[i];
         if (!side.renderer) side.renderer = std::make_unique<renderer::Renderer>(scene);
+        giveCasterLod(*side.renderer);
         try {
             const auto p0 = std::chrono::steady_clock::now();
             side.plan = renderer::planFrame(*side.renderer, state_.settings[i], scene.bounds(), scene.camera,

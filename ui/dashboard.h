@@ -16,8 +16,10 @@
 #include "ui/charts/tradeoff_chart.h"
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -134,6 +136,11 @@ private:
 
     void pollSceneLoad();
     void adoptScene(LoadedScene loaded);
+    // Caster LOD (dashboard_lod.cpp): built once per scene, in the background, when a side asks.
+    void stepCasterLod();
+    void cancelCasterLod() noexcept;
+    void giveCasterLod(renderer::Renderer& r) const;
+    [[nodiscard]] std::string casterLodStatus(int side) const;
     void renderViews(const FrameInput& input);
     void updateInspection();
     void updateHeatmap();
@@ -185,6 +192,10 @@ private:
     bool screenshotRequested_ = false;
     double cpuFrameMs_ = 0;
     int sceneGeneration_ = 0;
+    std::future<geometry::lod::SceneLod> lodBuild_;
+    std::shared_ptr<const geometry::lod::SceneLod> lod_;
+    std::atomic<float> lodProgress_{0.f};
+    std::atomic<bool> lodCancel_{false};
     std::string scenePath_;       // the picker's text field
     std::string presetPath_;      // the preset field
     std::string viewChoice_;      // the canonical view last applied

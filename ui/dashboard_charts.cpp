@@ -192,6 +192,7 @@ void Dashboard::stepTradeoffSweep() {
         s.renderer = std::make_unique<renderer::Renderer>(scene);
         s.generation = sceneGeneration_;
     }
+    giveCasterLod(*s.renderer);
     const auto& cfg = s.configs[s.next++];
     const geometry::shadow::Viewport size =
         sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360};

@@ -74,6 +74,7 @@ void Dashboard::stepRecommend() {
         r.renderer = std::make_unique<renderer::Renderer>(scene);
         r.generation = sceneGeneration_;
     }
+    giveCasterLod(*r.renderer);
     try {
         r.tuner->report(renderer::measureTuneRequest(*r.renderer, *request, scene.bounds(), {{r.camera, r.light}},
                                                      *scene_.truth, 1, {.warmup = 1, .frames = 2}));

@@ -105,6 +105,10 @@ void Dashboard::drawStatsTable() {
                 },
                 "focus.mode = samples: the visible samples' view-depth range, from this frame's depth pre-pass "
                 "(reduced on the GPU before the shadow maps are drawn), and the splits skipped for having none");
+            row(
+                "caster LOD", [&](int i) { return casterLodStatus(i); },
+                "casters.lod = auto: simplified caster levels, built once per scene in the background; the "
+                "shadow passes draw every triangle until they are in");
             row("GPU shadow pass", gpu(renderer::Pass::Shadow),
                 "GPU time of the shadow maps (all splits), from a few frames ago");
             row("GPU eye pass", gpu(renderer::Pass::Eye), "GPU time of the eye view with filtering and blur");

@@ -216,6 +216,16 @@ const std::vector<SettingInfo>& settingsDeclaration() {
         number(
             "splits.resolution_falloff", "Halve the shadow-map resolution for each further split", Kind::Bool, 0, 1,
             [](ShadowSettings & s) -> auto& { return s.splits.resolutionFalloff; }),
+        choice(
+            "casters.lod",
+            "Caster level of detail: off (every triangle), auto (each shadow pass draws, per chunk, the "
+            "coarsest simplified level whose error stays below casters.lod_texels texels of that split's "
+            "map; thin parts are never simplified)",
+            {"off", "auto"}, [](ShadowSettings & s) -> auto& { return s.casters.lod; }),
+        number(
+            "casters.lod_texels",
+            "auto: the geometric error a caster level may have, in texels of the map at the chunk", Kind::Float, 0.1,
+            16, [](ShadowSettings & s) -> auto& { return s.casters.lodTexels; }, true),
     };
     return table;
 }

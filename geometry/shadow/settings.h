@@ -49,6 +49,14 @@ enum class StabilizeMode { Off, Snap, Quantize };
 /// scene bounds; samples: the visible samples' depth range and light-space bounds (SDSM).
 enum class FocusMode { Geometry, Samples };
 
+/// casters.lod: off, or auto (simplified caster levels where a split's texels hide the detail).
+enum class CasterLod { Off, Auto };
+
+struct CasterSettings {
+    CasterLod lod = CasterLod::Off;
+    float lodTexels = 1.f; // casters.lod_texels: the error a level may have, in texels of the map
+};
+
 struct ShadowSettings {
     int resolution = 2048; // shadow_map.resolution
     StabilizeMode stabilize = StabilizeMode::Off;
@@ -58,6 +66,7 @@ struct ShadowSettings {
     WarpParams warp{WarpMethod::Uniform};
     WarpDirection direction = WarpDirection::Standard;
     SplitParams splits;
+    CasterSettings casters;
 };
 
 struct SettingInfo {

@@ -267,6 +267,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         plan.normalOffsetTexels = settings.bias.normalOffset;
     plan.bias = settings.bias;
     plan.filter = settings.filter;
+    plan.casterLodTexels = settings.casters.lod == CasterLod::Auto ? settings.casters.lodTexels : 0.f;
 
     const dvec3 l(plan.l), v(plan.v), eye(camera.eye);
     const double gamma = glm::radians(double(plan.gammaDeg));

@@ -71,7 +71,10 @@ struct ShadowPlan {
     float receiverOffset = 0.f;
     glm::vec2 polygonOffset{0.f};   // (factor, units) while drawing the maps; zero: none (slope biases)
     float normalOffsetTexels = 0.f; // receivers move along their normal by this many world texels; 0: none
-    BiasSettings bias;              // what the renderer applies, as chosen in the settings
+    /// casters.lod = auto: the error a chunk's level may have, in texels of the split's map at the
+    /// chunk (caster_detail.h); 0: every pass draws every triangle.
+    float casterLodTexels = 0.f;
+    BiasSettings bias; // what the renderer applies, as chosen in the settings
     FilterSettings filter;
     /// The maps the eye pass compares against hold linear light depth (bias.linear_z, or VSM's
     /// moments, which are always of linear depth).
