@@ -123,7 +123,8 @@ namespace {
 
 struct Row {
     std::string config, preset, view;
-    double gamma = 0, gpuMs = 0, cpuMs = 0, p95 = 0, falseLit = 0, falseShadow = 0, memoryMiB = 0;
+    double gamma = 0, gpuMs = 0, cpuMs = 0, p95 = 0, falseLit = 0, falseShadow = 0, memoryMiB = 0, shadowMs = 0;
+    uint64_t shadowTriangles = 0, shadowTrianglesWithoutLod = 0;
     geometry::analysis::TruthClasses classes; // with truth
     bool truth = false;
 };
@@ -222,6 +223,9 @@ int runBench(const BenchOptions& o) {
             row.cpuMs = m.cpuMs;
             row.p95 = in.aliasing.p95;
             row.memoryMiB = double(m.shadowMemoryBytes) / (1024.0 * 1024.0);
+            row.shadowMs = m.shadowGpuMs;
+            row.shadowTriangles = m.shadowTriangles;
+            row.shadowTrianglesWithoutLod = m.shadowTrianglesWithoutLod;
             if (in.truth) {
                 row.truth = true;
                 row.falseLit = in.truth->falseLit;
@@ -252,7 +256,8 @@ int runBench(const BenchOptions& o) {
         std::ofstream csv(dir / "results.csv");
         csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
                "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
-               "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam\n";
+               "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam,shadow_ms_median,"
+               "shadow_triangles,shadow_triangles_without_lod\n";
         for (const Row& w : rows) {
             csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
                 << w.cpuMs << ',' << w.p95 << ',';
@@ -270,7 +275,7 @@ int runBench(const BenchOptions& o) {
             const renderer::PathFigures& f = paths[size_t(cfg - configs.begin())];
             if (path) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
             else csv << ",,,,";
-            csv << '\n';
+            csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << '\n';
         }
         if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
     }

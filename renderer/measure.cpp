@@ -22,7 +22,7 @@ Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& 
     views.overlays = false;
     views.unwarped = false;
     Measurement out;
-    std::vector<double> gpu, cpu;
+    std::vector<double> gpu, cpu, shadow;
     const int total = std::max(options.warmup, 0) + std::max(options.frames, 1);
     for (int i = 0; i < total; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
@@ -34,11 +34,14 @@ Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& 
         const PassTimes& t = renderer.waitForTimings();
         if (i < options.warmup) continue;
         cpu.push_back(cpuMs);
-        if (t.valid) gpu.push_back(t.frame());
+        if (t.valid) gpu.push_back(t.frame()), shadow.push_back(t.of(Pass::Shadow));
     }
     out.gpuMs = geometry::analysis::median(std::span(gpu));
     out.cpuMs = geometry::analysis::median(std::span(cpu));
+    out.shadowGpuMs = geometry::analysis::median(std::span(shadow));
     out.gpuFrames = int(gpu.size());
+    for (const uint64_t n : renderer.stats().splitTriangles) out.shadowTriangles += n;
+    for (const uint64_t n : renderer.stats().splitTrianglesFull) out.shadowTrianglesWithoutLod += n;
     out.shadowMemoryBytes = renderer.stats().shadowMemoryBytes;
     out.inspection = inspect(renderer, out.plan, truth, options.truthSamples);
     return out;

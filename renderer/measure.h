@@ -26,6 +26,9 @@ struct Measurement {
     geometry::shadow::ShadowPlan plan;         // of the last frame
     geometry::analysis::Inspection inspection; // of the last frame; truth when a GroundTruth was given
     double gpuMs = 0, cpuMs = 0;               // medians over the timed frames; NaN when none was valid
+    double shadowGpuMs = 0;                    // the shadow passes' GPU median (part of gpuMs)
+    uint64_t shadowTriangles = 0;              // drawn by the last frame's shadow passes
+    uint64_t shadowTrianglesWithoutLod = 0;    // … as many as they would draw without caster LOD
     int gpuFrames = 0;                         // timed frames with a valid GPU timer
     uint64_t shadowMemoryBytes = 0;
 };

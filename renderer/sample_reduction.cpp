@@ -61,7 +61,7 @@ geometry::shadow::SampleBounds SampleReduction::reduce(GLuint depthTexture, int 
     program_.set("uLogNear", std::log(view.n));
     program_.set("uBinScale", float(kSampleBins / std::log(double(view.f) / double(view.n))));
     program_.set("uSize", glm::ivec2(width, height));
-    glDispatchCompute(GLuint((width + 15) / 16), GLuint((height + 15) / 16), 1);
+    glDispatchCompute(GLuint((width + 15) / 16), GLuint((height + 127) / 128), 1); // sample_reduce.comp: 16 × 128
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<uint32_t> words(kWords);
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(kWords * sizeof(uint32_t)), words.data());

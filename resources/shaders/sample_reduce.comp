@@ -2,10 +2,12 @@
 // Sample-distribution reduction (docs/design.md §3.7): every pixel of the eye's depth pre-pass that
 // hit geometry adds its view depth to the frame's [z_min, z_max], and its world position's extent
 // along SAMPLE_DIRECTIONS fixed directions to its log-spaced view-depth bin. Floats are reduced as
-// order-preserving uints with atomicMin/atomicMax, first in shared memory per 16x16 tile, then
-// once per touched bin in the buffer (geometry/shadow/sample_bounds.h reads it back).
+// order-preserving uints with atomicMin/atomicMax, first in registers along each invocation's
+// column of pixels, then in shared memory per 16 × 128 tile, then once per touched bin in the
+// buffer (geometry/shadow/sample_bounds.h reads it back).
 #include "shadow_block.glsl"
 layout(local_size_x = 16, local_size_y = 16) in;
+const int ROWS = 8; // pixels per invocation, down a column: a group covers 16 × 128 pixels
 layout(binding = 0) uniform sampler2D uDepth;
 uniform mat4 uInvViewProj;
 uniform mat4 uView;
@@ -31,25 +33,56 @@ void main() {
     }
     if (local == 0u) sZ[0] = 0xFFFFFFFFu, sZ[1] = 0u;
     barrier();
-    const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (all(lessThan(p, uSize))) {
-        const float depth = texelFetch(uDepth, p, 0).r;
-        if (depth < 1.0) {
-            const vec4 ndc = vec4((vec2(p) + 0.5) / vec2(uSize) * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-            const vec4 w = uInvViewProj * ndc;
-            const vec3 world = w.xyz / w.w;
-            const float z = -(uView * vec4(world, 1.0)).z;
-            const int bin = clamp(int(floor((log(max(z, 1e-30)) - uLogNear) * uBinScale)), 0, SAMPLE_BINS - 1);
-            const uint base = uint(bin * STRIDE);
-            atomicAdd(sBins[base], 1u);
-            for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) {
-                const uint key = orderedKey(dot(world, uDirections[k]));
-                atomicMin(sBins[base + 1u + uint(k)], key);
-                atomicMax(sBins[base + 1u + uint(SAMPLE_DIRECTIONS + k)], key);
+    // Each invocation walks a column of ROWS pixels, keeping the bin it is filling in registers
+    // and flushing it to shared memory only when the bin changes: neighbouring pixels mostly share
+    // a bin, so the shared atomics drop several-fold.
+    const ivec2 first = ivec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y * ROWS);
+    int current = -1;
+    uint count = 0u;
+    float lo[SAMPLE_DIRECTIONS], hi[SAMPLE_DIRECTIONS];
+    float zLo = 3.4e38, zHi = 0.0;
+    for (int r = 0; r <= ROWS; ++r) {
+        int bin = -1;
+        vec3 world = vec3(0.0);
+        float z = 0.0;
+        const ivec2 p = first + ivec2(0, r);
+        if (r < ROWS && all(lessThan(p, uSize))) {
+            const float depth = texelFetch(uDepth, p, 0).r;
+            if (depth < 1.0) {
+                const vec4 ndc = vec4((vec2(p) + 0.5) / vec2(uSize) * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+                const vec4 w = uInvViewProj * ndc;
+                world = w.xyz / w.w;
+                z = -(uView * vec4(world, 1.0)).z;
+                bin = clamp(int(floor((log(max(z, 1e-30)) - uLogNear) * uBinScale)), 0, SAMPLE_BINS - 1);
             }
-            atomicMin(sZ[0], orderedKey(z));
-            atomicMax(sZ[1], orderedKey(z));
         }
+        if (bin != current && current >= 0) { // flush the bin being filled
+            const uint base = uint(current * STRIDE);
+            atomicAdd(sBins[base], count);
+            for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) {
+                atomicMin(sBins[base + 1u + uint(k)], orderedKey(lo[k]));
+                atomicMax(sBins[base + 1u + uint(SAMPLE_DIRECTIONS + k)], orderedKey(hi[k]));
+            }
+            current = -1;
+        }
+        if (bin < 0) continue;
+        if (current < 0) {
+            current = bin;
+            count = 0u;
+            for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) lo[k] = 3.4e38, hi[k] = -3.4e38;
+        }
+        ++count;
+        for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) {
+            const float t = dot(world, uDirections[k]);
+            lo[k] = min(lo[k], t);
+            hi[k] = max(hi[k], t);
+        }
+        zLo = min(zLo, z);
+        zHi = max(zHi, z);
+    }
+    if (zHi > 0.0) {
+        atomicMin(sZ[0], orderedKey(zLo));
+        atomicMax(sZ[1], orderedKey(zHi));
     }
     barrier();
     for (uint b = local; b < uint(SAMPLE_BINS); b += threads) {
