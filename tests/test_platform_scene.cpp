@@ -1,6 +1,7 @@
 // The "platform" built-in scene: deterministic, on its triangle budget, well formed.
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/chunking.h"
+#include "scene_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,8 @@
 #include <vector>
 
 using namespace geometry::scene;
+using testutil::sameGeometry;
+using testutil::toWorld;
 
 namespace {
 
@@ -15,19 +18,6 @@ namespace {
 const Scene& defaultScene() {
     static const Scene scene = makePlatformScene();
     return scene;
-}
-
-glm::vec3 toWorld(const Mesh& m, const glm::vec3& p) { return glm::vec3(m.transform * glm::vec4(p, 1.f)); }
-
-bool sameGeometry(const Scene& a, const Scene& b) {
-    if (a.meshes.size() != b.meshes.size()) return false;
-    for (size_t i = 0; i < a.meshes.size(); ++i) {
-        const Mesh& ma = a.meshes[i];
-        const Mesh& mb = b.meshes[i];
-        if (ma.name != mb.name || ma.positions != mb.positions || ma.normals != mb.normals || ma.indices != mb.indices)
-            return false;
-    }
-    return true;
 }
 
 TEST(PlatformScene, SameSeedGivesIdenticalScene) {
@@ -82,35 +72,10 @@ TEST(PlatformScene, SeaSpansAtLeastTwoKilometres) {
 }
 
 TEST(PlatformScene, ChunksCoverEveryTriangleOnceWithinBounds) {
-    for (const Mesh& m : defaultScene().meshes) {
-        SCOPED_TRACE(m.name);
-        const size_t triangles = m.triangleCount();
-        ASSERT_GT(triangles, 0u);
-        ASSERT_FALSE(m.chunks.empty());
-        std::vector<int> covered(triangles, 0);
-        for (const Chunk& c : m.chunks) {
-            EXPECT_GT(c.triangleCount, 0u);
-            EXPECT_LE(c.triangleCount, kMaxChunkTriangles);
-            ASSERT_LE(static_cast<size_t>(c.firstTriangle) + c.triangleCount, triangles);
-            for (uint32_t t = c.firstTriangle; t < c.firstTriangle + c.triangleCount; ++t) {
-                ++covered[t];
-                for (int k = 0; k < 3; ++k) {
-                    const glm::vec3 p = toWorld(m, m.positions[m.indices[3 * size_t(t) + k]]);
-                    ASSERT_TRUE(c.bounds.contains(p, 1e-3f)) << "triangle " << t;
-                }
-            }
-        }
-        for (size_t t = 0; t < triangles; ++t) ASSERT_EQ(covered[t], 1) << "triangle " << t;
-    }
+    testutil::expectChunksCoverEveryTriangleOnce(defaultScene());
 }
 
-TEST(PlatformScene, IndicesInRange) {
-    for (const Mesh& m : defaultScene().meshes) {
-        ASSERT_EQ(m.indices.size() % 3, 0u) << m.name;
-        ASSERT_EQ(m.positions.size(), m.normals.size()) << m.name;
-        for (uint32_t i : m.indices) ASSERT_LT(i, m.positions.size()) << m.name;
-    }
-}
+TEST(PlatformScene, IndicesInRange) { testutil::expectIndicesInRange(defaultScene()); }
 
 TEST(PlatformScene, CameraHasHugeDepthRange) {
     const Camera& c = defaultScene().camera;
@@ -130,16 +95,6 @@ TEST(PlatformScene, LightIsAnElevatedSun) {
     EXPECT_LE(elevationDeg, 55.f);
 }
 
-TEST(PlatformScene, PositionsFiniteAndNormalsUnit) {
-    for (const Mesh& m : defaultScene().meshes) {
-        SCOPED_TRACE(m.name);
-        for (const glm::vec3& p : m.positions)
-            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
-        for (const glm::vec3& n : m.normals) {
-            ASSERT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
-            ASSERT_NEAR(glm::length(n), 1.f, 1e-3f);
-        }
-    }
-}
+TEST(PlatformScene, PositionsFiniteAndNormalsUnit) { testutil::expectFinitePositionsAndUnitNormals(defaultScene()); }
 
 } // namespace
