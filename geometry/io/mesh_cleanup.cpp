@@ -31,6 +31,9 @@ CleanupReport& CleanupReport::operator+=(const CleanupReport& o) {
     duplicateFaces += o.duplicateFaces;
     isolatedVertices += o.isolatedVertices;
     flippedFaces += o.flippedFaces;
+    polygonsTriangulated += o.polygonsTriangulated;
+    nonPlanarFaces += o.nonPlanarFaces;
+    earClipFallbacks += o.earClipFallbacks;
     outputVertices += o.outputVertices;
     outputFaces += o.outputFaces;
     notes.insert(notes.end(), o.notes.begin(), o.notes.end());

@@ -13,7 +13,7 @@ namespace geometry::io {
 
 namespace detail {
 // Defined in openmesh_io.cpp (no header of its own: loadModel() is its only caller).
-scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext);
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts);
 } // namespace detail
 
 namespace {
@@ -51,13 +51,17 @@ LoadedModel loadModel(const std::string& path, const CleanupOptions& options, co
                                  "' (supported: .obj, .stl, .off, .ply, .gltf, .glb)");
 
     report(progress, 0.f, "reading");
-    scene::Mesh mesh = detail::readOpenMeshFile(path, ext);
+    CleanupReport reading; // what the reader did: polygon counters only
+    scene::Mesh mesh = detail::readOpenMeshFile(path, ext, reading);
     report(progress, 1.f, "reading");
 
     report(progress, 0.f, "cleaning");
     LoadedModel model;
     model.format = ext;
     model.report = cleanMesh(mesh, options);
+    model.report.polygonsTriangulated = reading.polygonsTriangulated;
+    model.report.nonPlanarFaces = reading.nonPlanarFaces;
+    model.report.earClipFallbacks = reading.earClipFallbacks;
     report(progress, 1.f, "cleaning");
     if (mesh.triangleCount() == 0) throw std::runtime_error(path + ": no triangles left after cleanup");
 

@@ -28,6 +28,10 @@ struct CleanupReport {
     size_t duplicateFaces = 0;    // same three vertices, any order or winding
     size_t isolatedVertices = 0;  // referenced by no face
     size_t flippedFaces = 0;      // orientation fix
+    // Set by the readers (OBJ, OFF, PLY), before cleanup: faces of more than three corners.
+    size_t polygonsTriangulated = 0; // ear-clipped into triangles (inputFaces counts the triangles)
+    size_t nonPlanarFaces = 0;       // farther than 1e-3 × their diameter from their best-fit plane
+    size_t earClipFallbacks = 0;     // ear clipping got stuck (self-intersecting face): rest fanned
     size_t outputVertices = 0, outputFaces = 0;
     std::vector<std::string> notes; // e.g. skipped glTF primitive modes
     CleanupReport& operator+=(const CleanupReport& other);

@@ -9,7 +9,7 @@
 //   [SECTION] Numbers and face corners ... checkCoordinate, splitCorner
 //   [SECTION] The validator .............. Elements, ObjValidator::line, lineTooLong, finish
 //   [SECTION] Checks per line ............ checkText, vertex, texcoord, face, checkIndex, materialLibrary
-//   [SECTION] Reading the file ........... validateObjFile
+//   [SECTION] Reading the file ........... scanObjFile, validateObjFile, readObjFile
 #include "geometry/io/obj_validate.h"
 
 #include <algorithm>
@@ -107,6 +107,14 @@ Number checkCoordinate(std::string_view s) noexcept {
     return std::fabs(value) > FLT_MAX ? Number::OutOfRange : Number::Ok;
 }
 
+/// The value of a coordinate checkCoordinate() accepted (from_chars rounds as `>> float` does).
+float coordinateValue(std::string_view s) noexcept {
+    if (s.starts_with('+')) s.remove_prefix(1);
+    float value = 0;
+    std::from_chars(s.data(), s.data() + s.size(), value);
+    return value;
+}
+
 /// Splits a face corner of the form "v", "v/vt", "v//vn" or "v/vt/vn"; false for any other.
 bool splitCorner(std::string_view token, std::array<std::string_view, 3>& part) noexcept {
     part = {};
@@ -136,7 +144,8 @@ struct Elements {
 
 class ObjValidator {
 public:
-    explicit ObjValidator(const std::string& path) : path_(path) {}
+    /// `out`, when given, receives the vertices and faces as well.
+    ObjValidator(const std::string& path, ObjPolygons* out) : path_(path), out_(out) {}
 
     void line(std::string_view raw) {
         ++line_;
@@ -222,6 +231,10 @@ private:
         checkCoordinates(rest, 3, "vertex", "coordinate"); // a w or colour after x y z is ignored, as OpenMesh does
         if (++vertices_.count > kMaxVertices)
             fail("more than " + std::to_string(kMaxVertices) + " vertices, over the limit");
+        if (!out_) return;
+        glm::vec3 p;
+        for (int k = 0; k < 3; ++k) p[k] = coordinateValue(nextToken(rest));
+        out_->positions.push_back(p);
     }
 
     /// OpenMesh fails the whole file on a vt line without two numbers (1D coordinates included).
@@ -239,11 +252,13 @@ private:
             if (token == "\\") fail("line continuation '\\' is not supported (join the face onto one line)");
             if (!splitCorner(token, part))
                 fail("bad face vertex " + quoted(token) + " (expected v, v/vt, v//vn or v/vt/vn)");
-            checkIndex(part[0], vertices_);
+            const int64_t v = checkIndex(part[0], vertices_);
+            if (out_) out_->corners.push_back(static_cast<uint32_t>(v)); // in range: checked here or in finish()
             if (!part[1].empty()) checkIndex(part[1], texcoords_);
             if (!part[2].empty()) checkIndex(part[2], normals_);
         }
         if (corners < 3) fail("face has " + plural(corners, "vertex", "vertices") + ", needs at least 3");
+        if (out_) out_->faceStarts.push_back(static_cast<uint32_t>(out_->corners.size()));
         triangles_ += corners - 2;
         if (triangles_ > kMaxTriangles)
             fail("more than " + std::to_string(kMaxTriangles) + " triangles, over the limit");
@@ -255,8 +270,9 @@ private:
 
     /// An index is an optional '-' and digits (what from_chars takes for an integer), never 0;
     /// a negative one counts back from the elements read so far, as in OpenMesh (its int
-    /// arithmetic stays in range under our caps).
-    void checkIndex(std::string_view token, Elements& e) {
+    /// arithmetic stays in range under our caps). Returns the 0-based index (a positive one
+    /// past the current count is checked in finish()).
+    int64_t checkIndex(std::string_view token, Elements& e) {
         int64_t value = 0;
         const char* last = token.data() + token.size();
         const auto [end, ec] = std::from_chars(token.data(), last, value);
@@ -274,6 +290,7 @@ private:
             e.maxRefLine = line_;
             if (huge) e.hugeRef = shownIndex(token);
         }
+        return negative ? static_cast<int64_t>(e.count) + value : value - 1;
     }
 
     /// OpenMesh opens "<folder of the OBJ>/<rest of the line>" and reads it whole, line by line,
@@ -298,6 +315,7 @@ private:
     }
 
     std::string path_;
+    ObjPolygons* out_ = nullptr;
     uint64_t line_ = 0;
     Elements vertices_{"face vertex index", "vertex", "vertices"};
     Elements texcoords_{"face texture index", "texture coordinate", "texture coordinates"};
@@ -310,10 +328,12 @@ private:
 
 // ---- [SECTION] Reading the file -------------------------------------------------------------
 
-void validateObjFile(const std::string& path) {
+namespace {
+
+void scanObjFile(const std::string& path, ObjPolygons* out) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(path + ": cannot open file for reading");
-    ObjValidator validator(path);
+    ObjValidator validator(path, out);
     std::vector<char> block(kBlockBytes);
     std::string pending; // the start of a line that continues into the next block
     while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
@@ -339,6 +359,16 @@ void validateObjFile(const std::string& path) {
     if (in.bad()) throw std::runtime_error(path + ": cannot read file");
     if (!pending.empty()) validator.line(pending); // a last line without '\n'
     validator.finish();
+}
+
+} // namespace
+
+void validateObjFile(const std::string& path) { scanObjFile(path, nullptr); }
+
+ObjPolygons readObjFile(const std::string& path) {
+    ObjPolygons obj;
+    scanObjFile(path, &obj);
+    return obj;
 }
 
 } // namespace geometry::io::detail

@@ -2,7 +2,11 @@
 // Pre-validation of OBJ files for OpenMesh's OBJ reader, which trusts its input (it asserts on
 // a face corner without a vertex index, skips vertices it cannot parse while still counting
 // them for relative indices, is quadratic in polygon size, and opens whatever `mtllib` names).
+#include <glm/vec3.hpp>
+
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace geometry::io::detail {
 
@@ -10,5 +14,17 @@ namespace geometry::io::detail {
 /// throws std::runtime_error "PATH: line N: problem" for the first thing OpenMesh 9's OBJ reader
 /// cannot handle safely. What passes loads through OpenMesh as written.
 void validateObjFile(const std::string& path);
+
+/// An OBJ file's vertices and polygon faces as written (corners are 0-based vertex indices;
+/// face f has corners[faceStarts[f] .. faceStarts[f + 1]]).
+struct ObjPolygons {
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> corners;
+    std::vector<uint32_t> faceStarts{0};
+};
+
+/// Validates like validateObjFile() and also reads the file. Polygons keep repeated corners,
+/// which OpenMesh's OBJ reader removes (breaking the bridge of a ring face).
+[[nodiscard]] ObjPolygons readObjFile(const std::string& path);
 
 } // namespace geometry::io::detail

@@ -1,6 +1,8 @@
-// OBJ, STL, OFF and PLY through OpenMesh's readers and writers.
+// OBJ, STL, OFF and PLY: OFF and PLY through OpenMesh's readers; OBJ and STL read here (OBJ by
+// its validator, which keeps a polygon's repeated corners; STL by strict parsers); saving
+// through OpenMesh's writers. Polygons are ear-clipped (polygon_triangulation.h).
 //
-// Reading goes through OpenMesh's IOManager with our own importer that collects flat arrays,
+// Reading OFF and PLY goes through OpenMesh's IOManager with our own importer that collects flat arrays,
 // not through a TriMesh: a halfedge mesh drops non-manifold faces ("complex edge"), which CAD
 // exports are full of, and building the connectivity is the slow part of read_mesh anyway.
 //
@@ -12,13 +14,15 @@
 //   [SECTION] Files ...................... fail, checkedFileSize, readAll, readHead
 //   [SECTION] Importer ................... FlatImporter
 //   [SECTION] Text scanning .............. LineScanner, tokenize, parseInt, checkTextFace, checkCounts
-//   [SECTION] STL ........................ validateStl, binaryStlHasNonFinite, readBinaryStlDirect
+//   [SECTION] STL ........................ validateStl, readBinaryStlDirect
+//   [SECTION] ASCII STL .................. StlTokens, StlParser, readAsciiStl
 //   [SECTION] OFF ........................ validateOff
 //   [SECTION] PLY ........................ plyTypeSize, readBinaryUint, checkPlyTextRecord, validatePly
-//   [SECTION] Reading through OpenMesh ... QuietOpenMesh, readThroughOpenMesh, readOpenMeshFile
+//   [SECTION] Reading .................... QuietOpenMesh, readThroughOpenMesh, readObj, readOpenMeshFile
 //   [SECTION] Saving ..................... toOpenMesh, saveMesh
 #include "geometry/io/model_loader.h"
 #include "geometry/io/obj_validate.h"
+#include "geometry/io/polygon_triangulation.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -30,11 +34,13 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -42,7 +48,7 @@
 namespace geometry::io::detail {
 
 /// Reads an OBJ/STL/OFF/PLY file (ext: lower case, no dot) into one uncleaned mesh.
-scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext);
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts);
 
 namespace {
 
@@ -87,7 +93,24 @@ std::string readHead(const std::string& path, uint64_t size, size_t n) {
 
 using namespace OpenMesh;
 
-/// Collects vertices and (fan-triangulated) faces into flat arrays. Out-of-range indices are
+/// Appends the triangles of one polygon face (ear-clipped when it has more than three corners).
+void appendPolygon(std::span<const glm::vec3> positions, std::span<const uint32_t> corners,
+                   std::vector<uint32_t>& indices, PolygonStats& stats) {
+    if (corners.size() == 3) {
+        indices.insert(indices.end(), corners.begin(), corners.end());
+        return;
+    }
+    for (const auto& tri : triangulatePolygon(positions, corners, stats))
+        indices.insert(indices.end(), tri.begin(), tri.end());
+}
+
+void addPolygonCounts(const PolygonStats& stats, CleanupReport& report) {
+    report.polygonsTriangulated += stats.polygons;
+    report.nonPlanarFaces += stats.nonPlanar;
+    report.earClipFallbacks += stats.fallbacks;
+}
+
+/// Collects vertices and (triangulated) faces into flat arrays. Out-of-range indices are
 /// recorded, not trusted: some readers pass them through unchecked.
 class FlatImporter final : public IO::BaseImporter {
 public:
@@ -97,6 +120,7 @@ public:
     size_t badFaces = 0;       // faces with an index out of range
     int64_t firstBadIndex = 0; // for the message
     size_t firstBadFace = 0;
+    PolygonStats polygons;
 
     explicit FlatImporter(uint64_t fileSize) : fileSize_(fileSize) {}
 
@@ -116,8 +140,9 @@ public:
                 return FaceHandle(static_cast<int>(face));
             }
         }
-        for (size_t i = 2; i < vh.size(); ++i) // fan: CAD polygons are planar and convex enough
-            for (const VertexHandle& h : {vh[0], vh[i - 1], vh[i]}) indices.push_back(static_cast<uint32_t>(h.idx()));
+        corners_.clear();
+        for (const VertexHandle& h : vh) corners_.push_back(static_cast<uint32_t>(h.idx()));
+        if (corners_.size() >= 3) appendPolygon(positions, corners_, indices, polygons);
         return FaceHandle(static_cast<int>(face));
     }
     // Header counts are hints only: never reserve more than the file could hold.
@@ -170,6 +195,7 @@ public:
 
 private:
     uint64_t fileSize_;
+    std::vector<uint32_t> corners_; // scratch
 };
 
 // ---- [SECTION] Text scanning ----------------------------------------------------------------
@@ -277,22 +303,9 @@ StlKind validateStl(const std::string& path, uint64_t size) {
                    " bytes) but the file has " + std::to_string(size) + " bytes (truncated or corrupt)");
 }
 
-/// OpenMesh merges STL vertices through a std::map whose comparator is not a strict weak order
-/// once NaN appears (NaN compares "equal" to every point, so later vertices collapse onto it).
-/// Such files are read here directly, and cleanup drops the non-finite vertices.
-bool binaryStlHasNonFinite(const std::string& data) {
-    const size_t n = (data.size() - 84) / 50;
-    for (size_t t = 0; t < n; ++t) {
-        const char* rec = data.data() + 84 + 50 * t + 12; // skip the facet normal
-        for (int k = 0; k < 9; ++k) {
-            float f;
-            std::memcpy(&f, rec + 4 * k, 4);
-            if (!std::isfinite(f)) return true;
-        }
-    }
-    return false;
-}
-
+/// Binary STL is read here, three vertices per facet, never through OpenMesh: its reader
+/// merges vertices through a std::map whose comparator breaks on NaN, and drops degenerate
+/// facets silently. Cleanup merges, and counts what it drops.
 scene::Mesh readBinaryStlDirect(const std::string& data) {
     scene::Mesh mesh;
     const size_t n = (data.size() - 84) / 50;
@@ -304,6 +317,140 @@ scene::Mesh readBinaryStlDirect(const std::string& data) {
     }
     return mesh;
 }
+
+// ---- [SECTION] ASCII STL --------------------------------------------------------------------
+
+/// Whitespace-separated tokens of an ASCII STL with their line numbers. Control bytes other
+/// than whitespace are refused where they stand (OpenMesh's reader left such numbers unread).
+class StlTokens {
+public:
+    StlTokens(const std::string& path, std::string_view text) : path_(path), text_(text) {}
+
+    /// The next token, empty at the end of the file.
+    std::string_view next() {
+        while (pos_ < text_.size() && isSpace(text_[pos_])) {
+            if (text_[pos_] == '\n') ++line_;
+            ++pos_;
+        }
+        tokenLine_ = line_;
+        const size_t start = pos_;
+        while (pos_ < text_.size() && !isSpace(text_[pos_])) checkByte(text_[pos_++]);
+        return text_.substr(start, pos_ - start);
+    }
+    /// Skips the rest of the current line (a solid's name), still refusing control bytes.
+    void skipLine() {
+        while (pos_ < text_.size() && text_[pos_] != '\n') checkByte(text_[pos_++]);
+    }
+    [[noreturn]] void failHere(const std::string& problem) const {
+        fail(path_, "line " + std::to_string(tokenLine_) + ": " + problem);
+    }
+
+private:
+    static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+    void checkByte(char c) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u >= 0x20 && u != 0x7f) return;
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02x", u);
+        tokenLine_ = line_;
+        failHere(std::string("control character ") + hex + " (not ASCII STL text)");
+    }
+
+    const std::string& path_;
+    std::string_view text_;
+    size_t pos_ = 0;
+    uint64_t line_ = 1, tokenLine_ = 1;
+};
+
+/// A token for a message: quoted, cut short, plain ASCII.
+std::string shownToken(std::string_view token) {
+    if (token.empty()) return "end of file";
+    constexpr size_t kShown = 32;
+    std::string shown(token.substr(0, kShown));
+    std::replace_if(
+        shown.begin(), shown.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; }, '?');
+    return "'" + shown + (token.size() > kShown ? "...'" : "'");
+}
+
+bool keywordIs(std::string_view token, std::string_view keyword) {
+    return token.size() == keyword.size() && strncasecmp(token.data(), keyword.data(), keyword.size()) == 0;
+}
+
+/// solid name / (facet normal n n n / outer loop / vertex x y z ×3 / endloop / endfacet)* /
+/// endsolid name, possibly several solids; keywords in any case, as exporters vary.
+class StlParser {
+public:
+    StlParser(const std::string& path, std::string_view text) : tokens_(path, text) {}
+
+    scene::Mesh parse() {
+        expect("solid", "at the start of the file");
+        tokens_.skipLine();
+        for (;;) {
+            const std::string_view t = tokens_.next();
+            if (keywordIs(t, "facet")) {
+                facet();
+                continue;
+            }
+            if (!keywordIs(t, "endsolid")) tokens_.failHere("expected 'facet' or 'endsolid', got " + shownToken(t));
+            tokens_.skipLine();
+            const std::string_view after = tokens_.next();
+            if (after.empty()) break;
+            if (!keywordIs(after, "solid"))
+                tokens_.failHere("expected 'solid' or the end of the file after 'endsolid', got " + shownToken(after));
+            tokens_.skipLine();
+        }
+        return std::move(mesh_);
+    }
+
+private:
+    void expect(std::string_view keyword, const std::string& where) {
+        const std::string_view t = tokens_.next();
+        if (!keywordIs(t, keyword))
+            tokens_.failHere("expected '" + std::string(keyword) + "' " + where + ", got " + shownToken(t));
+    }
+    /// Exactly three numbers; NaN and Inf parse (cleanup drops them), anything else is an error.
+    glm::vec3 numbers(const char* after) {
+        glm::vec3 v;
+        for (int k = 0; k < 3; ++k) {
+            std::string_view t = tokens_.next();
+            const std::string_view original = t;
+            if (t.starts_with('+') && !(t.size() > 1 && t[1] == '-')) t.remove_prefix(1);
+            const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v[k]);
+            if (t.empty() || ec == std::errc::invalid_argument || end != t.data() + t.size())
+                tokens_.failHere(std::string("expected a number after '") + after + "', got " + shownToken(original));
+            if (ec == std::errc::result_out_of_range)
+                tokens_.failHere("number " + shownToken(original) + " after '" + after + "' is out of float range");
+        }
+        return v;
+    }
+    void facet() {
+        if (mesh_.triangleCount() >= kMaxFaces)
+            tokens_.failHere("more than " + std::to_string(kMaxFaces) + " facets, over the limit");
+        expect("normal", "after 'facet'");
+        (void)numbers("normal"); // recomputed from the vertices
+        expect("outer", "after the facet normal");
+        expect("loop", "after 'outer'");
+        for (int k = 0; k < 3; ++k) {
+            const std::string_view t = tokens_.next();
+            if (!keywordIs(t, "vertex"))
+                tokens_.failHere("expected 'vertex' (a facet has 3), got " + shownToken(t) + " after " +
+                                 std::to_string(k) + (k == 1 ? " vertex" : " vertices"));
+            mesh_.indices.push_back(static_cast<uint32_t>(mesh_.positions.size()));
+            mesh_.positions.push_back(numbers("vertex"));
+        }
+        const std::string_view t = tokens_.next();
+        if (keywordIs(t, "vertex")) tokens_.failHere("facet has more than 3 vertices (expected 'endloop')");
+        if (!keywordIs(t, "endloop")) tokens_.failHere("expected 'endloop' after 3 vertices, got " + shownToken(t));
+        expect("endfacet", "after 'endloop'");
+    }
+
+    StlTokens tokens_;
+    scene::Mesh mesh_;
+};
+
+/// The whole file parsed here, three vertices per facet (no OpenMesh: its ASCII reader read
+/// garbage as 0 and left numbers with control bytes uninitialised). Cleanup merges and counts.
+scene::Mesh readAsciiStl(const std::string& path, const std::string& data) { return StlParser(path, data).parse(); }
 
 // ---- [SECTION] OFF --------------------------------------------------------------------------
 
@@ -517,7 +664,7 @@ void validatePly(const std::string& path, uint64_t size) {
     }
 }
 
-// ---- [SECTION] Reading through OpenMesh -----------------------------------------------------
+// ---- [SECTION] Reading ----------------------------------------------------------------------
 
 } // namespace
 
@@ -543,7 +690,7 @@ private:
 
 namespace {
 
-scene::Mesh readThroughOpenMesh(const std::string& path, uint64_t size) {
+scene::Mesh readThroughOpenMesh(const std::string& path, uint64_t size, CleanupReport& counts) {
     FlatImporter importer(size);
     IO::Options options; // positions and faces only
     const QuietOpenMesh quiet;
@@ -554,31 +701,48 @@ scene::Mesh readThroughOpenMesh(const std::string& path, uint64_t size) {
                        std::to_string(importer.firstBadIndex) + " but the file has only " +
                        std::to_string(importer.positions.size()) + " vertices (" + std::to_string(importer.badFaces) +
                        " bad faces)");
+    addPolygonCounts(importer.polygons, counts);
     scene::Mesh mesh;
     mesh.positions = std::move(importer.positions);
     mesh.indices = std::move(importer.indices);
     return mesh;
 }
 
+/// OBJ through its validator, which keeps each polygon's corners as written (OpenMesh's OBJ
+/// reader removes repeated corners, which breaks a ring face's bridge).
+scene::Mesh readObj(const std::string& path, CleanupReport& counts) {
+    ObjPolygons obj = readObjFile(path);
+    PolygonStats stats;
+    scene::Mesh mesh;
+    mesh.indices.reserve(obj.corners.size());
+    for (size_t f = 0; f + 1 < obj.faceStarts.size(); ++f) {
+        const std::span<const uint32_t> corners(obj.corners.data() + obj.faceStarts[f],
+                                                obj.faceStarts[f + 1] - obj.faceStarts[f]);
+        appendPolygon(obj.positions, corners, mesh.indices, stats);
+    }
+    addPolygonCounts(stats, counts);
+    mesh.positions = std::move(obj.positions);
+    return mesh;
+}
+
 } // namespace
 
-scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext) {
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts) {
     const uint64_t size = checkedFileSize(path);
     if (ext == "stl") {
-        if (validateStl(path, size) == StlKind::Binary) {
-            const std::string data = readAll(path, size);
-            if (binaryStlHasNonFinite(data)) return readBinaryStlDirect(data);
-        }
-    } else if (ext == "off") {
+        const StlKind kind = validateStl(path, size);
+        const std::string data = readAll(path, size);
+        return kind == StlKind::Binary ? readBinaryStlDirect(data) : readAsciiStl(path, data);
+    }
+    if (ext == "obj") return readObj(path, readerCounts);
+    if (ext == "off") {
         validateOff(path, size);
     } else if (ext == "ply") {
         validatePly(path, size);
-    } else if (ext == "obj") {
-        validateObjFile(path);
     } else {
         fail(path, "unsupported mesh extension '" + ext + "'");
     }
-    return readThroughOpenMesh(path, size);
+    return readThroughOpenMesh(path, size, readerCounts);
 }
 
 } // namespace geometry::io::detail
