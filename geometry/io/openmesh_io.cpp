@@ -332,7 +332,7 @@ public:
             if (text_[pos_] == '\n') ++line_;
             ++pos_;
         }
-        tokenLine_ = line_;
+        if (pos_ < text_.size()) tokenLine_ = line_; // at the end, messages name the last token's line
         const size_t start = pos_;
         while (pos_ < text_.size() && !isSpace(text_[pos_])) checkByte(text_[pos_++]);
         return text_.substr(start, pos_ - start);
