@@ -1,7 +1,8 @@
 #pragma once
-// Pre-validation of OBJ files for OpenMesh's OBJ reader, which trusts its input (it asserts on
-// a face corner without a vertex index, skips vertices it cannot parse while still counting
-// them for relative indices, is quadratic in polygon size, and opens whatever `mtllib` names).
+// OBJ validation and reading. The rules were made for OpenMesh's OBJ reader, which trusts its
+// input (it asserts on a face corner without a vertex index, skips vertices it cannot parse
+// while still counting them for relative indices, is quadratic in polygon size, and opens
+// whatever `mtllib` names); loading now reads the file here (readObjFile) under the same rules.
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -12,7 +13,7 @@ namespace geometry::io::detail {
 
 /// Reads the OBJ file at `path` once, in blocks (memory stays bounded whatever its size), and
 /// throws std::runtime_error "PATH: line N: problem" for the first thing OpenMesh 9's OBJ reader
-/// cannot handle safely. What passes loads through OpenMesh as written.
+/// cannot handle safely.
 void validateObjFile(const std::string& path);
 
 /// An OBJ file's vertices and polygon faces as written (corners are 0-based vertex indices;
