@@ -56,9 +56,9 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles) {
         Chunk c;
         c.firstTriangle = b;
         c.triangleCount = e - b;
-        Aabb local;
-        for (uint32_t i = 3 * b; i < 3 * e; ++i) local.add(mesh.positions[mesh.indices[i]]);
-        c.bounds = local.transformed(mesh.transform);
+        // The box of the transformed vertices: a transformed local box is loose under rotation.
+        for (uint32_t i = 3 * b; i < 3 * e; ++i)
+            c.bounds.add(glm::vec3(mesh.transform * glm::vec4(mesh.positions[mesh.indices[i]], 1.f)));
         mesh.chunks.push_back(c);
     }
 }
