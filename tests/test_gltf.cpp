@@ -2,16 +2,24 @@
 // into a temporary folder (JSON via nlohmann, GLB assembled byte by byte) so every malformed
 // variant is a small, visible edit of one valid document.
 #include "geometry/io/gltf_loader.h"
+#include "geometry/scene/scene.h"
+
+#include <draco/compression/encode.h>
+#include <draco/core/encoder_buffer.h>
+#include <draco/mesh/mesh.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <limits>
 #include <string>
 #include <vector>
@@ -448,6 +456,252 @@ TEST_F(GltfTest, NoTriangles) {
     doc = embeddedTriangle();
     doc["nodes"] = json::array({json::object()});
     expectFailure(writeDoc("nomeshes.gltf", doc));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Draco, unsupported versions and extensions
+
+/// A 10x10 grid of quads over [0,2]x[-1,1], bent in z so no box axis is degenerate.
+struct Grid {
+    std::vector<float> positions; // xyz per vertex
+    std::vector<uint16_t> indices;
+};
+
+Grid makeGrid() {
+    Grid g;
+    constexpr int n = 10;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            const float x = 2.f * float(i) / n, y = -1.f + 2.f * float(j) / n;
+            g.positions.insert(g.positions.end(), {x, y, 0.25f * x * y});
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const auto v = uint16_t(j * (n + 1) + i);
+            g.indices.insert(g.indices.end(), {v, uint16_t(v + 1), uint16_t(v + n + 1)});
+            g.indices.insert(g.indices.end(), {uint16_t(v + 1), uint16_t(v + n + 2), uint16_t(v + n + 1)});
+        }
+    return g;
+}
+
+/// The grid compressed with the Draco library itself (no fixture files): returns the encoded
+/// bytes and the POSITION attribute's unique id, which the glTF extension refers to.
+std::pair<Bytes, int> dracoEncode(const Grid& g) {
+    draco::Mesh mesh;
+    const auto points = uint32_t(g.positions.size() / 3);
+    mesh.set_num_points(points);
+    draco::GeometryAttribute position;
+    position.Init(draco::GeometryAttribute::POSITION, nullptr, 3, draco::DT_FLOAT32, false, 3 * sizeof(float), 0);
+    const int att = mesh.AddAttribute(position, true, points);
+    for (uint32_t i = 0; i < points; ++i)
+        mesh.attribute(att)->SetAttributeValue(draco::AttributeValueIndex(i), &g.positions[3 * i]);
+    for (size_t f = 0; f < g.indices.size(); f += 3)
+        mesh.AddFace({draco::PointIndex(g.indices[f]), draco::PointIndex(g.indices[f + 1]),
+                      draco::PointIndex(g.indices[f + 2])});
+    draco::Encoder encoder;
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, 14);
+    draco::EncoderBuffer buffer;
+    const draco::Status status = encoder.EncodeMeshToBuffer(mesh, &buffer);
+    EXPECT_TRUE(status.ok()) << status.error_msg_string();
+    const auto* data = reinterpret_cast<const unsigned char*>(buffer.data());
+    return {Bytes(data, data + buffer.size()), int(mesh.attribute(att)->unique_id())};
+}
+
+/// The grid uncompressed: POSITION accessor 0, UNSIGNED_SHORT indices accessor 1.
+json gridDoc(const Grid& g) {
+    Bin bin;
+    bin.add(g.positions);
+    const size_t indexOffset = bin.add(g.indices);
+    json doc = triangleDoc(bin.bytes, dataUri(bin.bytes));
+    doc["bufferViews"][0]["byteLength"] = g.positions.size() * sizeof(float);
+    doc["bufferViews"][1] = {{"buffer", 0}, {"byteOffset", indexOffset}, {"byteLength", g.indices.size() * 2}};
+    doc["accessors"][0]["count"] = g.positions.size() / 3;
+    doc["accessors"][1]["count"] = g.indices.size();
+    return doc;
+}
+
+/// The same grid as KHR_draco_mesh_compression (required): the accessors have no bufferView,
+/// the extension points at the compressed bytes. `uri` empty: the GLB's BIN chunk.
+json dracoGridDoc(const Grid& g, const Bytes& encoded, int positionId, const std::string& uri) {
+    json buffer = {{"byteLength", encoded.size()}};
+    if (!uri.empty()) buffer["uri"] = uri;
+    json prim = {{"attributes", {{"POSITION", 0}}},
+                 {"indices", 1},
+                 {"mode", 4},
+                 {"extensions",
+                  {{"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", positionId}}}}}}}};
+    return {
+        {"asset", {{"version", "2.0"}}},
+        {"extensionsUsed", {"KHR_draco_mesh_compression"}},
+        {"extensionsRequired", {"KHR_draco_mesh_compression"}},
+        {"buffers", json::array({buffer})},
+        {"bufferViews", json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", encoded.size()}}})},
+        {"accessors", json::array({{{"componentType", kFloat}, {"count", g.positions.size() / 3}, {"type", "VEC3"}},
+                                   {{"componentType", kUShort}, {"count", g.indices.size()}, {"type", "SCALAR"}}})},
+        {"meshes", json::array({{{"primitives", json::array({prim})}}})},
+        {"nodes", json::array({{{"mesh", 0}}})},
+        {"scenes", json::array({{{"nodes", json::array({0})}}})},
+        {"scene", 0},
+    };
+}
+
+geometry::scene::Aabb worldBounds(const LoadedModel& model) {
+    geometry::scene::Aabb box;
+    for (const auto& mesh : model.meshes) box.add(mesh.worldBounds());
+    return box;
+}
+
+size_t triangles(const LoadedModel& model) {
+    size_t n = 0;
+    for (const auto& mesh : model.meshes) n += mesh.triangleCount();
+    return n;
+}
+
+TEST_F(GltfTest, DracoCompressedMatchesUncompressedTwin) {
+    const Grid grid = makeGrid();
+    const auto [encoded, positionId] = dracoEncode(grid);
+    ASSERT_FALSE(encoded.empty());
+    const LoadedModel twin = geometry::io::loadGltf(writeDoc("twin.gltf", gridDoc(grid)));
+    ASSERT_EQ(triangles(twin), 200u);
+    const geometry::scene::Aabb expected = worldBounds(twin);
+
+    const json embedded = dracoGridDoc(grid, encoded, positionId, dataUri(encoded));
+    const json binary = dracoGridDoc(grid, encoded, positionId, "");
+    for (const std::string& path :
+         {writeDoc("draco.gltf", embedded), writeBytes("draco.glb", makeGlb(binary.dump(), encoded))}) {
+        SCOPED_TRACE(path);
+        const LoadedModel model = geometry::io::loadGltf(path);
+        EXPECT_EQ(triangles(model), triangles(twin));
+        const geometry::scene::Aabb box = worldBounds(model);
+        // 14-bit quantization over a 2-unit range: steps of about 1.2e-4.
+        EXPECT_TRUE(glm::all(glm::lessThan(glm::abs(box.lo - expected.lo), glm::vec3(1e-3f))));
+        EXPECT_TRUE(glm::all(glm::lessThan(glm::abs(box.hi - expected.hi), glm::vec3(1e-3f))));
+    }
+}
+
+TEST_F(GltfTest, DracoReferencesAreCheckedBeforeDecoding) {
+    const Grid grid = makeGrid();
+    const auto [encoded, positionId] = dracoEncode(grid);
+    const json valid = dracoGridDoc(grid, encoded, positionId, dataUri(encoded));
+    const auto ext = [](json& doc) -> json& {
+        return doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"];
+    };
+    json doc = valid;
+    ext(doc)["bufferView"] = 7;
+    EXPECT_NE(expectFailure(writeDoc("view.gltf", doc)).find("KHR_draco_mesh_compression"), std::string::npos);
+    doc = valid;
+    doc["bufferViews"][0]["byteLength"] = encoded.size() + 1;
+    expectFailure(writeDoc("length.gltf", doc));
+    doc = valid;
+    doc["meshes"][0]["primitives"][0]["indices"] = 9;
+    expectFailure(writeDoc("indices.gltf", doc));
+    doc = valid;
+    doc["accessors"][1]["componentType"] = 1;
+    expectFailure(writeDoc("indextype.gltf", doc));
+    doc = valid;
+    ext(doc)["attributes"]["NORMAL"] = 1;
+    expectFailure(writeDoc("attribute.gltf", doc));
+    doc = valid;
+    doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 5;
+    expectFailure(writeDoc("accessor.gltf", doc));
+}
+
+/// Expects exactly `PATH: problem`, one line.
+void expectMessage(const std::string& path, const std::string& problem) {
+    try {
+        (void)geometry::io::loadGltf(path);
+        ADD_FAILURE() << path << " loaded without error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), path + ": " + problem);
+    }
+}
+
+TEST_F(GltfTest, Gltf1IsRefusedByName) {
+    json doc = embeddedTriangle();
+    doc["asset"]["version"] = "1.0";
+    expectMessage(writeDoc("v1.gltf", doc), "glTF 1.0 is not supported (convert to glTF 2.0)");
+    // The 1.0 layout: top-level collections are objects keyed by id, and no asset.version.
+    doc = embeddedTriangle();
+    doc.erase("asset");
+    doc["meshes"] = {{"mesh_0", doc["meshes"][0]}};
+    expectMessage(writeDoc("v1layout.gltf", doc), "glTF 1.0 is not supported (convert to glTF 2.0)");
+    expectMessage(writeBytes("v1.glb", makeGlb(doc.dump(), {})), "glTF 1.0 is not supported (convert to glTF 2.0)");
+    // A KHR_binary_glTF container (GLB version 1), whatever its JSON says.
+    Bytes glb1 = makeGlb(embeddedTriangle().dump(), {});
+    glb1[4] = 1;
+    expectMessage(writeBytes("binary1.glb", glb1), "glTF 1.0 is not supported (convert to glTF 2.0)");
+}
+
+TEST_F(GltfTest, UnsupportedRequiredExtensionIsNamed) {
+    json doc = embeddedTriangle();
+    doc["extensionsUsed"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
+    doc["extensionsRequired"] = {"KHR_materials_unlit", "EXT_meshopt_compression"};
+    expectMessage(writeDoc("meshopt.gltf", doc), "requires the unsupported glTF extension EXT_meshopt_compression");
+    doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+    expectMessage(writeDoc("quantized.gltf", doc), "requires the unsupported glTF extension KHR_mesh_quantization");
+    // Only used, not required: loads (a viewer may ignore it).
+    doc.erase("extensionsRequired");
+    EXPECT_EQ(triangles(geometry::io::loadGltf(writeDoc("used.gltf", doc))), 1u);
+}
+
+TEST_F(GltfTest, NoTrianglesAtAllIsOneClearLine) {
+    json doc = embeddedTriangle();
+    doc["meshes"][0]["primitives"] = json::array({primitive(0, -1, 0)}); // points only
+    expectMessage(writeDoc("points.gltf", doc), "the file has no triangles");
+    doc["meshes"][0]["primitives"] = json::array({primitive(0, -1, 1), primitive(0, -1, 3)}); // lines
+    expectMessage(writeBytes("lines.glb", makeGlb(doc.dump(), {})), "the file has no triangles");
+    doc = embeddedTriangle();
+    doc.erase("meshes");
+    doc["nodes"] = json::array({json::object()});
+    expectMessage(writeDoc("nomeshes.gltf", doc), "the file has no triangles");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bounds
+
+/// A rotated, translated child under a rotated parent, holding a mesh whose local box is far from
+/// its rotated box; the expected box is computed from the transformed vertices themselves.
+class RotatedHierarchy : public GltfTest {
+protected:
+    void SetUp() override {
+        GltfTest::SetUp();
+        grid_ = makeGrid();
+        json doc = gridDoc(grid_);
+        const float half = glm::radians(45.f) / 2.f, parentHalf = glm::radians(30.f) / 2.f;
+        doc["nodes"] = json::array({
+            {{"rotation", {std::sin(parentHalf), 0, 0, std::cos(parentHalf)}}, {"children", {1}}}, // 30° about x
+            {{"rotation", {0, 0, std::sin(half), std::cos(half)}}, {"translation", {3, -2, 1}}, {"mesh", 0}},
+        });
+        model_ = geometry::io::loadGltf(writeDoc("rotated.gltf", doc));
+        const glm::mat4 parent = glm::mat4_cast(glm::angleAxis(glm::radians(30.f), glm::vec3(1, 0, 0)));
+        const glm::mat4 child = glm::translate(glm::mat4(1.f), glm::vec3(3, -2, 1)) *
+                                glm::mat4_cast(glm::angleAxis(glm::radians(45.f), glm::vec3(0, 0, 1)));
+        for (size_t i = 0; i < grid_.positions.size(); i += 3)
+            expected_.add(glm::vec3(parent * child *
+                                    glm::vec4(grid_.positions[i], grid_.positions[i + 1], grid_.positions[i + 2], 1)));
+    }
+
+    static void expectBox(const geometry::scene::Aabb& box, const geometry::scene::Aabb& expected) {
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_NEAR(box.lo[a], expected.lo[a], 1e-5) << "axis " << a;
+            EXPECT_NEAR(box.hi[a], expected.hi[a], 1e-5) << "axis " << a;
+        }
+    }
+
+    Grid grid_;
+    LoadedModel model_;
+    geometry::scene::Aabb expected_;
+};
+
+TEST_F(RotatedHierarchy, MeshWorldBoundsAreTheBoxOfTransformedVertices) {
+    ASSERT_EQ(triangles(model_), 200u);
+    expectBox(worldBounds(model_), expected_);
+}
+
+TEST_F(RotatedHierarchy, SceneBoundsAreTheBoxOfTransformedVertices) {
+    geometry::scene::Scene scene;
+    scene.meshes = model_.meshes;
+    expectBox(scene.bounds(), expected_);
 }
 
 } // namespace

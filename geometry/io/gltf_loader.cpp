@@ -4,7 +4,8 @@
 //
 // Index
 //   [SECTION] Errors .................... GltfError, oneLine, str
-//   [SECTION] Files ..................... readRegularFile, fsReadWholeFile, looksLikeJson, nestingWithinLimit, parse
+//   [SECTION] Files ..................... readRegularFile, fsReadWholeFile, looksLikeJson, nestingWithinLimit,
+//                                         precheck, parse
 //   [SECTION] Node hierarchy ............ localMatrix, NodeWalker, rootNodes, collectInstances
 //   [SECTION] Accessors ................. viewAccessor, componentName, typeName, readVec3, readIndices
 //   [SECTION] Primitives ................ toTriangleList, baseColor, readNormals, decodePrimitive
@@ -16,6 +17,8 @@
 
 #include <tiny_gltf.h>
 
+#include <nlohmann/json.hpp>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -25,6 +28,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <new>
@@ -173,6 +178,110 @@ std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary) 
     return {chars + 20, std::min<size_t>(length, bytes.size() - 20)};
 }
 
+constexpr const char* kGltf1 = "glTF 1.0 is not supported (convert to glTF 2.0)";
+
+// Extensions a file may require that loading geometry honours: Draco is decoded; the rest
+// change shading or textures only, which shadows never read.
+bool supportedRequiredExtension(const std::string& name) {
+    static const char* const kSupported[] = {"KHR_draco_mesh_compression", "KHR_texture_transform",
+                                             "KHR_texture_basisu",         "EXT_texture_webp",
+                                             "KHR_lights_punctual",        "KHR_materials_variants"};
+    if (name.starts_with("KHR_materials_")) return true;
+    return std::find(std::begin(kSupported), std::end(kSupported), name) != std::end(kSupported);
+}
+
+/// The JSON index `value` when it is an integer naming one of `array`'s elements.
+std::optional<size_t> indexInto(const nlohmann::json& value, const nlohmann::json& array) {
+    if (!value.is_number_integer() || !array.is_array()) return std::nullopt;
+    const auto i = value.get<int64_t>();
+    if (i < 0 || uint64_t(i) >= array.size()) return std::nullopt;
+    return size_t(i);
+}
+
+const nlohmann::json& member(const nlohmann::json& object, const char* key) {
+    static const nlohmann::json kNull;
+    if (!object.is_object()) return kNull;
+    const auto it = object.find(key);
+    return it == object.end() ? kNull : *it;
+}
+
+/// tinygltf 2.7 decodes KHR_draco_mesh_compression while parsing and indexes bufferViews,
+/// buffers and accessors from the extension without any range check, so the references are
+/// validated here, before it runs. (Buffers: tinygltf itself makes each buffer's data exactly
+/// its byteLength, so the declared lengths bound the views.)
+void checkDracoPrimitive(const nlohmann::json& doc, const nlohmann::json& prim, const nlohmann::json& ext,
+                         const std::string& where) {
+    const std::string name = where + ": KHR_draco_mesh_compression";
+    const nlohmann::json& views = member(doc, "bufferViews");
+    const nlohmann::json& buffers = member(doc, "buffers");
+    const nlohmann::json& accessors = member(doc, "accessors");
+    const auto viewIndex = indexInto(member(ext, "bufferView"), views);
+    if (!viewIndex) throw GltfError(name + " names no existing bufferView");
+    const nlohmann::json& view = views[*viewIndex];
+    const auto bufferIndex = indexInto(member(view, "buffer"), buffers);
+    if (!bufferIndex) throw GltfError(name + ": its bufferView names no existing buffer");
+    const nlohmann::json& offset = member(view, "byteOffset");
+    const nlohmann::json& length = member(view, "byteLength");
+    const nlohmann::json& bufferLength = member(buffers[*bufferIndex], "byteLength");
+    const bool numbers = (offset.is_null() || offset.is_number_unsigned()) && length.is_number_unsigned() &&
+                         bufferLength.is_number_unsigned();
+    const uint64_t o = offset.is_number_unsigned() ? offset.get<uint64_t>() : 0;
+    if (!numbers || o > bufferLength.get<uint64_t>() || length.get<uint64_t>() > bufferLength.get<uint64_t>() - o)
+        throw GltfError(name + ": its bufferView exceeds its buffer");
+
+    // tinygltf sizes decoded data by the accessors' componentType: it must be a real one.
+    auto accessorOf = [&](const nlohmann::json& index, std::initializer_list<int> types, const std::string& what) {
+        const auto a = indexInto(index, accessors);
+        if (!a) throw GltfError(name + ": " + what + " names no existing accessor");
+        const nlohmann::json& type = member(accessors[*a], "componentType");
+        if (!type.is_number_integer() || std::find(types.begin(), types.end(), type.get<int64_t>()) == types.end())
+            throw GltfError(name + ": " + what + " accessor has an invalid componentType");
+    };
+    if (prim.contains("indices"))
+        accessorOf(prim["indices"],
+                   {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                   "indices");
+    const nlohmann::json& attributes = member(ext, "attributes");
+    if (!attributes.is_object()) throw GltfError(name + " has no attributes object");
+    for (const auto& [key, id] : attributes.items()) {
+        if (!id.is_number_integer()) throw GltfError(name + ": attribute " + key + " id is not an integer");
+        const nlohmann::json& accessor = member(member(prim, "attributes"), key.c_str());
+        if (accessor.is_null()) throw GltfError(name + ": attribute " + key + " is not an attribute of the primitive");
+        accessorOf(accessor,
+                   {TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
+                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_INT,
+                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_COMPONENT_TYPE_FLOAT},
+                   "attribute " + key);
+    }
+}
+
+/// What tinygltf would report badly or not at all: glTF 1.0 (a different schema: tinygltf
+/// complains about some missing field), required extensions we cannot honour (tinygltf ignores
+/// extensionsRequired) and Draco references (see checkDracoPrimitive). Malformed JSON is left
+/// to tinygltf, whose message names the position.
+void precheck(std::string_view text) {
+    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+    if (!doc.is_object()) return;
+    const nlohmann::json& version = member(member(doc, "asset"), "version");
+    if ((version.is_string() && version.get<std::string>().starts_with("1.")) || member(doc, "meshes").is_object())
+        throw GltfError(kGltf1);
+    if (const nlohmann::json& required = member(doc, "extensionsRequired"); required.is_array())
+        for (const nlohmann::json& name : required)
+            if (name.is_string() && !supportedRequiredExtension(name.get<std::string>()))
+                throw GltfError("requires the unsupported glTF extension " + name.get<std::string>());
+    const nlohmann::json& meshes = member(doc, "meshes");
+    if (!meshes.is_array()) return;
+    for (size_t m = 0; m < meshes.size(); ++m) {
+        const nlohmann::json& prims = member(meshes[m], "primitives");
+        if (!prims.is_array()) continue;
+        for (size_t p = 0; p < prims.size(); ++p) {
+            const nlohmann::json& ext = member(member(prims[p], "extensions"), "KHR_draco_mesh_compression");
+            if (ext.is_object()) checkDracoPrimitive(doc, prims[p], ext, "mesh " + str(m) + " primitive " + str(p));
+        }
+    }
+}
+
 struct Parsed {
     tinygltf::Model model;
     bool binary = false;
@@ -185,8 +294,12 @@ Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
     parsed.binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     if (!parsed.binary && !looksLikeJson(bytes))
         throw GltfError("neither glTF JSON nor GLB (expected '{' or the 'glTF' magic)");
+    // GLB container version 1 is glTF 1.0's KHR_binary_glTF.
+    if (parsed.binary && bytes.size() >= 8 && bytes[4] == 1 && bytes[5] == 0 && bytes[6] == 0 && bytes[7] == 0)
+        throw GltfError(kGltf1);
     if (!nestingWithinLimit(jsonText(bytes, parsed.binary)))
         throw GltfError("JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");
+    precheck(jsonText(bytes, parsed.binary));
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(ignoreImage, nullptr);
@@ -640,10 +753,11 @@ void notify(const Progress& progress, float fraction, std::string_view stage) {
 }
 
 /// Decodes and cleans each used mesh once; primitives that cleanup empties are noted and their
-/// reports go to `emptied`.
+/// reports go to `emptied`. `hadTriangles` tells whether any primitive had triangles before
+/// cleanup, so an empty result can say which of the two it is.
 CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, const std::vector<Instance>& instances, size_t fileBytes,
                               const CleanupOptions& options, const Progress& progress, CleanupReport& emptied,
-                              std::vector<std::string>& notes) {
+                              bool& hadTriangles, std::vector<std::string>& notes) {
     CleanedMeshes cleaned;
     size_t total = 0, done = 0;
     for (const Instance& inst : instances)
@@ -654,6 +768,7 @@ CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, const std::vector<In
             notify(progress, float(done++) / float(total), "cleaning");
             std::optional<scene::Mesh> mesh = decodePrimitive(model, size_t(meshIndex), p, notes);
             if (!mesh) continue;
+            hadTriangles = hadTriangles || !mesh->indices.empty();
             CleanupReport report = cleanMesh(*mesh, options);
             if (mesh->indices.empty()) {
                 notes.push_back("mesh " + std::to_string(meshIndex) + " primitive " + str(p) +
@@ -714,13 +829,14 @@ LoadedModel loadChecked(const std::string& path, const CleanupOptions& options, 
 
     LoadedModel result;
     result.format = parsed.binary ? "glb" : "gltf";
-    CleanedMeshes cleaned = cleanUsedMeshes(model, instances, fileBytes, options, progress, result.report, notes);
+    bool hadTriangles = false;
+    CleanedMeshes cleaned =
+        cleanUsedMeshes(model, instances, fileBytes, options, progress, result.report, hadTriangles, notes);
     emitInstances(instances, cleaned, progress, result);
-    if (result.meshes.empty()) {
-        std::string why;
-        for (const std::string& note : notes) why += (why.empty() ? " (" : "; ") + note;
-        throw GltfError("no triangles" + (why.empty() ? "" : why + ")"));
-    }
+    // The same words as the other formats; which primitives were skipped is no help to someone
+    // who opened a point cloud or a file of lines.
+    if (result.meshes.empty())
+        throw GltfError(hadTriangles ? "no triangles left after cleanup" : "the file has no triangles");
     result.report.notes.insert(result.report.notes.end(), notes.begin(), notes.end());
     return result;
 }
