@@ -604,6 +604,22 @@ TEST_F(GltfTest, DracoReferencesAreCheckedBeforeDecoding) {
     doc = valid;
     doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 5;
     expectFailure(writeDoc("accessor.gltf", doc));
+    // Checked by decoding: tinygltf would dereference a missing attribute.
+    doc = valid;
+    ext(doc)["attributes"]["POSITION"] = positionId + 7;
+    EXPECT_NE(expectFailure(writeDoc("uid.gltf", doc)).find("names no Draco attribute"), std::string::npos);
+    Bytes corrupt = encoded;
+    std::fill(corrupt.begin() + std::ptrdiff_t(corrupt.size() / 4), corrupt.end(), 0xFF);
+    expectFailure(writeDoc("corrupt.gltf", dracoGridDoc(grid, corrupt, positionId, dataUri(corrupt))));
+}
+
+TEST_F(GltfTest, DracoInExternalBin) {
+    const Grid grid = makeGrid();
+    const auto [encoded, positionId] = dracoEncode(grid);
+    writeBytes("grid draco.bin", encoded);
+    const LoadedModel model =
+        geometry::io::loadGltf(writeDoc("external.gltf", dracoGridDoc(grid, encoded, positionId, "grid%20draco.bin")));
+    EXPECT_EQ(triangles(model), 200u);
 }
 
 /// Expects exactly `PATH: problem`, one line.

@@ -17,6 +17,8 @@
 
 #include <tiny_gltf.h>
 
+#include <draco/compression/decode.h>
+#include <draco/core/decoder_buffer.h>
 #include <nlohmann/json.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -205,12 +207,118 @@ const nlohmann::json& member(const nlohmann::json& object, const char* key) {
     return it == object.end() ? kNull : *it;
 }
 
+/// The file as the pre-check sees it, with the buffers it has read so far.
+struct Source {
+    const std::vector<unsigned char>& bytes;
+    bool binary;
+    std::string baseDir;
+    std::map<size_t, std::vector<unsigned char>> buffers;
+};
+
+std::vector<unsigned char> base64Decode(std::string_view text) {
+    std::vector<unsigned char> out;
+    uint32_t bits = 0;
+    int count = 0;
+    for (char c : text) {
+        int v = -1;
+        if (c >= 'A' && c <= 'Z') v = c - 'A';
+        else if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
+        else if (c >= '0' && c <= '9') v = c - '0' + 52;
+        else if (c == '+') v = 62;
+        else if (c == '/') v = 63;
+        else break; // '=' padding or junk ends the data, as in tinygltf
+        bits = bits << 6 | uint32_t(v);
+        if ((count += 6) >= 8) out.push_back(static_cast<unsigned char>(bits >> (count -= 8)));
+    }
+    return out;
+}
+
+/// tinygltf's URI decoding of external buffer names ('+' is a space, %XX a byte).
+std::string urlDecode(const std::string& uri) {
+    auto hex = [](char c) {
+        return c >= '0' && c <= '9'   ? c - '0'
+               : c >= 'a' && c <= 'f' ? c - 'a' + 10
+               : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                      : 0;
+    };
+    std::string out;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '+') out += ' ';
+        else if (uri[i] == '%' && i + 2 < uri.size()) out += char(hex(uri[i + 1]) << 4 | hex(uri[i + 2])), i += 2;
+        else out += uri[i];
+    }
+    return out;
+}
+
+/// A buffer's bytes found the way tinygltf finds them (GLB BIN chunk, data URI, or a file in
+/// the glTF's folder, then the working folder), at most its byteLength of them.
+const std::vector<unsigned char>& bufferBytes(Source& source, const nlohmann::json& buffer, size_t index,
+                                              const std::string& name) {
+    if (const auto it = source.buffers.find(index); it != source.buffers.end()) return it->second;
+    std::vector<unsigned char> data;
+    const nlohmann::json& uri = member(buffer, "uri");
+    if (!uri.is_string()) {
+        const size_t size = source.bytes.size();
+        uint32_t jsonLength = 0, binLength = 0;
+        if (source.binary && size >= 20) {
+            std::memcpy(&jsonLength, source.bytes.data() + 12, 4); // GLB is little-endian, as are we
+            const size_t header = 20 + size_t(jsonLength);
+            if (header + 8 <= size) {
+                std::memcpy(&binLength, source.bytes.data() + header, 4);
+                const auto first = source.bytes.begin() + std::ptrdiff_t(header + 8);
+                data.assign(first, first + std::ptrdiff_t(std::min<size_t>(binLength, size - header - 8)));
+            }
+        }
+    } else if (const std::string text = uri.get<std::string>(); text.starts_with("data:")) {
+        if (const size_t comma = text.find(";base64,"); comma != std::string::npos)
+            data = base64Decode(std::string_view(text).substr(comma + 8));
+    } else {
+        const std::string file = urlDecode(text);
+        std::string problem = "file not found";
+        bool read = false;
+        for (const std::string& dir : {source.baseDir, std::string(".")})
+            if (!read) read = readRegularFile(dir.empty() ? file : (fs::path(dir) / file).string(), data, problem);
+        if (!read) throw GltfError(name + ": buffer " + str(index) + " '" + file + "': " + problem);
+    }
+    return source.buffers[index] = std::move(data);
+}
+
+/// The Draco stream is decoded once here, before tinygltf decodes it again: tinygltf 2.7
+/// dereferences the attribute a unique id names without checking it exists and copies each
+/// value through a 4-component array, so both are checked first, with Draco itself.
+void checkDracoStream(const std::vector<unsigned char>& stream, const nlohmann::json& attributes,
+                      std::optional<int64_t> indexType, const std::string& name) {
+    draco::DecoderBuffer buffer;
+    buffer.Init(reinterpret_cast<const char*>(stream.data()), stream.size());
+    draco::Decoder decoder;
+    auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
+    if (!decoded.ok())
+        throw GltfError(name + ": cannot decode the Draco data (" + decoded.status().error_msg_string() + ")");
+    const draco::Mesh& mesh = *decoded.value();
+    for (const auto& [key, id] : attributes.items()) {
+        const int64_t uid = id.get<int64_t>();
+        const draco::PointAttribute* attribute =
+            uid < 0 || uid > std::numeric_limits<int32_t>::max() ? nullptr : mesh.GetAttributeByUniqueId(uint32_t(uid));
+        if (!attribute) throw GltfError(name + ": attribute " + key + " names no Draco attribute");
+        if (attribute->num_components() < 1 || attribute->num_components() > 4)
+            throw GltfError(name + ": attribute " + key + " has " + str(attribute->num_components()) + " components");
+    }
+    if (!indexType) return;
+    // tinygltf writes the indices in the accessor's type: too narrow a type would wrap.
+    const size_t limit = *indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? size_t{1} << 8
+                         : *indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? size_t{1} << 16
+                                                                                : size_t{1} << 32;
+    if (mesh.num_points() > limit)
+        throw GltfError(name + ": " + str(mesh.num_points()) + " vertices do not fit the indices' componentType");
+    if (mesh.num_faces() == 0) throw GltfError(name + ": the Draco data has no faces");
+}
+
 /// tinygltf 2.7 decodes KHR_draco_mesh_compression while parsing and indexes bufferViews,
 /// buffers and accessors from the extension without any range check, so the references are
 /// validated here, before it runs. (Buffers: tinygltf itself makes each buffer's data exactly
 /// its byteLength, so the declared lengths bound the views.)
-void checkDracoPrimitive(const nlohmann::json& doc, const nlohmann::json& prim, const nlohmann::json& ext,
-                         const std::string& where) {
+void checkDracoPrimitive(Source& source, const nlohmann::json& doc, const nlohmann::json& prim,
+                         const nlohmann::json& ext, const std::string& where) {
     const std::string name = where + ": KHR_draco_mesh_compression";
     const nlohmann::json& views = member(doc, "bufferViews");
     const nlohmann::json& buffers = member(doc, "buffers");
@@ -237,11 +345,14 @@ void checkDracoPrimitive(const nlohmann::json& doc, const nlohmann::json& prim, 
         if (!type.is_number_integer() || std::find(types.begin(), types.end(), type.get<int64_t>()) == types.end())
             throw GltfError(name + ": " + what + " accessor has an invalid componentType");
     };
-    if (prim.contains("indices"))
+    std::optional<int64_t> indexType;
+    if (prim.contains("indices")) {
         accessorOf(prim["indices"],
                    {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
                    "indices");
+        indexType = member(accessors[size_t(prim["indices"].get<int64_t>())], "componentType").get<int64_t>();
+    }
     const nlohmann::json& attributes = member(ext, "attributes");
     if (!attributes.is_object()) throw GltfError(name + " has no attributes object");
     for (const auto& [key, id] : attributes.items()) {
@@ -254,14 +365,20 @@ void checkDracoPrimitive(const nlohmann::json& doc, const nlohmann::json& prim, 
                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_COMPONENT_TYPE_FLOAT},
                    "attribute " + key);
     }
+
+    const std::vector<unsigned char>& data = bufferBytes(source, buffers[*bufferIndex], *bufferIndex, name);
+    if (o > data.size() || length.get<uint64_t>() > data.size() - o)
+        throw GltfError(name + ": its bufferView exceeds the " + str(data.size()) + " bytes of its buffer");
+    const auto first = data.begin() + std::ptrdiff_t(o);
+    checkDracoStream({first, first + std::ptrdiff_t(length.get<uint64_t>())}, attributes, indexType, name);
 }
 
 /// What tinygltf would report badly or not at all: glTF 1.0 (a different schema: tinygltf
 /// complains about some missing field), required extensions we cannot honour (tinygltf ignores
 /// extensionsRequired) and Draco references (see checkDracoPrimitive). Malformed JSON is left
 /// to tinygltf, whose message names the position.
-void precheck(std::string_view text) {
-    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+void precheck(const std::vector<unsigned char>& bytes, bool binary, const std::string& baseDir) {
+    const nlohmann::json doc = nlohmann::json::parse(jsonText(bytes, binary), nullptr, false);
     if (!doc.is_object()) return;
     const nlohmann::json& version = member(member(doc, "asset"), "version");
     if ((version.is_string() && version.get<std::string>().starts_with("1.")) || member(doc, "meshes").is_object())
@@ -272,12 +389,14 @@ void precheck(std::string_view text) {
                 throw GltfError("requires the unsupported glTF extension " + name.get<std::string>());
     const nlohmann::json& meshes = member(doc, "meshes");
     if (!meshes.is_array()) return;
+    Source source{bytes, binary, baseDir, {}};
     for (size_t m = 0; m < meshes.size(); ++m) {
         const nlohmann::json& prims = member(meshes[m], "primitives");
         if (!prims.is_array()) continue;
         for (size_t p = 0; p < prims.size(); ++p) {
             const nlohmann::json& ext = member(member(prims[p], "extensions"), "KHR_draco_mesh_compression");
-            if (ext.is_object()) checkDracoPrimitive(doc, prims[p], ext, "mesh " + str(m) + " primitive " + str(p));
+            if (ext.is_object())
+                checkDracoPrimitive(source, doc, prims[p], ext, "mesh " + str(m) + " primitive " + str(p));
         }
     }
 }
@@ -299,12 +418,12 @@ Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
         throw GltfError(kGltf1);
     if (!nestingWithinLimit(jsonText(bytes, parsed.binary)))
         throw GltfError("JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");
-    precheck(jsonText(bytes, parsed.binary));
+    const std::string baseDir = fs::path(path).parent_path().string();
+    precheck(bytes, parsed.binary, baseDir);
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(ignoreImage, nullptr);
     loader.SetFsCallbacks({fsFileExists, fsExpandPath, fsReadWholeFile, fsWriteWholeFile, nullptr});
-    const std::string baseDir = fs::path(path).parent_path().string();
     const auto size = static_cast<unsigned int>(bytes.size());
     std::string err, warn;
     bool ok = false;
