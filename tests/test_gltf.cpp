@@ -613,6 +613,15 @@ TEST_F(GltfTest, DracoReferencesAreCheckedBeforeDecoding) {
     expectFailure(writeDoc("corrupt.gltf", dracoGridDoc(grid, corrupt, positionId, dataUri(corrupt))));
 }
 
+TEST_F(GltfTest, DracoStreamSharedByPrimitivesDecodesOnce) {
+    const Grid grid = makeGrid();
+    const auto [encoded, positionId] = dracoEncode(grid);
+    json doc = dracoGridDoc(grid, encoded, positionId, dataUri(encoded));
+    json& prims = doc["meshes"][0]["primitives"];
+    for (int i = 0; i < 200; ++i) prims.push_back(prims[0]);
+    EXPECT_EQ(triangles(geometry::io::loadGltf(writeDoc("shared.gltf", doc))), 201u * 200u);
+}
+
 TEST_F(GltfTest, DracoInExternalBin) {
     const Grid grid = makeGrid();
     const auto [encoded, positionId] = dracoEncode(grid);

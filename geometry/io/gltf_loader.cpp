@@ -36,6 +36,7 @@
 #include <map>
 #include <new>
 #include <optional>
+#include <set>
 #include <stdexcept>
 
 namespace geometry::io {
@@ -213,6 +214,7 @@ struct Source {
     bool binary;
     std::string baseDir;
     std::map<size_t, std::vector<unsigned char>> buffers;
+    std::set<size_t> decodedViews;
 };
 
 std::vector<unsigned char> base64Decode(std::string_view text) {
@@ -366,6 +368,9 @@ void checkDracoPrimitive(Source& source, const nlohmann::json& doc, const nlohma
                    "attribute " + key);
     }
 
+    // tinygltf decodes a view for the first primitive naming it and skips it for the others, so
+    // must we: a file of many primitives sharing one stream must not decode it many times.
+    if (!source.decodedViews.insert(*viewIndex).second) return;
     const std::vector<unsigned char>& data = bufferBytes(source, buffers[*bufferIndex], *bufferIndex, name);
     if (o > data.size() || length.get<uint64_t>() > data.size() - o)
         throw GltfError(name + ": its bufferView exceeds the " + str(data.size()) + " bytes of its buffer");
@@ -389,7 +394,7 @@ void precheck(const std::vector<unsigned char>& bytes, bool binary, const std::s
                 throw GltfError("requires the unsupported glTF extension " + name.get<std::string>());
     const nlohmann::json& meshes = member(doc, "meshes");
     if (!meshes.is_array()) return;
-    Source source{bytes, binary, baseDir, {}};
+    Source source{bytes, binary, baseDir, {}, {}};
     for (size_t m = 0; m < meshes.size(); ++m) {
         const nlohmann::json& prims = member(meshes[m], "primitives");
         if (!prims.is_array()) continue;
