@@ -253,7 +253,8 @@ std::string urlDecode(const std::string& uri) {
 }
 
 /// A buffer's bytes found the way tinygltf finds them (GLB BIN chunk, data URI, or a file in
-/// the glTF's folder, then the working folder), at most its byteLength of them.
+/// the glTF's folder, then the working folder, paths joined as tinygltf joins them), so the
+/// stream checked is the stream tinygltf will decode.
 const std::vector<unsigned char>& bufferBytes(Source& source, const nlohmann::json& buffer, size_t index,
                                               const std::string& name) {
     if (const auto it = source.buffers.find(index); it != source.buffers.end()) return it->second;
@@ -279,7 +280,9 @@ const std::vector<unsigned char>& bufferBytes(Source& source, const nlohmann::js
         std::string problem = "file not found";
         bool read = false;
         for (const std::string& dir : {source.baseDir, std::string(".")})
-            if (!read) read = readRegularFile(dir.empty() ? file : (fs::path(dir) / file).string(), data, problem);
+            if (!read)
+                read =
+                    readRegularFile(dir.empty() ? file : dir + (dir.ends_with('/') ? "" : "/") + file, data, problem);
         if (!read) throw GltfError(name + ": buffer " + str(index) + " '" + file + "': " + problem);
     }
     return source.buffers[index] = std::move(data);
