@@ -1,9 +1,10 @@
 #pragma once
-// glTF 2.0 (.gltf with external or data-URI buffers, .glb) through tinygltf. The node hierarchy
-// is flattened into one geometry::Mesh per (node instance, triangle primitive), each with the
-// node's world matrix as Mesh::transform. Hostile files give a one-line std::runtime_error
-// "PATH: problem"; every accessor is bounds-checked against its buffer before it is read, so
-// memory stays bounded by the file's real size, not by counts the JSON claims.
+// glTF 2.0 (.gltf with external or data-URI buffers, .glb; KHR_draco_mesh_compression primitives)
+// through tinygltf. The node hierarchy is flattened into one geometry::Mesh per (node instance,
+// triangle primitive), each with the node's world matrix as Mesh::transform. Hostile files give
+// a one-line std::runtime_error "PATH: problem"; every accessor is bounds-checked against its
+// buffer before it is read, so memory stays bounded by the file's real size, not by counts the
+// JSON claims. glTF 1.0 and unsupported required extensions are refused by name.
 #include "geometry/io/model_loader.h"
 
 #include <string>
