@@ -167,7 +167,7 @@ ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, con
 
 int runBench(const BenchOptions& o) {
     const std::vector<BenchConfiguration> configs = benchConfigurations(o);
-    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene));
+    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene), {}, o.common.up);
     std::vector<std::pair<std::string, geometry::io::CanonicalView>> views;
     if (o.common.views.empty())
         for (const auto& v : file.views) views.emplace_back(v);

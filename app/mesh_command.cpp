@@ -22,6 +22,7 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
     }
     nlohmann::json j;
     j["format"] = m.format;
+    j["up"] = std::string(geometry::io::upAxisName(m.up));
     j["meshes"] = m.meshes.size();
     j["triangles"] = triangles;
     j["vertices"] = vertices;
@@ -35,6 +36,9 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
                     {"duplicate_faces", r.duplicateFaces},
                     {"isolated_vertices", r.isolatedVertices},
                     {"flipped_faces", r.flippedFaces},
+                    {"polygons_triangulated", r.polygonsTriangulated},
+                    {"non_planar_faces", r.nonPlanarFaces},
+                    {"ear_clip_fallbacks", r.earClipFallbacks},
                     {"output_vertices", r.outputVertices},
                     {"output_faces", r.outputFaces},
                     {"notes", r.notes}};
@@ -44,6 +48,7 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
 void printText(const nlohmann::json& j) {
     const auto& b = j["bounds"];
     std::cout << "format     " << j["format"].get<std::string>() << "\n"
+              << "up axis    " << j["up"].get<std::string>() << " (turned to +y)\n"
               << "meshes     " << j["meshes"] << "\n"
               << "triangles  " << j["triangles"] << "\n"
               << "vertices   " << j["vertices"] << "\n"
@@ -54,12 +59,14 @@ void printText(const nlohmann::json& j) {
     for (const auto& note : j["cleanup"]["notes"]) std::cout << "  note: " << note.get<std::string>() << "\n";
 }
 
-geometry::io::LoadedModel load(const MeshOptions& o) {
+/// info: turned so the file's up axis is +y, as every other command shows it; clean: the file's own
+/// axes, so the cleaned file lines up with the original.
+geometry::io::LoadedModel load(const MeshOptions& o, bool turnUp) {
     geometry::io::CleanupOptions c;
     c.creaseAngleDeg = o.creaseAngleDeg;
     c.mergeTolerance = o.mergeTolerance;
     c.fixOrientation = o.fixOrientation;
-    return geometry::io::loadModel(o.input, c);
+    return geometry::io::loadModel(o.input, c, {}, turnUp ? o.up : std::optional(geometry::io::UpAxis::Y));
 }
 
 void addCleanupOptions(CLI::App& cmd, MeshOptions& o) {
@@ -81,6 +88,14 @@ CLI::App* addMeshCommand(CLI::App& cli, MeshOptions& o) {
     info->add_option("FILE", o.input, "Mesh file")->required();
     info->add_flag("--json", o.json, "Print JSON");
     addCleanupOptions(*info, o);
+    info->add_option_function<std::string>(
+        "--up",
+        [&o](const std::string& text) {
+            o.up = geometry::io::parseUpAxis(text);
+            if (!o.up) throw std::invalid_argument("--up: expected one of y, z, -y, -z, x, -x, got '" + text + "'");
+        },
+        "The file's up axis (y, z, -y, -z, x, -x; default: z for STL, y for the others); bounds are given "
+        "with it turned to +y");
     CLI::App* clean = mesh->add_subcommand("clean", "Load, clean and write a mesh (format from OUT's extension)");
     clean->add_option("IN", o.input, "Mesh file to read")->required();
     clean->add_option("OUT", o.output, "Mesh file to write (.obj, .stl, .off, .ply)")->required();
@@ -89,8 +104,9 @@ CLI::App* addMeshCommand(CLI::App& cli, MeshOptions& o) {
 }
 
 int runMesh(const CLI::App& mesh, const MeshOptions& o) {
-    const geometry::io::LoadedModel model = load(o);
-    if (mesh.get_subcommand("info")->parsed()) {
+    const bool info = mesh.get_subcommand("info")->parsed();
+    const geometry::io::LoadedModel model = load(o, info);
+    if (info) {
         const nlohmann::json j = reportJson(model);
         if (o.json) std::cout << j.dump(2) << '\n';
         else printText(j);

@@ -1,5 +1,8 @@
 #pragma once
 // `shadowscope mesh info FILE [--json]` and `shadowscope mesh clean IN OUT`.
+#include "geometry/io/up_axis.h"
+
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -14,6 +17,7 @@ struct MeshOptions {
     double creaseAngleDeg = 30.0;
     double mergeTolerance = 1e-6;
     bool fixOrientation = false;
+    std::optional<geometry::io::UpAxis> up; // info: the file's up axis (default: its format's)
 };
 
 /// Adds the `mesh` command with its `info` and `clean` subcommands; returns the `mesh` command.

@@ -177,6 +177,14 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
                    "Scene: a built-in name (platform, piperack, plane), a scene file (resources/scenes/*.json) or "
                    "a model file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
         ->capture_default_str();
+    cmd.add_option_function<std::string>(
+        "--up",
+        [&o](const std::string& text) {
+            o.up = geometry::io::parseUpAxis(text);
+            if (!o.up) throw std::invalid_argument("--up: expected one of y, z, -y, -z, x, -x, got '" + text + "'");
+        },
+        "Up axis of model files (y, z, -y, -z, x, -x; default: z for STL, the CAD convention, y for the "
+        "others); in a scene file, the default for entries without \"up\"");
     if (bench)
         cmd.add_option("--view", o.views,
                        "Canonical view (camera and light) named in the scene file to measure "
@@ -246,7 +254,7 @@ geometry::io::SceneFile loadSceneFile(const RenderOptions& o) {
     geometry::io::SceneFile file;
     {
         LoadProgress progress(std::filesystem::path(o.scene).filename().string());
-        file = geometry::io::resolveScene(findResource(o.scene), std::ref(progress));
+        file = geometry::io::resolveScene(findResource(o.scene), std::ref(progress), o.up);
     }
     geometry::scene::Scene& scene = file.scene;
     if (!o.view.empty()) {

@@ -16,8 +16,9 @@ class App;
 namespace app {
 
 struct RenderOptions {
-    std::string scene = "platform"; // built-in name, scene file (.json) or model file
-    std::string view;               // a canonical view of the scene; empty: the scene's camera
+    std::string scene = "platform";         // built-in name, scene file (.json) or model file
+    std::string view;                       // a canonical view of the scene; empty: the scene's camera
+    std::optional<geometry::io::UpAxis> up; // --up: a model file's up axis; empty: its format's default
     geometry::shadow::Viewport size{1280, 720};
     std::string out = "out";
     std::string backend = "auto";

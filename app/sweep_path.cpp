@@ -95,7 +95,7 @@ int runSweepPath(const SweepPathOptions& o) {
         throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " must be within 1.." +
                                     std::to_string(kMaxPathFrames));
     geometry::shadow::validateOrThrow(o.render.settings);
-    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.render.scene));
+    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.render.scene), {}, o.render.up);
     const auto it = file.paths.find(o.path);
     if (it == file.paths.end()) {
         std::string names;

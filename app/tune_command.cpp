@@ -99,7 +99,7 @@ int runTune(const TuneCommandOptions& o) {
     for (const auto& a : o.common.assignments) geometry::shadow::applyAssignment(start, a);
     Tuner tuner(start, space, target, {.size = o.common.size, .budgetEvals = o.budgetEvals});
 
-    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene));
+    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene), {}, o.common.up);
     geometry::scene::Scene& scene = file.scene;
     std::vector<renderer::MeasureView> views;
     std::string viewNames;

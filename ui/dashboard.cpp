@@ -45,7 +45,7 @@ const geometry::analysis::Inspection* Dashboard::inspection(int side) const noex
 }
 
 void Dashboard::loadScene(const std::string& nameOrPath) {
-    if (!loader_.start(nameOrPath)) status_ = "a scene is still loading";
+    if (!loader_.start(nameOrPath, upAxis_)) status_ = "a scene is still loading";
     else status_ = "loading " + nameOrPath + " …";
 }
 

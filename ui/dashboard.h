@@ -196,10 +196,11 @@ private:
     std::shared_ptr<const geometry::lod::SceneLod> lod_;
     std::atomic<float> lodProgress_{0.f};
     std::atomic<bool> lodCancel_{false};
-    std::string scenePath_;       // the picker's text field
-    std::string presetPath_;      // the preset field
-    std::string viewChoice_;      // the canonical view last applied
-    float targetGammaDeg_ = 30.f; // the "set γ" control
+    std::string scenePath_;                      // the picker's text field
+    std::optional<geometry::io::UpAxis> upAxis_; // model files' up axis; empty: their format's default
+    std::string presetPath_;                     // the preset field
+    std::string viewChoice_;                     // the canonical view last applied
+    float targetGammaDeg_ = 30.f;                // the "set γ" control
     int requestedTab_ = -1;
     bool flyLooking_ = false; // right mouse held on the eye view: WASD/QE fly
 

@@ -98,6 +98,28 @@ void Dashboard::drawSceneGroup() {
     ImGui::SameLine();
     if (ImGui::Button("Load")) loadScene(scenePath_);
     widgetMapRecord("scene.load");
+    const std::string upLabel = upAxis_ ? std::string(geometry::io::upAxisName(*upAxis_)) : "auto (STL z, else y)";
+    if (ImGui::BeginCombo("up axis", upLabel.c_str())) {
+        const std::optional<geometry::io::UpAxis> choices[] = {std::nullopt,
+                                                               geometry::io::UpAxis::Y,
+                                                               geometry::io::UpAxis::Z,
+                                                               geometry::io::UpAxis::NegY,
+                                                               geometry::io::UpAxis::NegZ,
+                                                               geometry::io::UpAxis::X,
+                                                               geometry::io::UpAxis::NegX};
+        for (const auto& choice : choices) {
+            const std::string name = choice ? std::string(geometry::io::upAxisName(*choice)) : "auto";
+            if (ImGui::Selectable(name.c_str(), choice == upAxis_) && choice != upAxis_) {
+                upAxis_ = choice;
+                if (geometry::io::isModelFile(scene_.source)) loadScene(scene_.source); // turn it now
+            }
+            widgetMapRecord("scene.up=" + name);
+        }
+        ImGui::EndCombo();
+    }
+    widgetMapRecord("scene.up");
+    help("Which axis of a model file points up (CAD exports are often z-up); the model is reloaded turned onto "
+         "its base. auto: z for STL, y for the other formats");
     if (loader_.busy()) {
         ImGui::ProgressBar(loader_.progress(), ImVec2(-1, 0), (loader_.stage() + "…").c_str());
         widgetMapRecord("scene.progress");

@@ -8,13 +8,17 @@ SceneLoader::~SceneLoader() {
     if (future_.valid()) future_.wait(); // the worker uses this object's progress fields
 }
 
-SceneLoadResult SceneLoader::loadNow(const std::string& nameOrPath, const geometry::io::Progress& progress) {
+SceneLoadResult SceneLoader::loadNow(const std::string& nameOrPath, const geometry::io::Progress& progress,
+                                     std::optional<geometry::io::UpAxis> up) {
     try {
         LoadedScene loaded;
         loaded.source = nameOrPath;
-        loaded.file = geometry::io::resolveScene(nameOrPath, [&](float f, std::string_view stage) {
-            if (progress) progress(0.9f * f, stage);
-        });
+        loaded.file = geometry::io::resolveScene(
+            nameOrPath,
+            [&](float f, std::string_view stage) {
+                if (progress) progress(0.9f * f, stage);
+            },
+            up);
         if (progress) progress(0.9f, "building the ray-tracing BVH");
         loaded.truth = std::make_unique<geometry::analysis::GroundTruth>(loaded.file.scene);
         if (progress) progress(1.f, "done");
@@ -26,7 +30,7 @@ SceneLoadResult SceneLoader::loadNow(const std::string& nameOrPath, const geomet
     }
 }
 
-bool SceneLoader::start(const std::string& nameOrPath) {
+bool SceneLoader::start(const std::string& nameOrPath, std::optional<geometry::io::UpAxis> up) {
     if (busy()) return false;
     source_ = nameOrPath;
     progress_ = 0.f;
@@ -34,12 +38,15 @@ bool SceneLoader::start(const std::string& nameOrPath) {
         std::lock_guard lock(stageMutex_);
         stage_ = "starting";
     }
-    future_ = std::async(std::launch::async, [this, nameOrPath] {
-        return loadNow(nameOrPath, [this](float f, std::string_view stage) {
-            progress_ = f;
-            std::lock_guard lock(stageMutex_);
-            stage_ = std::string(stage);
-        });
+    future_ = std::async(std::launch::async, [this, nameOrPath, up] {
+        return loadNow(
+            nameOrPath,
+            [this](float f, std::string_view stage) {
+                progress_ = f;
+                std::lock_guard lock(stageMutex_);
+                stage_ = std::string(stage);
+            },
+            up);
     });
     return true;
 }

@@ -32,7 +32,8 @@ public:
     SceneLoader& operator=(const SceneLoader&) = delete;
 
     /// Starts loading; false (and nothing starts) while another load runs.
-    bool start(const std::string& nameOrPath);
+    /// `up`: a model file's up axis (empty: its format's default; resolveScene).
+    bool start(const std::string& nameOrPath, std::optional<geometry::io::UpAxis> up = std::nullopt);
     [[nodiscard]] bool busy() const noexcept { return future_.valid(); }
     /// Fraction done (0..1) and the current stage, for a progress bar.
     [[nodiscard]] float progress() const noexcept { return progress_.load(); }
@@ -43,7 +44,8 @@ public:
 
     /// Loads on the calling thread (start-up, headless): same steps, same result.
     [[nodiscard]] static SceneLoadResult loadNow(const std::string& nameOrPath,
-                                                 const geometry::io::Progress& progress = {});
+                                                 const geometry::io::Progress& progress = {},
+                                                 std::optional<geometry::io::UpAxis> up = std::nullopt);
 
 private:
     std::future<SceneLoadResult> future_;

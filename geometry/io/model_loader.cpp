@@ -35,6 +35,9 @@ void report(const Progress& progress, float fraction, std::string_view stage) {
 
 } // namespace
 
+/// The file as it is, in its own axes.
+LoadedModel readModel(const std::string& path, const CleanupOptions& options, const Progress& progress);
+
 bool isModelFile(std::string_view path) noexcept {
     try {
         return std::find(kExtensions.begin(), kExtensions.end(), lowerExtension(path)) != kExtensions.end();
@@ -43,7 +46,30 @@ bool isModelFile(std::string_view path) noexcept {
     }
 }
 
-LoadedModel loadModel(const std::string& path, const CleanupOptions& options, const Progress& progress) {
+namespace {
+
+/// Turns every mesh so that `axis` points up (+Y): the rotation goes in front of each transform, and
+/// the chunks' world boxes turn with it (a quarter turn maps a box onto a box exactly).
+void turnUp(LoadedModel& model, UpAxis axis) {
+    model.up = axis;
+    if (axis == UpAxis::Y) return;
+    const glm::mat4 r = rotationToYUp(axis);
+    for (scene::Mesh& mesh : model.meshes) {
+        mesh.transform = r * mesh.transform;
+        for (scene::Chunk& chunk : mesh.chunks) chunk.bounds = chunk.bounds.transformed(r);
+    }
+}
+
+} // namespace
+
+LoadedModel loadModel(const std::string& path, const CleanupOptions& options, const Progress& progress,
+                      std::optional<UpAxis> up) {
+    LoadedModel model = readModel(path, options, progress);
+    turnUp(model, up.value_or(defaultUpAxis(model.format)));
+    return model;
+}
+
+LoadedModel readModel(const std::string& path, const CleanupOptions& options, const Progress& progress) {
     const std::string ext = lowerExtension(path);
     if (ext == "gltf" || ext == "glb") return loadGltf(path, options, progress);
     if (!isModelFile(path))
@@ -63,6 +89,7 @@ LoadedModel loadModel(const std::string& path, const CleanupOptions& options, co
     model.report.nonPlanarFaces = reading.nonPlanarFaces;
     model.report.earClipFallbacks = reading.earClipFallbacks;
     report(progress, 1.f, "cleaning");
+    if (model.report.inputFaces == 0) throw std::runtime_error(path + ": the file has no triangles");
     if (mesh.triangleCount() == 0) throw std::runtime_error(path + ": no triangles left after cleanup");
 
     report(progress, 0.f, "chunking");

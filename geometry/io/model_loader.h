@@ -3,9 +3,11 @@
 // through tinygltf. Every mesh is cleaned (cleanup counted in a report) and chunked after
 // cleanup. Bad input gives a std::runtime_error whose one-line message names the file and the
 // problem; memory stays bounded by the file's real size, never by counts a header claims.
+#include "geometry/io/up_axis.h"
 #include "geometry/scene/scene.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,14 +45,16 @@ using Progress = std::function<void(float fraction, std::string_view stage)>;
 struct LoadedModel {
     std::vector<scene::Mesh> meshes; // world transforms applied into Mesh::transform; chunked
     CleanupReport report;
-    std::string format; // "obj", "stl", "off", "ply", "gltf", "glb"
+    std::string format;    // "obj", "stl", "off", "ply", "gltf", "glb"
+    UpAxis up = UpAxis::Y; // the file's up axis, as used: turned to +Y in the meshes' transforms
 };
 
 /// Loads a mesh or glTF file by extension (case-insensitive). Throws std::runtime_error
 /// "FILE: problem" for a missing file, an unknown extension, truncated/corrupt data, indices
-/// out of range, absurd sizes, an empty result, recursive glTF nodes or missing buffers.
+/// out of range, absurd sizes, an empty result, recursive glTF nodes or missing buffers. `up`: the
+/// file's up axis (default: defaultUpAxis of its format), turned to +Y.
 [[nodiscard]] LoadedModel loadModel(const std::string& path, const CleanupOptions& options = {},
-                                    const Progress& progress = {});
+                                    const Progress& progress = {}, std::optional<UpAxis> up = std::nullopt);
 
 /// True for extensions loadModel() reads.
 [[nodiscard]] bool isModelFile(std::string_view path) noexcept;

@@ -278,6 +278,7 @@ bool endsWithIgnoreCase(std::string_view s, std::string_view suffix) {
 struct Defaults {
     std::optional<scene::Camera> camera;
     std::optional<scene::DirectionalLight> light;
+    std::optional<UpAxis> up; // for model files without "up" (--up); else their format's default
 };
 
 /// The `params` of a built-in scene that takes a triangle budget and a seed.
@@ -309,13 +310,18 @@ scene::Scene builtinEntry(const Reader& r, const json& e, const std::string& key
 }
 
 std::vector<scene::Mesh> fileEntry(const Reader& r, const json& e, const std::string& key, const fs::path& folder,
-                                   const Progress& progress) {
+                                   const Progress& progress, std::optional<UpAxis> up) {
+    if (e.contains("up")) {
+        const std::string text = r.string(e["up"], member(key, "up"));
+        up = parseUpAxis(text);
+        if (!up) r.fail(member(key, "up"), "expected one of y, z, -y, -z, x, -x, got '" + text + "'");
+    }
     const std::string k = member(key, "file");
     const std::string file = r.string(e["file"], k);
     if (file.empty()) r.fail(k, "expected a file name, got an empty string");
     const fs::path p(file);
     try {
-        return loadModel((p.is_absolute() ? p : folder / p).string(), {}, progress).meshes;
+        return loadModel((p.is_absolute() ? p : folder / p).string(), {}, progress, up).meshes;
     } catch (const std::exception& ex) {
         r.fail(k, ex.what()); // loadModel's own "FILE: problem"
     }
@@ -323,7 +329,8 @@ std::vector<scene::Mesh> fileEntry(const Reader& r, const json& e, const std::st
 
 void readMeshEntry(const Reader& r, const json& e, const std::string& key, const fs::path& folder,
                    const Progress& progress, scene::Scene& scene, Defaults& defaults) {
-    r.checkObject(e, key, {"file", "builtin", "params", "translate", "rotate_deg", "scale", "color"});
+    r.checkObject(e, key, {"file", "builtin", "params", "up", "translate", "rotate_deg", "scale", "color"});
+    if (e.contains("builtin") && e.contains("up")) r.fail(member(key, "up"), "only model files take an up axis");
     if (e.contains("file") == e.contains("builtin")) r.fail(key, "expected exactly one of \"file\" or \"builtin\"");
     if (e.contains("file") && e.contains("params"))
         r.fail(member(key, "params"), "only built-in scenes take parameters");
@@ -341,7 +348,7 @@ void readMeshEntry(const Reader& r, const json& e, const std::string& key, const
         if (!defaults.light) defaults.light = scene::DirectionalLight{placement.rotation * builtin.light.direction};
         meshes = std::move(builtin.meshes);
     } else {
-        meshes = fileEntry(r, e, key, folder, progress);
+        meshes = fileEntry(r, e, key, folder, progress, defaults.up);
     }
     for (scene::Mesh& m : meshes) {
         place(m, placement);
@@ -424,7 +431,7 @@ void readPaths(const Reader& r, const json& j, SceneFile& f) {
     }
 }
 
-SceneFile readSceneFile(const std::string& path, const json& j, const Progress& progress) {
+SceneFile readSceneFile(const std::string& path, const json& j, const Progress& progress, std::optional<UpAxis> up) {
     const Reader r(path);
     r.checkObject(j, "", {"name", "description", "meshes", "ground", "camera", "light", "views", "paths"});
     SceneFile f;
@@ -432,6 +439,7 @@ SceneFile readSceneFile(const std::string& path, const json& j, const Progress& 
     if (j.contains("description")) (void)r.string(j["description"], "description");
 
     Defaults defaults;
+    defaults.up = up;
     readMeshes(r, j, fs::path(path).parent_path(), progress, f.scene, defaults);
     const scene::Aabb models = f.scene.bounds();
     readGround(r, j, f.scene);
@@ -453,10 +461,10 @@ SceneFile withDefaultView(scene::Scene scene) {
     return f;
 }
 
-SceneFile modelScene(const std::string& path, const Progress& progress) {
+SceneFile modelScene(const std::string& path, const Progress& progress, std::optional<UpAxis> up) {
     scene::Scene scene;
     scene.name = fs::path(path).stem().string();
-    scene.meshes = loadModel(path, {}, progress).meshes;
+    scene.meshes = loadModel(path, {}, progress, up).meshes;
     const scene::Aabb models = meshBounds(scene.meshes);
     scene.meshes.push_back(makeGround(models, std::nullopt, std::nullopt, kGroundColor));
     scene.camera = framedCamera(models, scene.bounds());
@@ -494,14 +502,14 @@ scene::DirectionalLight defaultLight() {
     return scene::DirectionalLight{{0.6f, -1.f, -0.2f}};
 }
 
-SceneFile loadSceneFile(const std::string& path, const Progress& progress) {
+SceneFile loadSceneFile(const std::string& path, const Progress& progress, std::optional<UpAxis> up) {
     const json j = readJsonFile(path, path, kMaxSceneFileBytes, kMaxSceneFileDepth);
     if (!j.is_object())
         throw fileError(path, std::string("expected a JSON object at the top level, got ") + j.type_name());
-    return readSceneFile(path, j, progress);
+    return readSceneFile(path, j, progress, up);
 }
 
-SceneFile resolveScene(const std::string& nameOrPath, const Progress& progress) {
+SceneFile resolveScene(const std::string& nameOrPath, const Progress& progress, std::optional<UpAxis> up) {
     const auto& names = scene::builtinSceneNames();
     if (std::find(names.begin(), names.end(), nameOrPath) != names.end()) {
         if (progress) progress(0.f, "building");
@@ -509,8 +517,8 @@ SceneFile resolveScene(const std::string& nameOrPath, const Progress& progress) 
         if (progress) progress(1.f, "building");
         return f;
     }
-    if (endsWithIgnoreCase(nameOrPath, ".json")) return loadSceneFile(nameOrPath, progress);
-    if (isModelFile(nameOrPath)) return modelScene(nameOrPath, progress);
+    if (endsWithIgnoreCase(nameOrPath, ".json")) return loadSceneFile(nameOrPath, progress, up);
+    if (isModelFile(nameOrPath)) return modelScene(nameOrPath, progress, up);
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
     // The extensions are those model_loader.h documents for loadModel().

@@ -58,13 +58,17 @@ struct SceneFile {
 /// keys, wrong types, numbers out of range, a model file that does not load (loadModel's message),
 /// no meshes and no ground, eye == target, near <= 0, far <= near, fov_y outside (0, 180), a zero
 /// light direction. `progress` sees the model loads, scaled to the whole file.
-[[nodiscard]] SceneFile loadSceneFile(const std::string& path, const Progress& progress = {});
+/// `up`: the up axis of model files whose entry has no "up" (default: their format's).
+[[nodiscard]] SceneFile loadSceneFile(const std::string& path, const Progress& progress = {},
+                                      std::optional<UpAxis> up = std::nullopt);
 
 /// What --scene names: a built-in scene name (one view, "default"), a scene file (*.json), or a
 /// model file (isModelFile): its meshes on a ground plane 4× their footprint at their lowest point,
 /// a framed camera, defaultLight(), one view "default". Throws std::runtime_error with a one-line
 /// message; for anything else it lists the built-in names and the accepted extensions.
-[[nodiscard]] SceneFile resolveScene(const std::string& nameOrPath, const Progress& progress = {});
+/// `up` is the model's up axis (loadModel), or the default for a scene file's model files.
+[[nodiscard]] SceneFile resolveScene(const std::string& nameOrPath, const Progress& progress = {},
+                                     std::optional<UpAxis> up = std::nullopt);
 
 /// A 3/4 view from above looking at the centre of `bounds`, far enough that the bounds' sphere
 /// fits the vertical field of view; near = diagonal / 1000, far = diagonal · 3.
