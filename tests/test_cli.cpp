@@ -165,6 +165,43 @@ TEST(Cli, MeshInfoAndCleanReportTheCleanup) {
     EXPECT_NE(missing.output.find("nope.stl"), std::string::npos);
 }
 
+// --up: a Z-up STL plate (10 × 6 × 0.1 in the file's x, y, z) lies flat by default and with --up z,
+// stands on its edge with --up y; render puts the ground right under it; a bad axis is exit 2.
+TEST(Cli, UpAxisTurnsAZUpPlateOntoItsBase) {
+    const fs::path dir = freshDir("up");
+    fs::create_directories(dir);
+    {
+        std::ofstream stl(dir / "plate.stl");
+        const float x[2] = {0, 10}, y[2] = {0, 6}, z[2] = {0, 0.1f};
+        const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+        stl << "solid plate\n";
+        for (const auto& q : faces)
+            for (const auto& tri : {std::array{q[0], q[1], q[2]}, std::array{q[0], q[2], q[3]}}) {
+                stl << "facet normal 0 0 0\nouter loop\n";
+                for (int i : tri)
+                    stl << "vertex " << x[i & 1] << ' ' << y[(i >> 1) & 1] << ' ' << z[(i >> 2) & 1] << '\n';
+                stl << "endloop\nendfacet\n";
+            }
+        stl << "endsolid plate\n";
+    }
+    const std::string plate = (dir / "plate.stl").string();
+    const auto heightWith = [&](const std::string& up) {
+        const CommandResult r = run("mesh info --json " + up + plate);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        const nlohmann::json j = nlohmann::json::parse(r.output);
+        return j.at("bounds").at("max")[1].get<double>() - j.at("bounds").at("min")[1].get<double>();
+    };
+    EXPECT_NEAR(heightWith(""), 0.1, 1e-5);
+    EXPECT_NEAR(heightWith("--up z "), 0.1, 1e-5);
+    EXPECT_NEAR(heightWith("--up y "), 6.0, 1e-5);
+    const CommandResult r = run("render --backend osmesa --size 64x48 --shadow-res 128 --up z --scene " + plate +
+                                " --out " + (dir / "out").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const CommandResult bad = run("render --backend osmesa --up sideways --scene " + plate);
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("--up"), std::string::npos) << bad.output;
+}
+
 // --views pixels: the per-pixel quantities behind the figures, one PFM each, consistent with each
 // other; --truth-samples 3 gives 9 samples per pixel, so edges get a fractional coverage.
 TEST(Cli, RenderWritesThePixelLayers) {
