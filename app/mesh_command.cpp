@@ -1,5 +1,7 @@
 #include "mesh_command.h"
 
+#include "render_options.h"
+
 #include "geometry/io/model_loader.h"
 
 #include <CLI/CLI.hpp>
@@ -88,14 +90,9 @@ CLI::App* addMeshCommand(CLI::App& cli, MeshOptions& o) {
     info->add_option("FILE", o.input, "Mesh file")->required();
     info->add_flag("--json", o.json, "Print JSON");
     addCleanupOptions(*info, o);
-    info->add_option_function<std::string>(
-        "--up",
-        [&o](const std::string& text) {
-            o.up = geometry::io::parseUpAxis(text);
-            if (!o.up) throw std::invalid_argument("--up: expected one of y, z, -y, -z, x, -x, got '" + text + "'");
-        },
-        "The file's up axis (y, z, -y, -z, x, -x; default: z for STL, y for the others); bounds are given "
-        "with it turned to +y");
+    addUpOption(*info, o.up,
+                "The file's up axis (y, z, -y, -z, x, -x; default: z for STL, y for the others); bounds are given "
+                "with it turned to +y");
     CLI::App* clean = mesh->add_subcommand("clean", "Load, clean and write a mesh (format from OUT's extension)");
     clean->add_option("IN", o.input, "Mesh file to read")->required();
     clean->add_option("OUT", o.output, "Mesh file to write (.obj, .stl, .off, .ply)")->required();

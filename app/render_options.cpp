@@ -171,20 +171,25 @@ std::string unknownView(const RenderOptions& o, const geometry::io::SceneFile& f
 
 } // namespace
 
+void addUpOption(CLI::App& cmd, std::optional<geometry::io::UpAxis>& up, const std::string& help) {
+    cmd.add_option_function<std::string>(
+        "--up",
+        [&up](const std::string& text) {
+            up = geometry::io::parseUpAxis(text);
+            if (!up) throw std::invalid_argument("--up: expected one of y, z, -y, -z, x, -x, got '" + text + "'");
+        },
+        help);
+}
+
 void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
     const bool bench = use == OptionUse::Bench;
     cmd.add_option("--scene", o.scene,
                    "Scene: a built-in name (platform, piperack, plane), a scene file (resources/scenes/*.json) or "
                    "a model file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
         ->capture_default_str();
-    cmd.add_option_function<std::string>(
-        "--up",
-        [&o](const std::string& text) {
-            o.up = geometry::io::parseUpAxis(text);
-            if (!o.up) throw std::invalid_argument("--up: expected one of y, z, -y, -z, x, -x, got '" + text + "'");
-        },
-        "Up axis of model files (y, z, -y, -z, x, -x; default: z for STL, the CAD convention, y for the "
-        "others); in a scene file, the default for entries without \"up\"");
+    addUpOption(cmd, o.up,
+                "Up axis of model files (y, z, -y, -z, x, -x; default: z for STL, the CAD convention, y for the "
+                "others); in a scene file, the default for entries without \"up\"");
     if (bench)
         cmd.add_option("--view", o.views,
                        "Canonical view (camera and light) named in the scene file to measure "

@@ -60,6 +60,8 @@ struct TruthOptions {
 
 /// Adds --truth (`truthHelp`; none when empty: the command always traces truth) and --truth-samples.
 void addTruthOptions(CLI::App& cmd, TruthOptions& truth, const std::string& truthHelp);
+/// --up AXIS (y, z, -y, -z, x, -x) into `up`; another value is a CLI error (exit 2).
+void addUpOption(CLI::App& cmd, std::optional<geometry::io::UpAxis>& up, const std::string& help);
 
 /// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()),
 /// applied directly to `settings`; for commands without --preset.
