@@ -56,6 +56,7 @@ ui::DashboardOptions dashboardOptions(const RenderOptions& options) {
     d.sceneChoices = sceneChoices();
     d.presetChoices = presetChoices();
     d.view = options.view;
+    d.up = options.up;
     return d;
 }
 

@@ -36,6 +36,7 @@ Dashboard::Dashboard(LoadedScene scene, DashboardState state, DashboardOptions o
     sides_[0].renderer = std::make_unique<renderer::Renderer>(scene_.file.scene);
     scenePath_ = scene_.source;
     viewChoice_ = options_.view;
+    upAxis_ = options_.up;
 }
 
 Dashboard::~Dashboard() { cancelCasterLod(); }

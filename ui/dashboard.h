@@ -32,7 +32,8 @@ struct DashboardOptions {
     std::vector<std::string> sceneChoices;  // built-in names and scene files for the scene picker
     std::vector<std::string> presetChoices; // preset files for the preset picker
     float uiScale = 1.f;
-    std::string view; // the canonical view the scene was opened at, if any
+    std::string view;                       // the canonical view the scene was opened at, if any
+    std::optional<geometry::io::UpAxis> up; // --up: model files' up axis, until the Scene group changes it
 };
 
 /// What the window front end reads from its input system for a frame (the dashboard itself
