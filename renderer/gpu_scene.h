@@ -50,7 +50,8 @@ public:
     DrawCount drawLevels(const GpuMesh& m, Visible&& visible, Level&& level) const noexcept {
         DrawCount count;
         const bool lod = m.lod.vao != 0 && m.lod.chunkLevels.size() == m.chunks.size();
-        std::vector<const geometry::lod::LodRange*> simplified;
+        std::vector<const geometry::lod::LodRange*>& simplified = simplified_; // reused: no per-pass allocation
+        simplified.clear();
         count.drawn = draw(m, [&, index = size_t(0)](const geometry::scene::Aabb& bounds) mutable {
             const size_t i = index++;
             if (!visible(bounds)) return false;
@@ -98,6 +99,7 @@ private:
     }
     std::vector<GpuMesh> meshes_;
     bool hasLod_ = false;
+    mutable std::vector<const geometry::lod::LodRange*> simplified_; // drawLevels' scratch list
 };
 
 } // namespace renderer

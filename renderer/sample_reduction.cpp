@@ -63,7 +63,8 @@ geometry::shadow::SampleBounds SampleReduction::reduce(GLuint depthTexture, int 
     program_.set("uSize", glm::ivec2(width, height));
     glDispatchCompute(GLuint((width + 15) / 16), GLuint((height + 127) / 128), 1); // sample_reduce.comp: 16 × 128
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<uint32_t> words(kWords);
+    std::vector<uint32_t>& words = words_;
+    words.resize(kWords);
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(kWords * sizeof(uint32_t)), words.data());
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 

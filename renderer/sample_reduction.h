@@ -5,6 +5,9 @@
 #include "geometry/shadow/sample_bounds.h"
 #include "program.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace renderer {
 
 struct SampleView {
@@ -27,6 +30,7 @@ public:
 private:
     Program program_{Program::Compute{}, "sample_reduce.comp"};
     GLuint buffer_ = 0;
+    std::vector<uint32_t> words_; // the read-back, reused every frame
 };
 
 } // namespace renderer
