@@ -444,10 +444,8 @@ TEST_F(GuiE2E, SurvivesAbuse) {
     xdo({"windowmap", "--sync", wid});
     focus();
     screenshot("remapped");
-    // windowminimize asks a window manager to iconify; with none it must simply change nothing.
-    xdo({"windowminimize", wid});
-    focus();
-    screenshot("minimized");
+    // (No windowminimize: without a window manager nothing can de-iconify the window again, and a
+    // minimised dashboard rightly draws nothing; unmap and map above is what Xvfb can test.)
 
     // An out-of-range resolution: refused, the old value stays. "-999999" is out of range at every
     // prefix ("-", "-9", "-99", …), so the outcome does not depend on how the typing splits into frames.

@@ -30,6 +30,15 @@ float contentScale(GLFWwindow* window) {
     return clampUiScale(std::max(sx, sy));
 }
 
+/// F12 presses counted by a key callback, not by polling the key: a press and release that arrive
+/// while the loop sleeps or skips a frame still count once each.
+int f12Presses = 0;
+GLFWkeyfun previousKeyCallback = nullptr;
+extern "C" void onKey(GLFWwindow* w, int key, int scancode, int action, int mods) {
+    if (key == GLFW_KEY_F12 && action == GLFW_PRESS) ++f12Presses;
+    if (previousKeyCallback) previousKeyCallback(w, key, scancode, action, mods);
+}
+
 /// WASD/QE as (right, up, forward).
 glm::vec3 flyKeys(GLFWwindow* w) {
     const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.f : 0.f; };
@@ -65,6 +74,7 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
     glfwSetInputMode(w, GLFW_STICKY_KEYS, GLFW_TRUE); // a press and release within one frame still counts
     ImGuiScope imgui(contentScale(w));
     ImGui_ImplGlfw_InitForOpenGL(w, true);
+    previousKeyCallback = glfwSetKeyCallback(w, onKey); // ImGui's, called on from onKey
 
     DashboardOptions dashOptions;
     dashOptions.screenshotDir = options.screenshotDir;
@@ -88,7 +98,6 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
         savedConfig = now;
     };
 
-    bool f12WasDown = false;
     auto last = std::chrono::steady_clock::now();
     std::signal(SIGINT, onQuitSignal);
     std::signal(SIGTERM, onQuitSignal);
@@ -117,9 +126,8 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
         const bool ctrl =
             glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
         if (ctrl && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
-        const bool f12Down = glfwGetKey(w, GLFW_KEY_F12) == GLFW_PRESS;
-        input.screenshot = f12Down && !f12WasDown;
-        f12WasDown = f12Down;
+        input.screenshot = f12Presses > 0;
+        f12Presses = 0;
         if (!ImGui::GetIO().WantTextInput) input.fly = flyKeys(w);
 
         ImGui_ImplOpenGL3_NewFrame();
