@@ -1,5 +1,6 @@
 // Ground truth by ray casting (Embree): known answers on the plane scene and tiny scenes,
-// agreement with a brute-force tracer, input validation, and the platform as a whole.
+// agreement with a brute-force tracer, input validation, the platform as a whole, and
+// cancellation through a std::stop_token.
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/scene/builtin_scenes.h"
 
@@ -7,10 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <stop_token>
+#include <thread>
 #include <vector>
 
 using namespace geometry::scene;
@@ -580,5 +585,124 @@ TEST(GroundTruthPlatform, DefaultViewHasLitAndShadowedReceiversAndIsDeterministi
     const double shadowedShare = static_cast<double>(shadowed) / static_cast<double>(facing);
     EXPECT_GT(shadowedShare, 0.02) << shadowed << " of " << facing;
     EXPECT_LT(shadowedShare, 0.98) << shadowed << " of " << facing;
+}
+
+// ---- Cancellation (std::stop_token) ------------------------------------------------------------
+
+const Scene& platformScene() {
+    static const Scene scene = makePlatformScene();
+    return scene;
+}
+
+const GroundTruth& platformTruth() {
+    static const GroundTruth truth(platformScene());
+    return truth;
+}
+
+/// The platform's default view at w × h (what coverage() takes).
+glm::mat4 platformViewProj(int w, int h) {
+    const Camera& cam = platformScene().camera;
+    return cam.projection(float(w) / float(h)) * cam.view();
+}
+
+/// Floats as their bits: NaN (sky in coverage) compares equal to itself.
+std::vector<uint32_t> bits(const std::vector<float>& v) {
+    std::vector<uint32_t> out(v.size());
+    std::transform(v.begin(), v.end(), out.begin(), [](float f) { return std::bit_cast<uint32_t>(f); });
+    return out;
+}
+
+TEST(GroundTruthCancel, AStopRequestedBeforeTheCallThrowsCancelled) {
+    const GroundTruth& truth = platformTruth();
+    const Scene& scene = platformScene();
+    const glm::vec3 l = scene.light.l();
+    const PrimaryHits hits = truth.primaryHits(scene.camera, 64, 36);
+    const std::vector<float> reach(hits.points.size(), 1.f);
+    std::stop_source source;
+    source.request_stop();
+    const std::stop_token stop = source.get_token();
+    EXPECT_THROW((void)truth.occluded(hits.points, hits.normals, l, 0, stop), Cancelled);
+    EXPECT_THROW((void)truth.occludedWithin(hits.points, hits.normals, l, reach, 0, stop), Cancelled);
+    std::vector<int> meshes;
+    EXPECT_THROW((void)truth.surfaceNormals(scene.camera.eye, hits.points, hits.normals, 0, &meshes, stop), Cancelled);
+    EXPECT_THROW((void)truth.coverage(platformViewProj(64, 36), 64, 36, l, 2, 0, stop), Cancelled);
+    // Bad input is still reported as such, and Cancelled is a runtime_error a caller may catch as one.
+    EXPECT_THROW((void)truth.coverage(platformViewProj(64, 36), 64, 36, l, 0, 0, stop), std::invalid_argument);
+    try {
+        (void)truth.occluded(hits.points, hits.normals, l, 0, stop);
+        FAIL() << "not cancelled";
+    } catch (const std::runtime_error& e) {
+        EXPECT_STREQ(e.what(), "cancelled");
+    }
+}
+
+// The dashboard abandons a stale truth: a stop ~20 ms into a run of 5.3M coverage samples (two
+// threads) ends it within a task of a few hundred rays, long before the run would have finished.
+TEST(GroundTruthCancel, AStopFromAnotherThreadEndsCoverageEarly) {
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+    constexpr int kW = 384, kH = 216, kSamples = 8, kThreads = 2;
+    const GroundTruth& truth = platformTruth();
+    const glm::mat4 vp = platformViewProj(kW, kH);
+    const glm::vec3 l = platformScene().light.l();
+
+    auto start = Clock::now();
+    const auto full = truth.coverage(vp, kW, kH, l, kSamples, kThreads);
+    const double uncancelled = seconds(Clock::now() - start);
+    ASSERT_EQ(full.size(), size_t(kW * kH));
+
+    // 20 ms, or a tenth of the whole run on a machine that needs less than 0.2 s for it.
+    const auto delay = std::min<Clock::duration>(
+        std::chrono::milliseconds(20),
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(uncancelled / 10.0)));
+    std::stop_source source;
+    bool cancelled = false;
+    start = Clock::now();
+    std::jthread stopper([&] {
+        std::this_thread::sleep_for(delay);
+        source.request_stop();
+    });
+    try {
+        (void)truth.coverage(vp, kW, kH, l, kSamples, kThreads, source.get_token());
+    } catch (const Cancelled&) {
+        cancelled = true;
+    }
+    const double cancelledAfter = seconds(Clock::now() - start);
+    stopper.join();
+    RecordProperty("uncancelled_ms", std::to_string(uncancelled * 1e3));
+    RecordProperty("cancelled_ms", std::to_string(cancelledAfter * 1e3));
+    EXPECT_TRUE(cancelled) << "the run ended in " << cancelledAfter * 1e3 << " ms without noticing the stop";
+    EXPECT_LT(cancelledAfter, 0.5 * uncancelled)
+        << "cancelled after " << cancelledAfter * 1e3 << " ms; the whole run takes " << uncancelled * 1e3 << " ms";
+}
+
+// A token that is never stopped changes nothing: every result equals the call without one, bit for bit.
+TEST(GroundTruthCancel, ANeverStoppedTokenGivesTheSameResults) {
+    const GroundTruth& truth = platformTruth();
+    const Scene& scene = platformScene();
+    const glm::vec3 l = scene.light.l();
+    const PrimaryHits hits = truth.primaryHits(scene.camera, 160, 90);
+    const std::stop_source source; // can be stopped, never is
+    const std::stop_token live = source.get_token();
+    ASSERT_TRUE(live.stop_possible());
+
+    const auto occ = truth.occluded(hits.points, hits.normals, l);
+    EXPECT_GT(std::count(occ.begin(), occ.end(), 1), 0);
+    EXPECT_EQ(truth.occluded(hits.points, hits.normals, l, 0, live), occ);
+
+    std::vector<int> meshes, liveMeshes;
+    const auto normals = truth.surfaceNormals(scene.camera.eye, hits.points, hits.normals, 0, &meshes);
+    EXPECT_EQ(truth.surfaceNormals(scene.camera.eye, hits.points, hits.normals, 0, &liveMeshes, live), normals);
+    EXPECT_EQ(liveMeshes, meshes);
+
+    std::vector<float> reach(hits.points.size());
+    for (size_t i = 0; i < reach.size(); ++i) reach[i] = 0.05f * float(i % 40);
+    const auto within = truth.occludedWithin(hits.points, normals, l, reach);
+    EXPECT_EQ(truth.occludedWithin(hits.points, normals, l, reach, 0, live), within);
+
+    const glm::mat4 vp = platformViewProj(160, 90);
+    const auto c = truth.coverage(vp, 160, 90, l, 4);
+    EXPECT_EQ(bits(truth.coverage(vp, 160, 90, l, 4, 0, live)), bits(c));
+    EXPECT_EQ(bits(truth.coverage(vp, 160, 90, l, 4, 0, std::stop_token{})), bits(c));
 }
 } // namespace

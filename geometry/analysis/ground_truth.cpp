@@ -60,11 +60,13 @@ const char* errorName(RTCError code) noexcept {
 
 /// Runs fn(task) for task in [0, tasks) on `threads` threads (the caller is one of them). Tasks
 /// are handed out through an atomic counter, so the sky-heavy and geometry-heavy parts of an
-/// image balance themselves; results are independent of who runs what.
-template <class Fn> void parallelFor(size_t tasks, int threads, const Fn& fn) {
+/// image balance themselves; results are independent of who runs what. Once `stop` is requested
+/// no worker takes another task (one check per task: a task is a few hundred rays), and the
+/// call throws Cancelled when they have all finished.
+template <class Fn> void parallelFor(size_t tasks, int threads, const std::stop_token& stop, const Fn& fn) {
     std::atomic<size_t> next{0};
     const auto worker = [&] {
-        for (size_t t = next.fetch_add(1, std::memory_order_relaxed); t < tasks;
+        for (size_t t = next.fetch_add(1, std::memory_order_relaxed); t < tasks && !stop.stop_requested();
              t = next.fetch_add(1, std::memory_order_relaxed))
             fn(t);
     };
@@ -73,6 +75,8 @@ template <class Fn> void parallelFor(size_t tasks, int threads, const Fn& fn) {
     pool.reserve(helpers);
     for (size_t i = 0; i < helpers; ++i) pool.emplace_back(worker);
     worker();
+    for (std::jthread& helper : pool) helper.join();
+    throwIfStopped(stop);
 }
 
 // ---- [SECTION] Packet layouts: which point each lane of packet k traces ---------------------
@@ -118,11 +122,12 @@ struct TileLayout {
     }
 };
 
-/// Calls fn(packetLanes) for every packet of `layout`, in parallel.
-template <class Layout, class Fn> void forEachPacket(const Layout& layout, int threads, const Fn& fn) {
+/// Calls fn(packetLanes) for every packet of `layout`, in parallel; throws Cancelled as parallelFor.
+template <class Layout, class Fn>
+void forEachPacket(const Layout& layout, int threads, const std::stop_token& stop, const Fn& fn) {
     const size_t packets = layout.packets();
     const size_t tasks = (packets + kPacketsPerTask - 1) / kPacketsPerTask;
-    parallelFor(tasks, resolveThreads(threads), [&](size_t task) {
+    parallelFor(tasks, resolveThreads(threads), stop, [&](size_t task) {
         const size_t end = std::min(packets, (task + 1) * kPacketsPerTask);
         for (size_t k = task * kPacketsPerTask; k < end; ++k) fn(layout.lanes(k));
     });
@@ -317,10 +322,11 @@ namespace {
 /// One rtcOccluded16 per packet: 2.6× faster than rtcOccluded1 ray by ray on AVX-512.
 std::vector<uint8_t> traceOccluded(const GroundTruth& truth, RTCScene scene, const RunLayout& layout,
                                    const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                                   const glm::vec3& l, int threads, const std::vector<float>* maxDistance = nullptr) {
+                                   const glm::vec3& l, int threads, const std::stop_token& stop,
+                                   const std::vector<float>* maxDistance = nullptr) {
     std::vector<uint8_t> result(points.size(), 0);
     const glm::vec3 toLight = -glm::normalize(l);
-    forEachPacket(layout, threads, [&](const Lanes& lanes) {
+    forEachPacket(layout, threads, stop, [&](const Lanes& lanes) {
         RTCRay16 ray;
         alignas(64) std::array<int, kLanes> valid{};
         bool any = false;
@@ -356,31 +362,32 @@ std::vector<uint8_t> traceOccluded(const GroundTruth& truth, RTCScene scene, con
 } // namespace
 
 std::vector<uint8_t> GroundTruth::occluded(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                                           const glm::vec3& l, int threads) const {
+                                           const glm::vec3& l, int threads, std::stop_token stop) const {
     checkInputs(points, normals, l);
     if (!impl_) throw std::logic_error("GroundTruth::occluded on a moved-from object");
-    auto result = traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads);
+    auto result = traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads, stop);
     impl_->throwIfError("tracing shadow rays");
     return result;
 }
 
 std::vector<uint8_t> GroundTruth::occludedWithin(const std::vector<glm::vec3>& points,
                                                  const std::vector<glm::vec3>& normals, const glm::vec3& l,
-                                                 const std::vector<float>& maxDistance, int threads) const {
+                                                 const std::vector<float>& maxDistance, int threads,
+                                                 std::stop_token stop) const {
     checkInputs(points, normals, l);
     if (maxDistance.size() != points.size())
         throw std::invalid_argument("GroundTruth::occludedWithin: " + std::to_string(points.size()) + " points but " +
                                     std::to_string(maxDistance.size()) + " distances");
     if (!impl_) throw std::logic_error("GroundTruth::occludedWithin on a moved-from object");
     auto result =
-        traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads, &maxDistance);
+        traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads, stop, &maxDistance);
     impl_->throwIfError("tracing contact rays");
     return result;
 }
 
 std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const std::vector<glm::vec3>& points,
                                                    const std::vector<glm::vec3>& fallback, int threads,
-                                                   std::vector<int>* meshes) const {
+                                                   std::vector<int>* meshes, std::stop_token stop) const {
     if (points.size() != fallback.size())
         throw std::invalid_argument("GroundTruth::surfaceNormals: " + std::to_string(points.size()) + " points but " +
                                     std::to_string(fallback.size()) + " normals");
@@ -388,7 +395,7 @@ std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const s
     if (!impl_) throw std::logic_error("GroundTruth::surfaceNormals on a moved-from object");
     std::vector<glm::vec3> out = fallback;
     if (meshes) meshes->assign(points.size(), -1);
-    forEachPacket(RunLayout{points.size()}, threads, [&](const Lanes& lanes) {
+    forEachPacket(RunLayout{points.size()}, threads, stop, [&](const Lanes& lanes) {
         RTCRayHit16 rh;
         alignas(64) std::array<int, kLanes> valid{};
         std::array<float, kLanes> distance{}, reach{};
@@ -440,9 +447,9 @@ struct PrimaryRay {
 /// writes the nearest hit point and its unit geometric normal, facing the ray's origin, per cell.
 /// Misses keep the values the caller filled in (NaN point, zero normal).
 template <class RayAt>
-void tracePrimary(RTCScene scene, size_t width, size_t rows, int threads, const RayAt& rayAt,
-                  std::vector<glm::vec3>& points, std::vector<glm::vec3>& normals) {
-    forEachPacket(TileLayout{width * rows, width}, threads, [&](const Lanes& lanes) {
+void tracePrimary(RTCScene scene, size_t width, size_t rows, int threads, const std::stop_token& stop,
+                  const RayAt& rayAt, std::vector<glm::vec3>& points, std::vector<glm::vec3>& normals) {
+    forEachPacket(TileLayout{width * rows, width}, threads, stop, [&](const Lanes& lanes) {
         RTCRayHit16 rh;
         alignas(64) std::array<int, kLanes> valid{};
         for (int i = 0; i < kLanes; ++i) {
@@ -491,7 +498,7 @@ PrimaryHits GroundTruth::primaryHits(const scene::Camera& camera, int width, int
     const float tanHalf = std::tan(glm::radians(camera.fovYDeg) * 0.5f);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     tracePrimary(
-        impl_->scene, size_t(width), size_t(height), threads,
+        impl_->scene, size_t(width), size_t(height), threads, {},
         [&](size_t px, size_t py) {
             const float x = (static_cast<float>(px) + 0.5f) / static_cast<float>(width) * 2.f - 1.f;
             const float y = 1.f - (static_cast<float>(py) + 0.5f) / static_cast<float>(height) * 2.f;
@@ -504,7 +511,7 @@ PrimaryHits GroundTruth::primaryHits(const scene::Camera& camera, int width, int
 }
 
 std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, int height, const glm::vec3& l,
-                                         int samplesPerAxis, int threads) const {
+                                         int samplesPerAxis, int threads, std::stop_token stop) const {
     if (width < 1 || height < 1) throw std::invalid_argument("GroundTruth::coverage: image size must be positive");
     if (samplesPerAxis < 1 || samplesPerAxis > kMaxSamplesPerAxis)
         throw std::invalid_argument("GroundTruth::coverage: samples per axis " + std::to_string(samplesPerAxis) +
@@ -530,7 +537,7 @@ std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, i
         // Sample (X, Y) of the N-times finer grid sits at the centre of its cell: N × N stratified
         // samples per pixel. Rays run from the near to the far plane (t ∈ [0, 1]), as GL clips.
         tracePrimary(
-            impl_->scene, W, rows, threads,
+            impl_->scene, W, rows, threads, stop,
             [&](size_t X, size_t Y) {
                 const double x = (double(X) + 0.5) / double(W) * 2.0 - 1.0;
                 const double y = 1.0 - (double(y0 * N + Y) + 0.5) / double(H) * 2.0;
@@ -543,7 +550,7 @@ std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, i
         for (auto& n : facing)
             if (!(glm::dot(n, toLight) > 0.f)) n = glm::vec3(0.f);
         const std::vector<uint8_t> occ =
-            traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, facing, l, threads);
+            traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, facing, l, threads, stop);
         for (size_t k = 0; k < points.size(); ++k) {
             if (!finite(points[k])) continue;
             const size_t pixel = (y0 + (k / W) / N) * size_t(width) + (k % W) / N;

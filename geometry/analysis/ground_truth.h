@@ -2,11 +2,13 @@
 // Ground truth for shadow inspection (docs/design.md §4): for each visible receiver point, does a ray
 // from it towards the directional light hit any triangle of the scene? Traced with Embree 3 on
 // the CPU, so it is independent of the GL renderer whose shadows it judges. No GL, no ImGui.
+#include "geometry/analysis/cancelled.h"
 #include "geometry/scene/scene.h"
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -49,9 +51,10 @@ public:
     ///
     /// Rays go in packets of 16 consecutive points, so keep neighbours together: image order
     /// (row-major) is good, a shuffled order is slower but gives the same result.
+    /// Once `stop` is requested the workers take no new packets and the call throws Cancelled.
     [[nodiscard]] std::vector<uint8_t> occluded(const std::vector<glm::vec3>& points,
                                                 const std::vector<glm::vec3>& normals, const glm::vec3& l,
-                                                int threads = 0) const;
+                                                int threads = 0, std::stop_token stop = {}) const;
 
     /// The unit geometric normal of the surface under each point, as seen from `eye`: a ray from the
     /// eye towards the point; where its nearest hit lies within max(4·epsilon(p), 1e-4·distance) of
@@ -60,17 +63,20 @@ public:
     /// give occluded() the geometric normals it documents when a renderer supplies shading ones.
     /// Throws std::invalid_argument if points.size() != fallback.size() or eye is not finite.
     /// `meshes`, when given, receives the scene index of the mesh found under each point (−1 where
-    /// the fallback was used).
+    /// the fallback was used). Throws Cancelled once `stop` is requested (`meshes` then partly filled).
     [[nodiscard]] std::vector<glm::vec3> surfaceNormals(const glm::vec3& eye, const std::vector<glm::vec3>& points,
                                                         const std::vector<glm::vec3>& fallback, int threads = 0,
-                                                        std::vector<int>* meshes = nullptr) const;
+                                                        std::vector<int>* meshes = nullptr,
+                                                        std::stop_token stop = {}) const;
 
     /// occluded(), with each ray ending maxDistance[i] from its point: 1 where something lies
     /// between the surface and that distance towards the light (a contact). A distance not above
-    /// epsilon(p), or NaN, gives 0. Throws std::invalid_argument as occluded(), or when the sizes differ.
+    /// epsilon(p), or NaN, gives 0. Throws std::invalid_argument as occluded(), or when the sizes differ;
+    /// Cancelled as occluded().
     [[nodiscard]] std::vector<uint8_t> occludedWithin(const std::vector<glm::vec3>& points,
                                                       const std::vector<glm::vec3>& normals, const glm::vec3& l,
-                                                      const std::vector<float>& maxDistance, int threads = 0) const;
+                                                      const std::vector<float>& maxDistance, int threads = 0,
+                                                      std::stop_token stop = {}) const;
 
     /// Casts one ray per pixel centre of a width × height image from `camera` (aspect
     /// width/height, as Camera::projection) and returns the nearest hits between the near and far
@@ -86,9 +92,10 @@ public:
     /// (occluded()) escapes. Samples that see nothing are left out; a pixel none of whose samples
     /// hits anything gets NaN. Memory stays ~1M samples whatever the size (traced in row bands).
     /// Throws std::invalid_argument for a non-positive size, samplesPerAxis outside
-    /// 1..kMaxSamplesPerAxis or a zero or non-finite l.
+    /// 1..kMaxSamplesPerAxis or a zero or non-finite l. Throws Cancelled once `stop` is requested
+    /// (within a few hundred rays per thread).
     [[nodiscard]] std::vector<float> coverage(const glm::mat4& viewProj, int width, int height, const glm::vec3& l,
-                                              int samplesPerAxis, int threads = 0) const;
+                                              int samplesPerAxis, int threads = 0, std::stop_token stop = {}) const;
 
     /// The self-intersection offset used for a receiver at p, in scene units:
     /// max(1e-6, 1e-5 · max(‖p‖∞, 0.01 · scene diagonal)). Why relative to ‖p‖∞ rather than to

@@ -11,8 +11,15 @@
 
 namespace geometry::analysis {
 
+namespace {
+
+/// Per-pixel loops check the stop token once per this many pixels: well under a millisecond apart.
+constexpr size_t kPixelsPerStopCheck = 4096;
+
+} // namespace
+
 Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, const GroundTruth* truth,
-                          int truthSamples) {
+                          int truthSamples, std::stop_token stop) {
     Inspection in;
     in.shadow = std::move(frame.shadow);
     in.aux = std::move(frame.aux);
@@ -22,6 +29,7 @@ Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, c
     in.normals.resize(n);
     in.receiver.resize(n);
     for (size_t i = 0; i < n; ++i) {
+        if (i % kPixelsPerStopCheck == 0) throwIfStopped(stop);
         in.positions[i] = glm::vec3(frame.positions[i]);
         in.m[i] = frame.positions[i].w;
         in.normals[i] = glm::vec3(frame.normals[i]);
@@ -29,45 +37,51 @@ Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, c
     }
     in.width = frame.width;
     in.height = n && in.width ? int(n / size_t(in.width)) : 0;
+    throwIfStopped(stop);
     in.aliasing = aliasingStats(in.m, in.receiver);
     in.resolutions = std::move(frame.resolutions);
-    for (int s = 0; s < int(in.resolutions.size()); ++s)
+    for (int s = 0; s < int(in.resolutions.size()); ++s) {
+        throwIfStopped(stop);
         in.utilization.push_back(texelUtilization(in.aux, in.receiver, s, in.resolutions[s]));
-    if (truth) addTruth(in, plan, *truth, truthSamples);
+    }
+    if (truth) addTruth(in, plan, *truth, truthSamples, stop);
     return in;
 }
 
 std::vector<uint8_t> truthOcclusion(const Inspection& in, const std::vector<glm::vec3>& geometricNormals,
-                                    const glm::vec3& l, const GroundTruth& truth) {
-    std::vector<uint8_t> occluded = truth.occluded(in.positions, geometricNormals, l);
+                                    const glm::vec3& l, const GroundTruth& truth, std::stop_token stop) {
+    std::vector<uint8_t> occluded = truth.occluded(in.positions, geometricNormals, l, 0, stop);
     for (size_t i = 0; i < occluded.size(); ++i)
         if (!in.receiver[i]) occluded[i] = 0;
     return occluded;
 }
 
 std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
-                                    const GroundTruth& truth) {
-    return truthOcclusion(in, truth.surfaceNormals(eye, in.positions, in.normals), l, truth);
+                                    const GroundTruth& truth, std::stop_token stop) {
+    return truthOcclusion(in, truth.surfaceNormals(eye, in.positions, in.normals, 0, nullptr, stop), l, truth, stop);
 }
 
-void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis) {
+void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis,
+              std::stop_token stop) {
     if (samplesPerAxis < 1 || samplesPerAxis > GroundTruth::kMaxSamplesPerAxis)
         throw std::invalid_argument("--truth-samples: " + std::to_string(samplesPerAxis) + " is outside 1.." +
                                     std::to_string(GroundTruth::kMaxSamplesPerAxis));
+    throwIfStopped(stop);
     const glm::vec3& l = plan.l;
     in.truthSamples = samplesPerAxis;
-    in.geometricNormals = truth.surfaceNormals(plan.eye, in.positions, in.normals, 0, &in.mesh);
-    in.occluded = truthOcclusion(in, in.geometricNormals, l, truth);
+    in.geometricNormals = truth.surfaceNormals(plan.eye, in.positions, in.normals, 0, &in.mesh, stop);
+    in.occluded = truthOcclusion(in, in.geometricNormals, l, truth, stop);
     const size_t n = in.positions.size();
     const glm::vec3 toLight = -glm::normalize(l);
     in.coverage.assign(n, 1.f);
     if (samplesPerAxis > 1)
-        in.coverage = truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, l, samplesPerAxis);
+        in.coverage = truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, l, samplesPerAxis, 0, stop);
     in.ambiguity.assign(n, uint8_t(Ambiguity::None));
     std::vector<float> texelsPerPixel(n, std::numeric_limits<float>::quiet_NaN());
     std::vector<float> contact(n, std::numeric_limits<float>::quiet_NaN());
     std::vector<int> split(n, -1);
     for (size_t i = 0; i < n; ++i) {
+        if (i % kPixelsPerStopCheck == 0) throwIfStopped(stop);
         const float centre = (*in.occluded)[i] ? 0.f : 1.f;
         if (samplesPerAxis == 1 || !std::isfinite(in.coverage[i])) in.coverage[i] = centre; // no sample saw it
         if (in.m[i] > 0.f && in.m[i] < kSingularM) texelsPerPixel[i] = 1.f / in.m[i];
@@ -80,13 +94,16 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
         else if ((*in.occluded)[i] && split[i] < int(in.resolutions.size()))
             contact[i] = shadow::contactDistance(plan, split[i], in.positions[i], in.resolutions[size_t(split[i])]);
     }
-    const std::vector<uint8_t> touching = truth.occludedWithin(in.positions, in.geometricNormals, l, contact);
+    const std::vector<uint8_t> touching = truth.occludedWithin(in.positions, in.geometricNormals, l, contact, 0, stop);
     for (size_t i = 0; i < n; ++i)
         if (touching[i]) in.ambiguity[i] = uint8_t(Ambiguity::Contact);
     in.truth = truthStats(in.shadow, *in.occluded, in.receiver);
     const TruthClassInput input{in.width, in.shadow, in.coverage, in.receiver, in.ambiguity, texelsPerPixel};
+    throwIfStopped(stop);
     in.truthClasses = truthClasses(input, &in.classes);
+    throwIfStopped(stop);
     in.splitTruthClasses = truthClassesByGroup(input, split, int(in.utilization.size()));
+    throwIfStopped(stop);
     in.meshNames = truth.meshNames();
     in.meshTruthClasses = truthClassesByGroup(input, in.mesh, int(in.meshNames.size()));
 }

@@ -2,6 +2,7 @@
 // Everything the inspection views and metrics need from one rendered frame: per-pixel shadow
 // factor, map coordinates, aliasing error, receivers, optional ray-traced truth, and the
 // statistics over them. Built from the renderer's read-backs (renderer/inspection.h).
+#include "geometry/analysis/cancelled.h"
 #include "geometry/analysis/metrics.h"
 #include "geometry/analysis/truth_classes.h"
 #include "geometry/shadow/shadow_plan.h"
@@ -10,6 +11,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -58,8 +60,9 @@ struct FrameReadback {
 
 /// Splits the read-back of a frame drawn with `plan` into per-pixel fields and computes the
 /// statistics; `truth` adds the ground truth (addTruth) with truthSamples² samples per pixel.
+/// Throws Cancelled once `stop` is requested.
 [[nodiscard]] Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, const GroundTruth* truth,
-                                        int truthSamples = 1);
+                                        int truthSamples = 1, std::stop_token stop = {});
 
 /// Adds ground truth to `in` (a frame drawn with `plan`; docs/design.md §4 "Truth classes"):
 /// - occlusion at each pixel's centre, traced with geometric normals (truthOcclusion), for TruthStats;
@@ -69,18 +72,22 @@ struct FrameReadback {
 ///   flip (shading and geometric normal on different sides of the light), or a contact (an occluder
 ///   within contactDistance() of the receiver along the light);
 /// - the TruthClasses overall, per split and per scene mesh.
-/// Throws std::invalid_argument for samplesPerAxis outside 1..GroundTruth::kMaxSamplesPerAxis.
-void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis = 1);
+/// Throws std::invalid_argument for samplesPerAxis outside 1..GroundTruth::kMaxSamplesPerAxis, and
+/// Cancelled once `stop` is requested, leaving `in` partly updated (discard it).
+void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis = 1,
+              std::stop_token stop = {});
 
 /// Ground truth for the receiver pixels of `in` (1 = shadowed; 0 for non-receivers): each traced
 /// with the geometric normal of the surface under it (GroundTruth::surfaceNormals), as
 /// docs/design.md §4 "Ground truth" says, not with the renderer's interpolated shading normal,
 /// which on smooth-shaded facets would make the verdict at the terminator stripe with the facets.
+/// Throws Cancelled once `stop` is requested.
 [[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
-                                                  const GroundTruth& truth);
+                                                  const GroundTruth& truth, std::stop_token stop = {});
 /// The same with the geometric normals already found (GroundTruth::surfaceNormals).
 [[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const std::vector<glm::vec3>& geometricNormals,
-                                                  const glm::vec3& l, const GroundTruth& truth);
+                                                  const glm::vec3& l, const GroundTruth& truth,
+                                                  std::stop_token stop = {});
 
 /// One per-pixel quantity for offline analysis (`render --views pixels`): written as
 /// pixels_<name>.pfm, one float per pixel, top row first in memory (PFM stores bottom-up).
