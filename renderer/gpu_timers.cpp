@@ -45,6 +45,7 @@ void GpuTimers::collect(Slot& s, bool wait) noexcept {
         GLuint64 ns = 0;
         glGetQueryObjectui64v(s.queries[i], GL_QUERY_RESULT, &ns);
         t.ms[i] = static_cast<double>(ns) * 1e-6;
+        t.drawn[i] = true;
         s.used[i] = false;
     }
     t.valid = true;

@@ -12,7 +12,8 @@ namespace renderer {
 enum class Pass { Prepass, Shadow, Eye, LightView, Count };
 
 struct PassTimes {
-    std::array<double, static_cast<std::size_t>(Pass::Count)> ms{}; // GPU milliseconds per pass
+    std::array<double, static_cast<std::size_t>(Pass::Count)> ms{};  // GPU milliseconds per pass
+    std::array<bool, static_cast<std::size_t>(Pass::Count)> drawn{}; // the frame ran that pass
     bool valid = false;
     [[nodiscard]] double of(Pass p) const noexcept { return ms[static_cast<std::size_t>(p)]; }
     [[nodiscard]] double total() const noexcept; // every pass, the inspection views included

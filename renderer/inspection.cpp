@@ -4,8 +4,7 @@
 
 namespace renderer {
 
-geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow::ShadowPlan& plan,
-                                       const geometry::analysis::GroundTruth* truth, int truthSamples) {
+geometry::analysis::FrameReadback readBack(const Renderer& r, const geometry::shadow::ShadowPlan& plan) {
     geometry::analysis::FrameReadback frame;
     frame.width = int(r.stats().eyeWidth);
     frame.shadow = r.readShadowMask();
@@ -14,7 +13,12 @@ geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow
     frame.normals = r.readNormals();
     for (const auto& split : plan.splits)
         frame.resolutions.push_back(std::min(split.resolution, r.stats().shadowResolution));
-    return geometry::analysis::makeInspection(std::move(frame), plan, truth, truthSamples);
+    return frame;
+}
+
+geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow::ShadowPlan& plan,
+                                       const geometry::analysis::GroundTruth* truth, int truthSamples) {
+    return geometry::analysis::makeInspection(readBack(r, plan), plan, truth, truthSamples);
 }
 
 } // namespace renderer

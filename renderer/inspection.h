@@ -5,6 +5,10 @@
 
 namespace renderer {
 
+/// The last frame's per-pixel outputs (needs the GL context; the analysis does not, so the
+/// dashboard runs makeInspection on a worker thread).
+[[nodiscard]] geometry::analysis::FrameReadback readBack(const Renderer& r, const geometry::shadow::ShadowPlan& plan);
+
 /// Reads back the last frame and computes the statistics; `truth` adds the ground-truth pass with
 /// truthSamples² samples per pixel (addTruth).
 [[nodiscard]] geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow::ShadowPlan& plan,

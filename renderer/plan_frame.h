@@ -8,9 +8,10 @@ namespace renderer {
 
 /// The geometric plan; with focus.mode = samples, the plan fitted to this frame's samples, which
 /// `renderer` reduces from an eye depth pre-pass that its next render() of this camera reuses.
+/// `planMicroseconds`, when given, receives the CPU time of the planner alone (not the pre-pass).
 [[nodiscard]] geometry::shadow::ShadowPlan
 planFrame(Renderer& renderer, const geometry::shadow::ShadowSettings& settings, const geometry::scene::Aabb& S,
           const geometry::scene::Camera& camera, const geometry::scene::DirectionalLight& light,
-          const geometry::shadow::Viewport& viewport);
+          const geometry::shadow::Viewport& viewport, double* planMicroseconds = nullptr);
 
 } // namespace renderer

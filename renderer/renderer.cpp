@@ -74,9 +74,23 @@ Renderer::~Renderer() {
     glDeleteSamplers(3, samplers);
 }
 
-void Renderer::setScene(const geometry::scene::Scene& scene) { scene_ = std::make_unique<GpuScene>(scene); }
+void Renderer::setScene(const geometry::scene::Scene& scene) {
+    scene_ = std::make_unique<GpuScene>(scene);
+    drawnMaps_.reset();
+}
 
-void Renderer::setCasterLod(const geometry::lod::SceneLod& lod) { scene_->setCasterLod(lod); }
+void Renderer::setCasterLod(const geometry::lod::SceneLod& lod) {
+    scene_->setCasterLod(lod);
+    drawnMaps_.reset(); // the same plan now draws other triangles
+}
+
+void Renderer::selectEyeTargets(int width, int height) noexcept {
+    const auto fits = [&](int slot) {
+        return eyeTargets_[slot].buffers.width() == width && eyeTargets_[slot].buffers.height() == height;
+    };
+    if (fits(eyeSlot_) || width < 1 || height < 1) return; // (a degenerate size is refused by ensure())
+    eyeSlot_ ^= 1; // the other size, or the least recently used slot for a new one
+}
 
 void Renderer::warnOnce(const std::string& message) {
     if (std::find(stats_.warnings.begin(), stats_.warnings.end(), message) == stats_.warnings.end())
@@ -113,17 +127,28 @@ void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::
     ViewOptions views = options;
     if (views.lightViewSize <= 0) views.lightViewSize = 1024;
     if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
-    stats_.shadowTriangles = stats_.eyeTriangles = 0;
-    stats_.splitTriangles.assign(plan.splits.size(), 0);
-    stats_.splitTrianglesFull.assign(plan.splits.size(), 0);
+    stats_.eyeTriangles = 0;
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
     if (!prepassReady_ || prepassViewProj_ != viewProj || prepassSize_ != glm::ivec2(viewport.width, viewport.height)) {
         timers_.begin(Pass::Prepass);
         depthPrePass(plan, viewport);
     }
     prepassReady_ = false;
-    timers_.begin(Pass::Shadow);
-    shadowPass(plan);
+    ShadowMapKey maps = shadowMapKey(plan);
+    stats_.shadowMapsReused = views.reuseShadowMaps && drawnMaps_ && *drawnMaps_ == maps;
+    if (stats_.shadowMapsReused) {
+        uploadShadowBlock(plan); // the eye-side values changed; the maps and their triangle counts stay
+    } else {
+        stats_.shadowTriangles = 0;
+        stats_.splitTriangles.assign(plan.splits.size(), 0);
+        stats_.splitTrianglesFull.assign(plan.splits.size(), 0);
+        drawnMaps_.reset(); // until the new maps are complete
+        timers_.begin(Pass::Shadow);
+        shadowPass(plan);
+        drawnMaps_ = std::move(maps);
+        ++stats_.shadowPasses;
+    }
+    ++stats_.eyePasses;
     timers_.begin(Pass::Eye);
     eyePass(plan);
     eyeBlurAndCompose(plan);
@@ -142,7 +167,7 @@ geometry::shadow::SampleBounds Renderer::eyeSamples(const geometry::shadow::Shad
     depthPrePass(plan, viewport);
     if (!sampleReduction_) sampleReduction_ = std::make_unique<SampleReduction>();
     const SampleView view{plan.eyeView, plan.eyeProj, plan.cameraNear, plan.cameraFar, plan.l};
-    auto bounds = sampleReduction_->reduce(eyeBuffers_.depthTexture(), viewport.width, viewport.height, view);
+    auto bounds = sampleReduction_->reduce(eyeBuffers().depthTexture(), viewport.width, viewport.height, view);
     prepassReady_ = true;
     prepassViewProj_ = plan.eyeProj * plan.eyeView;
     prepassSize_ = {viewport.width, viewport.height};
@@ -323,10 +348,11 @@ void Renderer::depthPrePass(const geometry::shadow::ShadowPlan& plan, const geom
                                  " MiB of eye buffers; the limit is " +
                                  std::to_string(int(limits_.viewMemoryBytes / (1 << 20))) + " MiB and " +
                                  std::to_string(maxTextureSize_) + " pixels a side)");
-    eyeBuffers_.ensure(viewport.width, viewport.height);
+    selectEyeTargets(viewport.width, viewport.height);
+    eyeBuffers().ensure(viewport.width, viewport.height);
     stats_.eyeWidth = viewport.width;
     stats_.eyeHeight = viewport.height;
-    eyeBuffers_.bind();
+    eyeBuffers().bind();
     glDepthMask(GL_TRUE);
     glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
@@ -347,7 +373,7 @@ void Renderer::depthPrePass(const geometry::shadow::ShadowPlan& plan, const geom
 }
 
 void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
-    eyeBuffers_.bind();
+    eyeBuffers().bind();
     const float zero[4] = {0.f, 0.f, 0.f, 0.f}, lit[4] = {1.f, 1.f, 1.f, 1.f}, sky[4] = {0.f, 0.f, -1.f, 0.f};
     glClearBufferfv(GL_COLOR, EyeBuffers::Base, zero);
     glClearBufferfv(GL_COLOR, EyeBuffers::Direct, zero);
@@ -383,29 +409,29 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
 
 void Renderer::eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan) {
     glDisable(GL_DEPTH_TEST);
-    GLuint mask = eyeBuffers_.texture(EyeBuffers::Mask);
-    const int w = eyeBuffers_.width(), h = eyeBuffers_.height();
+    GLuint mask = eyeBuffers().texture(EyeBuffers::Mask);
+    const int w = eyeBuffers().width(), h = eyeBuffers().height();
     if (plan.filter.eyeBlurIterations > 0) {
         eyeBlurProgram_.use();
         eyeBlurProgram_.set("uMask", 0);
         eyeBlurProgram_.set("uBase", 1);
-        bindTexture(1, GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Base), nearestSampler_);
+        bindTexture(1, GL_TEXTURE_2D, eyeBuffers().texture(EyeBuffers::Base), nearestSampler_);
         int target = 0;
         for (int it = 0; it < plan.filter.eyeBlurIterations; ++it)
             for (const glm::vec2 step : {glm::vec2(1.f / w, 0.f), glm::vec2(0.f, 1.f / h)}) {
-                eyeBuffers_.bindBlur(target);
+                eyeBuffers().bindBlur(target);
                 bindTexture(0, GL_TEXTURE_2D, mask, linearSampler_);
                 eyeBlurProgram_.set("uStep", step);
                 fullscreen();
-                mask = eyeBuffers_.blurTexture(target);
+                mask = eyeBuffers().blurTexture(target);
                 target ^= 1;
             }
     }
-    eye_.ensure(w, h);
-    eye_.bind();
+    eyeImage().ensure(w, h);
+    eyeImage().bind();
     composeProgram_.use();
-    bindTexture(0, GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Base), nearestSampler_);
-    bindTexture(1, GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Direct), nearestSampler_);
+    bindTexture(0, GL_TEXTURE_2D, eyeBuffers().texture(EyeBuffers::Base), nearestSampler_);
+    bindTexture(1, GL_TEXTURE_2D, eyeBuffers().texture(EyeBuffers::Direct), nearestSampler_);
     bindTexture(2, GL_TEXTURE_2D, mask, nearestSampler_);
     composeProgram_.set("uBase", 0);
     composeProgram_.set("uDirect", 1);
@@ -458,9 +484,9 @@ void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const 
 // ---- [SECTION] Reading back -----------------------------------------------------------------
 
 std::vector<float> Renderer::readShadowMask() const {
-    const int w = eyeBuffers_.width(), h = eyeBuffers_.height();
+    const int w = eyeBuffers().width(), h = eyeBuffers().height();
     std::vector<float> raw(size_t(w) * h), out(raw.size());
-    glBindTexture(GL_TEXTURE_2D, eyeBuffers_.texture(EyeBuffers::Mask));
+    glBindTexture(GL_TEXTURE_2D, eyeBuffers().texture(EyeBuffers::Mask));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, raw.data());
     for (int y = 0; y < h; ++y)
@@ -469,9 +495,9 @@ std::vector<float> Renderer::readShadowMask() const {
 }
 
 std::vector<glm::vec4> Renderer::readFloat4(EyeBuffers::Attachment a) const {
-    const int w = eyeBuffers_.width(), h = eyeBuffers_.height();
+    const int w = eyeBuffers().width(), h = eyeBuffers().height();
     std::vector<glm::vec4> raw(size_t(w) * h), out(raw.size());
-    glBindTexture(GL_TEXTURE_2D, eyeBuffers_.texture(a));
+    glBindTexture(GL_TEXTURE_2D, eyeBuffers().texture(a));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, raw.data());
     for (int y = 0; y < h; ++y)

@@ -11,9 +11,12 @@
 #include "render_targets.h"
 #include "sample_reduction.h"
 #include "shadow_block.h"
+#include "shadow_map_key.h"
 
+#include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +32,9 @@ struct FrameStats {
     int eyeWidth = 0, eyeHeight = 0;
     PassTimes gpu;                     // from an earlier frame (see GpuTimers)
     std::vector<std::string> warnings; // e.g. resolution clamped to the GL limit
+    bool shadowMapsReused = false;     // the last render() kept the maps of an earlier one
+    uint64_t shadowPasses = 0;         // render() calls that drew the maps, since construction
+    uint64_t eyePasses = 0;            // render() calls (each draws the eye view), since construction
 };
 
 /// What the light views show.
@@ -38,6 +44,9 @@ struct ViewOptions {
     bool overlays = true;       // frusta, B_i, P, S drawn over the light views
     bool unwarped = true;       // also render the unwarped light view
     glm::vec2 depthRange{-1.f}; // light view's black and white points; x < 0: auto-fit to B_i
+    /// Keep the maps drawn by the previous render() when the plan's shadowMapKey() is unchanged
+    /// (the dashboard); off for measurements, which time every pass of every frame.
+    bool reuseShadowMaps = false;
 };
 
 struct RendererLimits {
@@ -73,10 +82,10 @@ public:
         render(plan, viewport, v);
     }
 
-    [[nodiscard]] GLuint eyeTexture() const noexcept { return eye_.texture(); }
+    [[nodiscard]] GLuint eyeTexture() const noexcept { return eyeImage().texture(); }
     [[nodiscard]] GLuint lightTexture() const noexcept { return light_.texture(); }
     [[nodiscard]] geometry::analysis::Image readEye() const {
-        return readTexture(eye_.texture(), eye_.width(), eye_.height());
+        return readTexture(eyeImage().texture(), eyeImage().width(), eyeImage().height());
     }
     [[nodiscard]] geometry::analysis::Image readLight() const {
         return readTexture(light_.texture(), light_.width(), light_.height());
@@ -138,12 +147,25 @@ private:
     RendererLimits limits_;
     LayeredTarget firstDepth_, secondDepth_, combinedDepth_, moments_, momentsTemp_;
     GLuint sampledDepth_ = 0; // the depth array the eye pass reads this frame
-    EyeBuffers eyeBuffers_;
+    /// The eye pass's buffers and image per view size: the dashboard alternates a coarse size while
+    /// the user drags and the full size when input pauses, and each size keeps its textures.
+    struct EyeTargets {
+        EyeBuffers buffers;
+        ColorTarget image;
+    };
+    std::array<EyeTargets, 2> eyeTargets_;
+    int eyeSlot_ = 0;
+    void selectEyeTargets(int width, int height) noexcept;
+    [[nodiscard]] EyeBuffers& eyeBuffers() noexcept { return eyeTargets_[eyeSlot_].buffers; }
+    [[nodiscard]] const EyeBuffers& eyeBuffers() const noexcept { return eyeTargets_[eyeSlot_].buffers; }
+    [[nodiscard]] ColorTarget& eyeImage() noexcept { return eyeTargets_[eyeSlot_].image; }
+    [[nodiscard]] const ColorTarget& eyeImage() const noexcept { return eyeTargets_[eyeSlot_].image; }
+    std::optional<ShadowMapKey> drawnMaps_;            // what the maps hold now; empty: nothing reusable
     std::unique_ptr<SampleReduction> sampleReduction_; // made on first use
     bool prepassReady_ = false;                        // eyeSamples drew the pre-pass for this camera:
     glm::mat4 prepassViewProj_{1.f};                   // …
     glm::ivec2 prepassSize_{0};                        // … at this size
-    ColorTarget eye_, light_, lightUnwarped_;
+    ColorTarget light_, lightUnwarped_;
     GpuTimers timers_;
     FrameStats stats_;
 };

@@ -40,6 +40,7 @@ struct Camera {
     float fovYDeg = 60.f; // full vertical field of view (φ = fovY/2)
     float near = 0.5f;    // n
     float far = 1000.f;   // f
+    [[nodiscard]] bool operator==(const Camera&) const = default;
 
     [[nodiscard]] glm::vec3 viewDir() const noexcept; // v, unit
     [[nodiscard]] glm::mat4 view() const noexcept;

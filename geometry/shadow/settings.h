@@ -25,6 +25,7 @@ struct BiasSettings {
     float normalOffset = 1.f;  // bias.normal_offset: × world-space texel size
     bool linearZ = false;      // bias.linear_z: store linear light depth (Scherzer §4.2)
     bool tangentPlane = false; // bias.tangent_plane: PCF reference depth on the receiver's plane
+    [[nodiscard]] bool operator==(const BiasSettings&) const = default;
 };
 
 /// Filters (Barroso §2.2; Scherzer §4.3; docs/design.md §3.6).
@@ -38,6 +39,7 @@ struct FilterSettings {
     float bleedReduction = 0.2f;  // filter.bleed_reduction: VSM light-bleeding cut
     int eyeBlurIterations = 0;    // filter.eye_blur.iterations: Scherzer's eye-space blur, 0 = off
     float eyeBlurFalloff = 0.05f; // filter.eye_blur.falloff: how fast the blur shrinks with view depth
+    [[nodiscard]] bool operator==(const FilterSettings&) const = default;
 };
 
 /// stabilize.mode: off; snap (unwarped maps fitted to their split's bounding sphere and moved in
@@ -55,6 +57,7 @@ enum class CasterLod { Off, Auto };
 struct CasterSettings {
     CasterLod lod = CasterLod::Off;
     float lodTexels = 1.f; // casters.lod_texels: the error a level may have, in texels of the map
+    [[nodiscard]] bool operator==(const CasterSettings&) const = default;
 };
 
 struct ShadowSettings {
@@ -67,6 +70,7 @@ struct ShadowSettings {
     WarpDirection direction = WarpDirection::Standard;
     SplitParams splits;
     CasterSettings casters;
+    [[nodiscard]] bool operator==(const ShadowSettings&) const = default;
 };
 
 struct SettingInfo {

@@ -14,6 +14,7 @@ struct Viewport {
     int width = 1280;
     int height = 720;
     [[nodiscard]] float aspect() const noexcept { return height > 0 ? float(width) / float(height) : 1.f; }
+    [[nodiscard]] bool operator==(const Viewport&) const = default;
 };
 
 struct SplitPlan {

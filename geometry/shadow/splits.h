@@ -19,6 +19,7 @@ struct SplitParams {
     double alpha = 2.0;             // adaptive: f_i / n_i at γ = 0 (Barroso eq 19)
     bool resolutionFalloff = false; // res_i = res_1 / 2^(i−1)
     double blend = 0.0;             // fraction of a split's depth range before its far end blended into the next
+    [[nodiscard]] bool operator==(const SplitParams&) const = default;
 };
 
 /// The k + 1 boundaries C_0 = n < C_1 < … < C_k = f. γ in radians (adaptive only).

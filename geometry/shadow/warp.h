@@ -40,6 +40,7 @@ struct WarpParams {
     double manualNPrime = 10.0; // manual: n' at γ = 90°, scaled by 1/sinγ like LiSPSM
     double multiplier = 1.0;    // scales any method's n'
     double visibleFar = 0.0;    // lispsm option, 0 = off
+    [[nodiscard]] bool operator==(const WarpParams&) const = default;
 };
 
 /// n' for a method. Never NaN: γ is clamped to [0, π/2]; a non-finite or non-positive result
