@@ -5,6 +5,9 @@
 #include "ui/dashboard_layout.h"
 #include "ui/image_view.h"
 #include "ui/orbit_camera.h"
+#include "ui/pass_inputs.h"
+#include "ui/progressive.h"
+#include "ui/recent_median.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -247,4 +250,62 @@ TEST(DashboardControls, EverySettingBelongsToAShownGroup) {
     EXPECT_EQ(settingGroup("filter.kernel"), "Filtering");
     EXPECT_EQ(settingGroup("splits.alpha"), "Partitions");
     EXPECT_EQ(settingGroup("warp.method"), "Warp");
+}
+
+// ---- Drawing only what changed (issue 18) ---------------------------------------------------
+
+TEST(Progressive, DecidesWhatASideDraws) {
+    using ui::Draw;
+    EXPECT_EQ(ui::decideDraw(true, true, false, 0.0), Draw::Coarse);  // a drag step
+    EXPECT_EQ(ui::decideDraw(true, false, false, 0.0), Draw::Full);   // a typed value, a combo
+    EXPECT_EQ(ui::decideDraw(true, false, true, 0.0), Draw::Full);    // a discrete change ends a drag
+    EXPECT_EQ(ui::decideDraw(false, false, true, 0.05), Draw::None);  // coarse, input paused briefly
+    EXPECT_EQ(ui::decideDraw(false, true, true, 0.15), Draw::Full);   // … long enough: refine
+    EXPECT_EQ(ui::decideDraw(false, false, true, NAN), Draw::Full);   // unknown pause: refine
+    EXPECT_EQ(ui::decideDraw(false, false, false, 10.0), Draw::None); // idle
+}
+
+TEST(Progressive, CoarseDivisorFitsTheBudget) {
+    EXPECT_EQ(ui::coarseDivisor(NAN, 20.0, 100.0), 2);
+    EXPECT_EQ(ui::coarseDivisor(0.0, 20.0, 100.0), 2);
+    EXPECT_EQ(ui::coarseDivisor(200.0, 40.0, 100.0), 2); // 40 + 200/4 = 90 ≤ 100
+    EXPECT_EQ(ui::coarseDivisor(300.0, 40.0, 100.0), 4); // 40 + 300/4 = 115 > 100
+    EXPECT_EQ(ui::coarseDivisor(300.0, NAN, 100.0), 2);  // 0 + 75
+}
+
+TEST(RecentMedian, KeepsTheLastValuesAndIgnoresNonFinite) {
+    ui::RecentMedian m(3);
+    EXPECT_TRUE(std::isnan(m.median()));
+    m.add(5.0);
+    EXPECT_EQ(m.median(), 5.0);
+    m.add(1.0);
+    EXPECT_EQ(m.median(), 3.0); // mean of the middle two
+    m.add(NAN);
+    m.add(INFINITY);
+    EXPECT_EQ(m.count(), 2u);
+    m.add(100.0); // one cold outlier does not move the median far
+    EXPECT_EQ(m.median(), 5.0);
+    m.add(2.0); // the oldest (5) drops out
+    m.add(3.0); // then 1
+    EXPECT_EQ(m.count(), 3u);
+    EXPECT_EQ(m.median(), 3.0); // {100, 2, 3}
+}
+
+TEST(PassInputs, EveryInputTheViewsDependOnCounts) {
+    ui::PassInputs a;
+    ui::PassInputs b = a;
+    EXPECT_TRUE(a == b);
+    b.camera.near *= 2.f;
+    EXPECT_FALSE(a == b) << "near/far edits redraw and re-inspect";
+    b = a;
+    b.camera.up = {0.f, 0.f, 1.f};
+    EXPECT_FALSE(a == b);
+    b = a;
+    b.settings.filter.kernel = 5;
+    EXPECT_FALSE(a == b);
+    b = a;
+    b.size.width += 1;
+    EXPECT_FALSE(a == b);
+    ui::InspectionInputs i{a, 0}, j{a, 2};
+    EXPECT_FALSE(i == j) << "truth samples re-inspect without redrawing";
 }

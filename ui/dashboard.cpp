@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 namespace ui {
 
@@ -36,10 +35,15 @@ Dashboard::Dashboard(LoadedScene scene, DashboardState state, DashboardOptions o
     sides_[0].renderer = std::make_unique<renderer::Renderer>(scene_.file.scene);
     scenePath_ = scene_.source;
     viewChoice_ = options_.view;
+    homeCamera_ = scene_.file.scene.camera;
     upAxis_ = options_.up;
 }
 
-Dashboard::~Dashboard() { cancelCasterLod(); }
+Dashboard::~Dashboard() {
+    cancelCasterLod();
+    cancelInspections();
+    finishBackgroundWork(); // the workers read the scene's ground truth
+}
 
 const geometry::analysis::Inspection* Dashboard::inspection(int side) const noexcept {
     return sides_[side].inspection ? &*sides_[side].inspection : nullptr;
@@ -62,7 +66,10 @@ void Dashboard::pollSceneLoad() {
 
 void Dashboard::adoptScene(LoadedScene loaded) {
     cancelCasterLod(); // its build reads the scene being replaced
+    cancelInspections();
+    finishBackgroundWork(); // … and so do the inspections (its ground truth)
     scene_ = std::move(loaded);
+    homeCamera_ = scene_.file.scene.camera;
     for (Side& s : sides_)
         if (s.renderer) s.renderer->setScene(scene_.file.scene);
     state_.camera = OrbitCamera::from(scene_.file.scene.camera);
@@ -78,26 +85,6 @@ namespace {
 
 Rect contentArea(const Rect& panel, float header, float pad) noexcept {
     return {panel.x + pad, panel.y + header, std::max(0.f, panel.w - 2.f * pad), std::max(0.f, panel.h - header - pad)};
-}
-
-/// Exact text of the values a frame depends on, so a change anywhere re-inspects.
-std::string frameKey(const geometry::shadow::ShadowSettings& s, const geometry::scene::Scene& scene,
-                     geometry::shadow::Viewport size, int truthSamples, int generation) {
-    std::ostringstream k;
-    k << geometry::io::settingsToJson(s).dump() << '|' << std::hexfloat << scene.camera.eye.x << ','
-      << scene.camera.eye.y << ',' << scene.camera.eye.z << ',' << scene.camera.target.x << ',' << scene.camera.target.y
-      << ',' << scene.camera.target.z << ',' << scene.light.direction.x << ',' << scene.light.direction.y << ','
-      << scene.light.direction.z << '|' << size.width << 'x' << size.height << '|' << truthSamples << '|' << generation;
-    return k.str();
-}
-
-geometry::analysis::Image placeholder(int w, int h) {
-    geometry::analysis::Image img;
-    img.width = std::max(w, 1);
-    img.height = std::max(h, 1);
-    img.rgba.assign(size_t(img.width) * img.height * 4, 38);
-    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
-    return img;
 }
 
 } // namespace
@@ -119,6 +106,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     renderViews(input);
     stepTradeoffSweep();
     stepRecommend();
+    pollInspections();
     updateInspection();
     updateHeatmap();
 
@@ -141,110 +129,17 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
         drawStatusBar();
     }
     ImGui::End();
+    // What the next frame draws at: coarse while this frame's input drags, dollies or flies.
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool dragging = ImGui::IsAnyItemActive() && (io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2]);
+    continuousInput_ = dragging || io.MouseWheel != 0.f || glm::length(input.fly) > 0.f;
+    widgetMapCounter("passes.shadow", double(counts_.shadow));
+    widgetMapCounter("passes.eye_full", double(counts_.eyeFull));
+    widgetMapCounter("passes.eye_coarse", double(counts_.eyeCoarse));
+    widgetMapCounter("passes.inspections", double(counts_.inspections));
+    widgetMapCounter("coarse", coarse() ? 1.0 : 0.0);
     widgetMapEndFrame();
     cpuFrameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-void Dashboard::renderViews(const FrameInput& input) {
-    geometry::scene::Scene& scene = scene_.file.scene;
-    if (flyLooking_ && glm::length(input.fly) > 0.f) {
-        const float step = state_.flySpeed * std::clamp(input.deltaSeconds, 0.f, 0.25f);
-        state_.camera.fly(input.fly.z * step, input.fly.x * step, input.fly.y * step);
-    }
-    state_.camera.applyTo(scene.camera);
-    scene.light.direction = state_.sun.direction();
-
-    const bool sideBySide = state_.views.compare == CompareMode::SideBySide;
-    geometry::shadow::Viewport size{int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w),
-                                    int(eyeArea_.h)};
-    size.width = std::max(size.width, 16);
-    size.height = std::max(size.height, 16);
-    const int sides = comparing() ? 2 : 1;
-    for (int i = 0; i < sides; ++i) {
-        Side& side = sides_[i];
-        if (!side.renderer) side.renderer = std::make_unique<renderer::Renderer>(scene);
-        giveCasterLod(*side.renderer);
-        try {
-            const auto p0 = std::chrono::steady_clock::now();
-            side.plan = renderer::planFrame(*side.renderer, state_.settings[i], scene.bounds(), scene.camera,
-                                            scene.light, size);
-            side.planMicroseconds =
-                std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - p0).count();
-            renderer::ViewOptions v;
-            v.lightViewSize = lightViewSize_;
-            v.lightSplit = std::clamp(state_.views.lightSplit, 0, std::max(0, int(side.plan.splits.size()) - 1));
-            v.overlays = state_.views.overlays;
-            v.unwarped = state_.views.unwarped && i == shownSide();
-            side.renderer->render(side.plan, size, v);
-            side.size = size;
-        } catch (const std::exception& e) {
-            status_ = std::string(i ? "B: " : "") + e.what();
-        }
-    }
-}
-
-void Dashboard::updateInspection() {
-    const int sides = comparing() ? 2 : 1;
-    for (int i = 0; i < sides; ++i) {
-        Side& side = sides_[i];
-        if (!side.renderer || side.size.width <= 0) continue;
-        const std::string key = frameKey(state_.settings[i], scene_.file.scene, side.size,
-                                         state_.views.truth ? state_.views.truthSamples : 0, sceneGeneration_);
-        if (key == side.inspectedKey && side.inspection) continue;
-        try {
-            side.inspection =
-                renderer::inspect(*side.renderer, side.plan, state_.views.truth ? scene_.truth.get() : nullptr,
-                                  state_.views.truthSamples);
-            side.eye = side.renderer->readEye();
-            side.inspectedKey = key;
-        } catch (const std::exception& e) {
-            status_ = std::string("inspection failed: ") + e.what();
-            side.inspection.reset();
-        }
-    }
-}
-
-void Dashboard::updateHeatmap() {
-    const ViewSettings& v = state_.views;
-    const int s = shownSide();
-    std::ostringstream k;
-    k << sides_[0].inspectedKey << '|' << (comparing() ? sides_[1].inspectedKey : "") << '|' << s << '|'
-      << heatmapName(v.heatmap) << '|' << v.heatmapBlend << '|' << v.texelGrid;
-    if (k.str() == heatmapKey_) return;
-    heatmapKey_ = k.str();
-    const Side& side = sides_[s];
-    geometry::analysis::Image img;
-    try {
-        if (!side.inspection) {
-            img = placeholder(side.size.width, side.size.height);
-        } else {
-            const geometry::analysis::Inspection& in = *side.inspection;
-            switch (v.heatmap) {
-            case HeatmapKind::Aliasing: img = geometry::analysis::aliasingView(in, side.eye, v.heatmapBlend); break;
-            case HeatmapKind::Truth:
-                img = in.occluded ? geometry::analysis::truthView(in, side.eye, v.heatmapBlend)
-                                  : placeholder(in.width, in.height);
-                break;
-            case HeatmapKind::Splits: img = geometry::analysis::splitsView(side.eye, in, side.plan); break;
-            case HeatmapKind::Texels:
-                img = geometry::analysis::texelsView(side.eye, in, std::max(1, v.texelGrid));
-                break;
-            case HeatmapKind::Difference:
-                img = comparing() && sides_[0].inspection && sides_[1].inspection &&
-                              sides_[0].inspection->width == sides_[1].inspection->width &&
-                              sides_[0].inspection->height == sides_[1].inspection->height
-                          ? geometry::analysis::differenceView(*sides_[0].inspection, *sides_[1].inspection)
-                          : placeholder(in.width, in.height);
-                break;
-            case HeatmapKind::Count: img = placeholder(in.width, in.height); break;
-            }
-        }
-    } catch (const std::exception& e) {
-        status_ = std::string("heatmap: ") + e.what();
-        img = placeholder(side.size.width, side.size.height);
-    }
-    heatmapImage_ = std::move(img);
-    heatmap_.upload(heatmapImage_);
 }
 
 geometry::analysis::Image Dashboard::eyeImage(int side) const {

@@ -8,6 +8,9 @@
 // same pixels for the same state and size.
 #include "dashboard_state.h"
 #include "geometry/analysis/tuner.h"
+#include "pass_inputs.h"
+#include "progressive.h"
+#include "recent_median.h"
 #include "renderer/image.h"
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
@@ -17,11 +20,13 @@
 
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <future>
 #include <memory>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -42,6 +47,16 @@ struct FrameInput {
     bool screenshot = false; // the screenshot key
     glm::vec3 fly{0.f};      // WASD/QE while fly-looking: (right, up, forward), −1..1 each
     float deltaSeconds = 1.f / 60.f;
+};
+
+/// How often the dashboard drew and inspected, since it was made (tests, the stats panel, the
+/// widget map): hover, zoom and idle frames add nothing.
+struct PassCounts {
+    uint64_t shadow = 0;      // frames that drew the shadow maps (either side)
+    uint64_t eyeFull = 0;     // eye passes at full resolution
+    uint64_t eyeCoarse = 0;   // eye passes at reduced resolution during interaction
+    uint64_t inspections = 0; // statistics (and truth) computed and shown
+    uint64_t cancelled = 0;   // inspections abandoned because the inputs changed
 };
 
 /// One pixel's exact values (the pixel inspector).
@@ -97,6 +112,16 @@ public:
     [[nodiscard]] const geometry::shadow::ShadowPlan& plan(int side) const noexcept { return sides_[side].plan; }
     [[nodiscard]] const LoadedScene& scene() const noexcept { return scene_; }
     [[nodiscard]] bool loading() const noexcept { return loader_.busy(); }
+    [[nodiscard]] const PassCounts& passCounts() const noexcept { return counts_; }
+    /// When the front end should run the next frame without waiting for input: 0 now (something
+    /// changed that is not drawn yet), t > 0 seconds (a coarse view to refine, background work to
+    /// poll), nullopt: nothing pending, sleep until input.
+    [[nodiscard]] std::optional<double> nextFrameIn() const;
+    /// Blocks until the background inspections have finished and takes their results (headless,
+    /// tests); true when there were any (the next frame shows them).
+    bool finishBackgroundWork();
+    /// The eye view shown is coarse (drawn at reduced resolution while the user drags).
+    [[nodiscard]] bool coarse() const noexcept { return sides_[0].coarseDivisor > 1 || sides_[1].coarseDivisor > 1; }
     /// Selects a tab of the stats panel: 0 Stats, 1 n'(γ), 2 λ(θ), 3 m_z(z), 4 Trade-off.
     void showTab(int tab) noexcept { requestedTab_ = tab; }
     /// The trade-off sweep's results so far, on the tab's chosen axes (Charts panel).
@@ -121,18 +146,35 @@ public:
     }
     /// Loads the recommendation into side A (0) or B (1; A/B compare turns on).
     void applyRecommendation(int side);
+    /// The camera's n and f (the "near, far" field); refused with a status line unless 0 < n < f.
+    bool setNearFar(float n, float f);
+    /// Back to the scene's camera, or to the canonical view last chosen, lens included.
+    void resetCamera();
     /// Starts loading a scene in the background; the current one stays until it succeeds.
     void loadScene(const std::string& nameOrPath);
 
 private:
+    /// A side's statistics being computed on a worker thread for the frame last drawn at full size.
+    struct InspectionJob {
+        InspectionInputs inputs;
+        std::stop_source stop;
+        std::future<geometry::analysis::Inspection> result;
+        geometry::analysis::Image eye;
+        geometry::shadow::ShadowPlan plan;
+    };
     struct Side {
         std::unique_ptr<renderer::Renderer> renderer;
         geometry::shadow::ShadowPlan plan;
-        double planMicroseconds = 0;
+        RecentMedian planMicroseconds;
+        std::optional<PassInputs> drawn;       // what the images shown were drawn from
+        int coarseDivisor = 1;                 // > 1: the eye image shown is that much smaller a side
+        geometry::shadow::Viewport size{0, 0}; // the eye view at full resolution
+        double shadowGpuMs = NAN;              // the last time the maps were drawn
         std::optional<geometry::analysis::Inspection> inspection;
-        geometry::analysis::Image eye;
-        std::string inspectedKey;
-        geometry::shadow::Viewport size{0, 0};
+        std::optional<InspectionInputs> inspected; // what `inspection` describes
+        uint64_t inspectionSerial = 0;             // changes with every inspection shown
+        geometry::analysis::Image eye;             // the eye image of that frame (heatmap blend)
+        std::optional<InspectionJob> job;
     };
 
     void pollSceneLoad();
@@ -142,9 +184,17 @@ private:
     void cancelCasterLod() noexcept;
     void giveCasterLod(renderer::Renderer& r) const;
     [[nodiscard]] std::string casterLodStatus(int side) const;
+    // Drawing only what changed (dashboard_frame.cpp).
     void renderViews(const FrameInput& input);
+    [[nodiscard]] PassInputs passInputs(int side) const;
+    [[nodiscard]] InspectionInputs inspectionInputs(int side) const;
+    void drawSide(int side, const PassInputs& in, int divisor);
     void updateInspection();
+    void startInspection(int side, const InspectionInputs& in);
+    void pollInspections();
+    void cancelInspections() noexcept;
     void updateHeatmap();
+    [[nodiscard]] bool backgroundBusy() const noexcept;
     [[nodiscard]] bool comparing() const noexcept { return state_.views.compare != CompareMode::Off; }
     [[nodiscard]] int shownSide() const noexcept { return comparing() ? state_.editing : 0; }
 
@@ -184,7 +234,15 @@ private:
     std::array<Side, 2> sides_;
     renderer::Texture2D heatmap_;
     geometry::analysis::Image heatmapImage_;
-    std::string heatmapKey_;
+    std::optional<HeatmapInputs> heatmapShown_;
+    PassCounts counts_;
+    geometry::shadow::Viewport eyeSize_{0, 0}; // this frame's full-resolution eye view size
+    bool continuousInput_ = false;             // the last frame's input was a drag, the wheel or fly keys
+    bool drewThisFrame_ = false;
+    std::chrono::steady_clock::time_point lastChange_{};
+    uint64_t nextInspectionSerial_ = 1;
+    std::vector<std::future<geometry::analysis::Inspection>> retiring_; // cancelled jobs winding down
+    geometry::scene::Camera homeCamera_; // Reset camera: the scene's, or the canonical view last chosen
     DashboardRects rects_;
     Rect eyeArea_, lightArea_, heatmapArea_;
     int lightViewSize_ = 256;

@@ -129,6 +129,7 @@ void Dashboard::drawSceneGroup() {
         for (const auto& [name, view] : scene_.file.views) {
             if (ImGui::Selectable(name.c_str(), name == viewChoice_)) {
                 viewChoice_ = name;
+                homeCamera_ = view.camera;
                 state_.camera = OrbitCamera::from(view.camera);
                 scene_.file.scene.camera.fovYDeg = view.camera.fovYDeg;
                 scene_.file.scene.camera.near = view.camera.near;
@@ -141,6 +142,21 @@ void Dashboard::drawSceneGroup() {
     help("The scene file's canonical views (camera + light), as benchmarks and sweeps use them");
 }
 
+bool Dashboard::setNearFar(float n, float f) {
+    if (!(std::isfinite(n) && std::isfinite(f) && n > 0.f && f > n)) {
+        status_ = "near/far refused: need 0 < near < far";
+        return false;
+    }
+    scene_.file.scene.camera.near = n;
+    scene_.file.scene.camera.far = f;
+    return true;
+}
+
+void Dashboard::resetCamera() {
+    state_.camera = OrbitCamera::from(homeCamera_);
+    scene_.file.scene.camera = homeCamera_; // the lens too: fov, near, far
+}
+
 void Dashboard::drawCameraLightGroup() {
     if (!ImGui::CollapsingHeader("Camera & light", ImGuiTreeNodeFlags_DefaultOpen)) return;
     geometry::scene::Camera& cam = scene_.file.scene.camera;
@@ -148,17 +164,13 @@ void Dashboard::drawCameraLightGroup() {
                        "look and WASD/QE to fly.");
     ImGui::SliderFloat("fly speed", &state_.flySpeed, 0.1f, 1000.f, "%.3g units/s", ImGuiSliderFlags_Logarithmic);
     float nearFar[2] = {cam.near, cam.far};
-    if (ImGui::InputFloat2("near, far", nearFar, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
-        if (std::isfinite(nearFar[0]) && std::isfinite(nearFar[1]) && nearFar[0] > 0.f && nearFar[1] > nearFar[0]) {
-            cam.near = nearFar[0];
-            cam.far = nearFar[1];
-        } else {
-            status_ = "near/far refused: need 0 < near < far";
-        }
-    }
+    if (ImGui::InputFloat2("near, far", nearFar, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue))
+        (void)setNearFar(nearFar[0], nearFar[1]);
     widgetMapRecord("camera.near_far");
     help("The view frustum's n and f (the splits and warps depend on them)");
-    if (ImGui::Button("Reset camera")) state_.camera = OrbitCamera::from(scene_.file.scene.camera);
+    if (ImGui::Button("Reset camera")) resetCamera();
+    widgetMapRecord("camera.reset");
+    help(viewChoice_.empty() ? "Back to the scene's camera" : ("Back to the camera of view " + viewChoice_).c_str());
     ImGui::Separator();
     ImGui::SliderFloat("sun azimuth", &state_.sun.azimuthDeg, -180.f, 180.f, "%.1f°");
     widgetMapRecord("sun.azimuth");

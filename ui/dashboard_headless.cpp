@@ -22,24 +22,40 @@ HeadlessDashboard::HeadlessDashboard(LoadedScene scene, DashboardState state, Da
     target_.ensure(width, height);
 }
 
-geometry::analysis::Image HeadlessDashboard::render(int frames) {
+void HeadlessDashboard::frame(const PointerInput& pointer) {
     imgui_.makeCurrent();
     ImGuiIO& io = ImGui::GetIO();
-    for (int i = 0; i < std::max(frames, 1); ++i) {
-        io.DisplaySize = ImVec2(float(width_), float(height_));
-        io.DisplayFramebufferScale = ImVec2(1.f, 1.f);
-        io.DeltaTime = 1.f / 60.f;
-        io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // no cursor: nothing hovered
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui::NewFrame();
-        dashboard_->frame(float(width_), float(height_));
-        ImGui::Render();
-        target_.bindAndClear(0.f, 0.f, 0.f);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    }
+    io.DisplaySize = ImVec2(float(width_), float(height_));
+    io.DisplayFramebufferScale = ImVec2(1.f, 1.f);
+    io.DeltaTime = 1.f / 60.f;
+    io.MousePos = pointer.cursor ? ImVec2(pointer.cursor->x, pointer.cursor->y) : ImVec2(-FLT_MAX, -FLT_MAX);
+    for (int b = 0; b < 3; ++b) io.MouseDown[b] = pointer.buttons[size_t(b)];
+    io.MouseWheel = pointer.wheel;
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    dashboard_->frame(float(width_), float(height_));
+    ImGui::Render();
+    target_.bindAndClear(0.f, 0.f, 0.f);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void HeadlessDashboard::step(const PointerInput& input) {
+    frame(input);
+    glFinish();
+    renderer::ColorTarget::unbind();
+}
+
+geometry::analysis::Image HeadlessDashboard::render(int frames) {
+    for (int i = 0; i < std::max(frames, 1); ++i) frame({});
+    // The statistics run on worker threads: wait for them, then one frame that shows them.
+    if (dashboard_->finishBackgroundWork()) frame({});
+    renderer::ColorTarget::unbind();
+    return image();
+}
+
+geometry::analysis::Image HeadlessDashboard::image() const {
     geometry::analysis::Image img = renderer::readTexture(target_.texture(), width_, height_);
     for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
-    renderer::ColorTarget::unbind();
     return img;
 }
 

@@ -6,7 +6,18 @@
 #include "imgui_setup.h"
 #include "renderer/render_targets.h"
 
+#include <array>
+#include <optional>
+
 namespace ui {
+
+/// Pointer state for one headless frame (tests, the dashboard benchmark): the cursor in dashboard
+/// pixels (none: outside the window), the buttons held (left, right, middle), wheel steps.
+struct PointerInput {
+    std::optional<glm::vec2> cursor;
+    std::array<bool, 3> buttons{};
+    float wheel = 0.f;
+};
 
 class HeadlessDashboard {
 public:
@@ -15,9 +26,14 @@ public:
     /// Runs `frames` frames (the first lays out and renders the views; later ones settle timings)
     /// and returns the last one's pixels.
     [[nodiscard]] geometry::analysis::Image render(int frames = 3);
+    /// One frame with this input, its GL work finished (glFinish), the image not read back.
+    void step(const PointerInput& input = {});
+    /// The last frame's pixels.
+    [[nodiscard]] geometry::analysis::Image image() const;
     [[nodiscard]] Dashboard& dashboard() noexcept { return *dashboard_; }
 
 private:
+    void frame(const PointerInput& pointer);
     ImGuiScope imgui_;
     std::unique_ptr<Dashboard> dashboard_;
     renderer::ColorTarget target_;

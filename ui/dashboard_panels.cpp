@@ -343,6 +343,12 @@ void Dashboard::drawStatusBar() {
     if (loader_.busy())
         text = "loading " + loader_.source() + ": " + loader_.stage() + " " +
                std::to_string(int(loader_.progress() * 100.f)) + "%";
+    if (coarse()) {
+        const int d = std::max(sides_[0].coarseDivisor, sides_[1].coarseDivisor);
+        text += "   |   coarse view (1/" + std::to_string(d) + " resolution), refining when input pauses";
+    } else if (sides_[0].job || sides_[1].job) {
+        text += "   |   statistics: recomputing";
+    }
     if (!status_.empty()) text += "   |   " + status_;
     ImGui::TextUnformatted(text.c_str());
     widgetMapStatus(status_);

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -109,15 +110,47 @@ void Dashboard::drawStatsTable() {
                 "caster LOD", [&](int i) { return casterLodStatus(i); },
                 "casters.lod = auto: simplified caster levels, built once per scene in the background; the "
                 "shadow passes draw every triangle until they are in");
-            row("GPU shadow pass", gpu(renderer::Pass::Shadow),
-                "GPU time of the shadow maps (all splits), from a few frames ago");
+            row(
+                "GPU shadow pass",
+                [&](int i) {
+                    const auto* s = stat(i);
+                    if (!s || !std::isfinite(sides_[i].shadowGpuMs)) return std::string("–");
+                    return fmt("%.2f ms", sides_[i].shadowGpuMs) + (s->shadowMapsReused ? " (maps reused)" : "");
+                },
+                "GPU time of the shadow maps (all splits) when last drawn; the maps are reused while only "
+                "eye-side values change (filter, receiver offsets, heatmap)");
             row("GPU eye pass", gpu(renderer::Pass::Eye), "GPU time of the eye view with filtering and blur");
             row("GPU light views", gpu(renderer::Pass::LightView),
                 "GPU time of the inspection views (not part of the shadowing)");
             row(
-                "plan (CPU)", [&](int i) { return fmt("%.1f µs", sides_[i].planMicroseconds); },
-                "geometry::planShadows");
+                "plan (CPU)",
+                [&](int i) {
+                    const RecentMedian& m = sides_[i].planMicroseconds;
+                    return m.count() ? fmt("%.1f µs", m.median()) + " (median of " + std::to_string(m.count()) + ")"
+                                     : std::string("–");
+                },
+                "geometry::planShadows, the median over the last plans (the pre-pass of focus.mode = samples "
+                "not included)");
             row("dashboard frame (CPU)", [&](int) { return fmt("%.1f ms", cpuFrameMs_); });
+            row(
+                "passes drawn",
+                [&](int) {
+                    return std::to_string(counts_.shadow) + " shadow, " + std::to_string(counts_.eyeFull) + " eye + " +
+                           std::to_string(counts_.eyeCoarse) + " coarse, " + std::to_string(counts_.inspections) +
+                           " inspected";
+                },
+                "Since the dashboard started (both sides): shadow-map passes, eye passes at full and reduced "
+                "resolution, statistics computed. Hover, zoom and idle frames draw nothing.");
+            row(
+                "statistics",
+                [&](int i) {
+                    const Side& s = sides_[i];
+                    if (s.coarseDivisor > 1) return std::string("coarse view: from the last full frame");
+                    if (s.job) return std::string("recomputing (shown: stale)");
+                    return s.inspection ? std::string("current") : std::string("–");
+                },
+                "Statistics and ground truth are computed on a worker thread for the last full-resolution "
+                "frame; the values shown stay until the new ones are ready");
             row(
                 "triangles shadow / eye",
                 [&](int i) {

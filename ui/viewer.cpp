@@ -11,10 +11,13 @@
 #include <imgui_impl_opengl3.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace ui {
 
@@ -101,12 +104,20 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
     auto last = std::chrono::steady_clock::now();
     std::signal(SIGINT, onQuitSignal);
     std::signal(SIGTERM, onQuitSignal);
-    std::string lastKey;
-    int quietFrames = 0;
+    // Tests (the widget-map hook) wait on the frame counter: tick at 10 Hz instead of sleeping.
+    const bool ticking = std::getenv("SHADOWSCOPE_WIDGET_MAP") != nullptr;
+    int settleFrames = 2; // ImGui needs a frame or two after input to settle hover and active states
     while (!glfwWindowShouldClose(w) && !quitRequested) {
-        // Idle (nothing changed for a few frames, no background work): sleep until input arrives
-        // instead of re-rendering an unchanged frame at full speed.
-        if (quietFrames > 3 && !dashboard.loading() && !dashboard.tradeoffRunning()) glfwWaitEventsTimeout(0.5);
+        // Draw only when something can have changed: input arrived, the dashboard has an undrawn
+        // change, a coarse view to refine or background work to poll. Otherwise sleep until input.
+        const std::optional<double> due = dashboard.nextFrameIn();
+        const bool unsaved = options.persist && !configPath.empty() &&
+                             dashboardToJson(dashboard.state(), geometry).dump() != savedConfig;
+        std::optional<double> wait = settleFrames > 0 ? std::optional<double>(0.0) : due;
+        if (unsaved) wait = std::min(wait.value_or(1.0), 1.0); // saved within a second of a change
+        if (ticking) wait = std::min(wait.value_or(0.1), 0.1);
+        if (!wait) glfwWaitEvents();
+        else if (*wait > 0.0) glfwWaitEventsTimeout(*wait);
         else glfwPollEvents();
         int fbW = 0, fbH = 0;
         glfwGetFramebufferSize(w, &fbW, &fbH);
@@ -144,18 +155,11 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
             std::cout.flush();
         }
         glfwSwapBuffers(w);
-        // What the next frame would show differently: the state, the camera and light, any input.
         const ImGuiIO& io = ImGui::GetIO();
-        const DashboardState& st = dashboard.state();
-        std::string key = dashboardToJson(st, geometry).dump() + dashboard.status();
-        for (float v :
-             {st.camera.target.x, st.camera.target.y, st.camera.target.z, st.camera.yawDeg, st.camera.pitchDeg,
-              st.camera.distance, st.sun.azimuthDeg, st.sun.elevationDeg, io.MousePos.x, io.MousePos.y})
-            key += ',' + std::to_string(v);
         const bool active = io.MouseWheel != 0.f || io.WantTextInput || ImGui::IsAnyItemActive() || io.MouseDown[0] ||
-                            io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
-        quietFrames = key == lastKey && !active ? quietFrames + 1 : 0;
-        lastKey = std::move(key);
+                            io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot ||
+                            io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f;
+        settleFrames = active ? 2 : std::max(0, settleFrames - 1);
         if (now - lastSave > std::chrono::seconds(1)) {
             saveConfig(false);
             lastSave = now;

@@ -47,6 +47,11 @@ void widgetMapStatus(std::string_view status) {
     map().current["status"] = std::string(status);
 }
 
+void widgetMapCounter(std::string_view name, double value) {
+    if (!enabled()) return;
+    map().current["counters"][std::string(name)] = value;
+}
+
 void widgetMapEndFrame() {
     if (!enabled()) return;
     MapState& m = map();

@@ -14,6 +14,8 @@ void widgetMapBeginFrame(float width, float height);
 void widgetMapRecord(std::string_view id);
 void widgetMapRecordRect(std::string_view id, const Rect& r);
 void widgetMapStatus(std::string_view status);
+/// A number the tests read (e.g. how many passes the dashboard has drawn).
+void widgetMapCounter(std::string_view name, double value);
 void widgetMapEndFrame();
 
 } // namespace ui

@@ -1,0 +1,166 @@
+// The dashboard draws only what changed (issue 18): hover and idle frames draw no pass, a drag
+// draws coarse frames and one full frame when it pauses, eye-side settings reuse the shadow maps,
+// Reset camera restores the view, and a near/far edit re-inspects. Headless (OSMesa), with the
+// pointer driven through HeadlessDashboard::step.
+#include "app/dashboard_setup.h"
+#include "renderer/context.h"
+#include "ui/dashboard_headless.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstring>
+#include <thread>
+
+namespace {
+
+size_t differing(const geometry::analysis::Image& a, const geometry::analysis::Image& b, const ui::Rect& r) {
+    size_t n = 0;
+    for (int y = int(r.y); y < int(r.bottom()); ++y)
+        for (int x = int(r.x); x < int(r.right()); ++x)
+            if (std::memcmp(a.at(x, y), b.at(x, y), 3) != 0) ++n;
+    return n;
+}
+
+bool operator==(const ui::PassCounts& a, const ui::PassCounts& b) {
+    return a.shadow == b.shadow && a.eyeFull == b.eyeFull && a.eyeCoarse == b.eyeCoarse &&
+           a.inspections == b.inspections;
+}
+
+std::string describe(const ui::PassCounts& c) {
+    return std::to_string(c.shadow) + " shadow, " + std::to_string(c.eyeFull) + " full, " +
+           std::to_string(c.eyeCoarse) + " coarse, " + std::to_string(c.inspections) + " inspections, " +
+           std::to_string(c.cancelled) + " cancelled";
+}
+
+class DashboardInteraction : public ::testing::Test {
+protected:
+    static constexpr int kW = 960, kH = 600;
+    void SetUp() override {
+        context_ = renderer::createOSMesaContext();
+        app::RenderOptions o;
+        o.scene = "platform";
+        o.size = {kW, kH};
+        o.out = ::testing::TempDir() + "dashboard_interaction";
+        geometry::shadow::applyAssignment(o.settings, "shadow_map.resolution=512");
+        ui::LoadedScene scene = app::loadDashboardScene(o);
+        ui::DashboardState state = app::initialDashboardState(scene, o);
+        d_ = std::make_unique<ui::HeadlessDashboard>(std::move(scene), state, app::dashboardOptions(o), kW, kH);
+        (void)d_->render(1);
+    }
+    ui::Dashboard& dash() { return d_->dashboard(); }
+    glm::vec2 eyeCentre() {
+        const ui::Rect& r = dash().rects().eye;
+        return {r.x + r.w * 0.5f, r.y + r.h * 0.6f};
+    }
+    /// Drags with the left button over the eye view: press, `steps` moves of (dx, 0), release.
+    void orbit(int steps, float dx) {
+        glm::vec2 p = eyeCentre();
+        d_->step({p, {true, false, false}, 0.f});
+        for (int i = 0; i < steps; ++i) {
+            p.x += dx;
+            d_->step({p, {true, false, false}, 0.f});
+        }
+        d_->step({p, {false, false, false}, 0.f});
+    }
+    std::unique_ptr<renderer::GlContext> context_;
+    std::unique_ptr<ui::HeadlessDashboard> d_;
+};
+
+TEST_F(DashboardInteraction, HoverAndIdleFramesDrawNoPass) {
+    const geometry::analysis::Image before = d_->render(1);
+    const ui::PassCounts counts = dash().passCounts();
+    ASSERT_GE(counts.eyeFull, 1u);
+    ASSERT_GE(counts.inspections, 1u);
+    glm::vec2 p = eyeCentre();
+    for (int i = 0; i < 40; ++i, p.x += 1.f) d_->step({p});
+    for (int i = 0; i < 20; ++i) d_->step({});
+    EXPECT_TRUE(dash().passCounts() == counts) << describe(counts) << " -> " << describe(dash().passCounts());
+    EXPECT_FALSE(dash().nextFrameIn()) << "nothing pending: the front end may sleep until input";
+    // The status bar did show the hovered pixel meanwhile: the probe reads the last inspection.
+    d_->step({eyeCentre()});
+    const geometry::analysis::Image hovered = d_->image();
+    EXPECT_GT(differing(before, hovered, dash().rects().status), 100u);
+    EXPECT_EQ(differing(before, hovered, dash().rects().eye), 0u);
+}
+
+TEST_F(DashboardInteraction, EyeSideSettingsReuseTheShadowMaps) {
+    dash().state().settings[0].filter.type = geometry::shadow::FilterType::Pcf;
+    const geometry::analysis::Image pcf3 = d_->render(1);
+    const ui::PassCounts a = dash().passCounts();
+    dash().state().settings[0].filter.kernel = 7;
+    const geometry::analysis::Image pcf7 = d_->render(1);
+    const ui::PassCounts b = dash().passCounts();
+    EXPECT_EQ(b.shadow, a.shadow) << "the kernel does not change the maps";
+    EXPECT_EQ(b.eyeFull, a.eyeFull + 1);
+    EXPECT_EQ(b.inspections, a.inspections + 1);
+    EXPECT_GT(differing(pcf3, pcf7, dash().rects().eye), 200u) << "7x7 PCF softens the edges";
+    EXPECT_EQ(differing(pcf3, pcf7, dash().rects().light), 0u) << "same maps, same light view";
+    dash().state().settings[0].warp.method = geometry::shadow::WarpMethod::Lispsm;
+    (void)d_->render(1);
+    EXPECT_EQ(dash().passCounts().shadow, b.shadow + 1) << "a warp changes the maps";
+}
+
+TEST_F(DashboardInteraction, ADragDrawsCoarseFramesThenOneFullFrame) {
+    const ui::PassCounts a = dash().passCounts();
+    orbit(6, 8.f);
+    const ui::PassCounts b = dash().passCounts();
+    EXPECT_GE(b.eyeCoarse, a.eyeCoarse + 5) << describe(b);
+    EXPECT_EQ(b.eyeFull, a.eyeFull) << "no full frame while the pointer moves";
+    EXPECT_EQ(b.inspections, a.inspections) << "coarse frames are not inspected";
+    EXPECT_TRUE(dash().coarse());
+    const auto due = dash().nextFrameIn();
+    ASSERT_TRUE(due);
+    EXPECT_LE(*due, ui::kRefinePause);
+    std::this_thread::sleep_for(std::chrono::milliseconds(int(ui::kRefinePause * 1000) + 30));
+    for (int i = 0; i < 5; ++i) d_->step({});
+    (void)d_->render(1);
+    const ui::PassCounts c = dash().passCounts();
+    EXPECT_EQ(c.eyeFull, b.eyeFull + 1) << "exactly one refinement: " << describe(c);
+    EXPECT_EQ(c.eyeCoarse, b.eyeCoarse);
+    EXPECT_EQ(c.inspections, b.inspections + 1);
+    EXPECT_FALSE(dash().coarse());
+    for (int i = 0; i < 10; ++i) d_->step({});
+    EXPECT_TRUE(dash().passCounts() == c) << describe(dash().passCounts());
+}
+
+TEST_F(DashboardInteraction, ChangingTheViewCancelsTheStatisticsUnderWay) {
+    dash().state().views.truthSamples = 4;
+    d_->step({}); // a full frame; its statistics (16 truth rays a pixel) start on a worker
+    const uint64_t cancelled = dash().passCounts().cancelled;
+    dash().state().sun.azimuthDeg += 20.f;
+    d_->step({});
+    EXPECT_EQ(dash().passCounts().cancelled, cancelled + 1);
+    (void)d_->render(1);
+    ASSERT_NE(dash().inspection(0), nullptr);
+    EXPECT_EQ(dash().inspection(0)->truthSamples, 4);
+}
+
+TEST_F(DashboardInteraction, ResetCameraRestoresTheView) {
+    const geometry::analysis::Image home = d_->render(1);
+    orbit(4, 25.f);
+    ASSERT_TRUE(dash().setNearFar(2.f, 300.f));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    const geometry::analysis::Image moved = d_->render(1);
+    EXPECT_GT(differing(home, moved, dash().rects().eye), 1000u);
+    dash().resetCamera();
+    const geometry::analysis::Image back = d_->render(1);
+    EXPECT_EQ(differing(home, back, dash().rects().eye), 0u);
+    EXPECT_EQ(differing(home, back, dash().rects().heatmap), 0u);
+}
+
+TEST_F(DashboardInteraction, ANearFarEditReinspects) {
+    const geometry::analysis::Image before = d_->render(1);
+    const double p95 = dash().inspection(0)->aliasing.p95;
+    const ui::PassCounts a = dash().passCounts();
+    const auto& cam = dash().scene().file.scene.camera;
+    ASSERT_TRUE(dash().setNearFar(cam.near * 20.f, cam.far));
+    const geometry::analysis::Image after = d_->render(1);
+    EXPECT_EQ(dash().passCounts().inspections, a.inspections + 1);
+    EXPECT_NE(dash().inspection(0)->aliasing.p95, p95);
+    EXPECT_GT(differing(before, after, dash().rects().heatmap), 1000u) << "the heatmap follows the new n";
+    EXPECT_FALSE(dash().setNearFar(5.f, 1.f));
+    EXPECT_NE(dash().status().find("near/far refused"), std::string::npos) << dash().status();
+}
+
+} // namespace

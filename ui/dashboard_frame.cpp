@@ -1,0 +1,315 @@
+// Drawing only what changed (docs/design.md §6): each frame compares a side's PassInputs with what
+// its images were drawn from and draws again only on a difference, coarse while the user drags and
+// at full resolution once input pauses; the statistics and ground truth of a full-resolution frame
+// are computed on a worker thread and shown when ready; the heatmap is rebuilt only when what it
+// shows changed.
+//
+// Index
+//   [SECTION] Inputs ............... passInputs, inspectionInputs
+//   [SECTION] Drawing .............. renderViews, drawSide
+//   [SECTION] Inspection ........... updateInspection, startInspection, pollInspections, cancelInspections,
+//                                    finishBackgroundWork
+//   [SECTION] Heatmap .............. updateHeatmap
+//   [SECTION] Scheduling ........... backgroundBusy, nextFrameIn
+#include "dashboard.h"
+
+#include "geometry/analysis/view_images.h"
+#include "renderer/inspection.h"
+#include "renderer/plan_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ui {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// A coarse frame should leave the UI responsive: the shadow maps, the light views and the eye
+/// view at reduced size within this many milliseconds on the machine at hand.
+constexpr double kCoarseBudgetMs = 100.0;
+
+geometry::analysis::Image placeholder(int w, int h) {
+    geometry::analysis::Image img;
+    img.width = std::max(w, 1);
+    img.height = std::max(h, 1);
+    img.rgba.assign(size_t(img.width) * img.height * 4, 38);
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
+    return img;
+}
+
+bool ready(const std::future<geometry::analysis::Inspection>& f) {
+    return f.valid() && f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+} // namespace
+
+// ---- [SECTION] Inputs -----------------------------------------------------------------------
+
+PassInputs Dashboard::passInputs(int side) const {
+    PassInputs in;
+    in.settings = state_.settings[side];
+    in.camera = scene_.file.scene.camera; // its lens (fov, near, far); eye and target from the rig
+    state_.camera.applyTo(in.camera);
+    in.light = state_.sun.direction();
+    in.size = eyeSize_;
+    in.lightViewSize = lightViewSize_;
+    in.lightSplit = state_.views.lightSplit;
+    in.overlays = state_.views.overlays;
+    in.unwarped = state_.views.unwarped && side == shownSide();
+    in.sceneGeneration = sceneGeneration_;
+    in.casterLod = sides_[side].renderer && sides_[side].renderer->hasCasterLod();
+    return in;
+}
+
+InspectionInputs Dashboard::inspectionInputs(int side) const {
+    return {passInputs(side), state_.views.truth && scene_.truth ? state_.views.truthSamples : 0};
+}
+
+// ---- [SECTION] Drawing ----------------------------------------------------------------------
+
+void Dashboard::renderViews(const FrameInput& input) {
+    drewThisFrame_ = false;
+    geometry::scene::Scene& scene = scene_.file.scene;
+    const bool flying = flyLooking_ && glm::length(input.fly) > 0.f;
+    if (flying) {
+        const float step = state_.flySpeed * std::clamp(input.deltaSeconds, 0.f, 0.25f);
+        state_.camera.fly(input.fly.z * step, input.fly.x * step, input.fly.y * step);
+    }
+    state_.camera.applyTo(scene.camera);
+    scene.light.direction = state_.sun.direction();
+
+    const bool sideBySide = state_.views.compare == CompareMode::SideBySide;
+    eyeSize_ = {std::max(16, int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w)),
+                std::max(16, int(eyeArea_.h))};
+    const auto now = Clock::now();
+    const int sides = comparing() ? 2 : 1;
+    std::array<PassInputs, 2> inputs;
+    std::array<bool, 2> changed{};
+    bool anyChanged = false;
+    for (int i = 0; i < sides; ++i) {
+        Side& side = sides_[i];
+        if (!side.renderer) side.renderer = std::make_unique<renderer::Renderer>(scene);
+        giveCasterLod(*side.renderer);
+        inputs[i] = passInputs(i);
+        changed[i] = !side.drawn || *side.drawn != inputs[i];
+        anyChanged = anyChanged || changed[i];
+    }
+    if (anyChanged) lastChange_ = now;
+    const double since = std::chrono::duration<double>(now - lastChange_).count();
+    const bool continuous = continuousInput_ || flying;
+    for (int i = 0; i < sides; ++i) {
+        const Draw draw = decideDraw(changed[i], continuous, sides_[i].coarseDivisor > 1, since);
+        if (draw == Draw::None) continue;
+        int divisor = 1;
+        if (draw == Draw::Coarse) {
+            // From this side's last frames: the eye-side passes scale with the pixels, the rest does not.
+            const renderer::PassTimes& t = sides_[i].renderer->stats().gpu;
+            const double perPixel = t.valid ? (t.of(renderer::Pass::Prepass) + t.of(renderer::Pass::Eye)) *
+                                                  double(sides_[i].coarseDivisor * sides_[i].coarseDivisor)
+                                            : NAN;
+            const double fixed = (std::isfinite(sides_[i].shadowGpuMs) ? sides_[i].shadowGpuMs : 0.0) +
+                                 (t.valid ? t.of(renderer::Pass::LightView) : 0.0);
+            divisor = coarseDivisor(perPixel * sides, fixed * sides, kCoarseBudgetMs);
+        }
+        if (changed[i] && sides_[i].job) { // its statistics would describe a view no longer shown
+            sides_[i].job->stop.request_stop();
+            retiring_.push_back(std::move(sides_[i].job->result));
+            sides_[i].job.reset();
+            ++counts_.cancelled;
+        }
+        drawSide(i, inputs[i], divisor);
+    }
+}
+
+void Dashboard::drawSide(int i, const PassInputs& in, int divisor) {
+    Side& side = sides_[i];
+    const geometry::scene::Scene& scene = scene_.file.scene;
+    const geometry::shadow::Viewport full = in.size;
+    const geometry::shadow::Viewport size{std::max(8, full.width / divisor), std::max(8, full.height / divisor)};
+    try {
+        double us = 0;
+        // The plan at the drawn size (focus.mode = samples reduces that pre-pass); the aspect is the same.
+        side.plan = renderer::planFrame(*side.renderer, in.settings, scene.bounds(), in.camera, scene.light, size, &us);
+        side.planMicroseconds.add(us);
+        renderer::ViewOptions v;
+        v.lightViewSize = in.lightViewSize;
+        v.lightSplit = std::clamp(in.lightSplit, 0, std::max(0, int(side.plan.splits.size()) - 1));
+        v.overlays = in.overlays;
+        v.unwarped = in.unwarped;
+        v.reuseShadowMaps = true;
+        side.renderer->render(side.plan, size, v);
+        const renderer::FrameStats& st = side.renderer->stats();
+        if (!st.shadowMapsReused) ++counts_.shadow;
+        if (st.gpu.valid && st.gpu.drawn[size_t(renderer::Pass::Shadow)])
+            side.shadowGpuMs = st.gpu.of(renderer::Pass::Shadow);
+        ++(divisor > 1 ? counts_.eyeCoarse : counts_.eyeFull);
+        side.size = full;
+        side.coarseDivisor = divisor;
+        side.drawn = in;
+        drewThisFrame_ = true;
+    } catch (const std::exception& e) {
+        status_ = std::string(i ? "B: " : "") + e.what();
+        side.drawn = in; // not again until something changes
+    }
+}
+
+// ---- [SECTION] Inspection -------------------------------------------------------------------
+
+void Dashboard::updateInspection() {
+    const int sides = comparing() ? 2 : 1;
+    for (int i = 0; i < sides; ++i) {
+        const Side& side = sides_[i];
+        // Only a frame drawn at full resolution from the current inputs is inspected.
+        if (!side.renderer || !side.drawn || side.coarseDivisor > 1) continue;
+        const InspectionInputs in = inspectionInputs(i);
+        if (in.passes != *side.drawn) continue;
+        if ((side.inspected && *side.inspected == in) || (side.job && side.job->inputs == in)) continue;
+        startInspection(i, in);
+    }
+}
+
+void Dashboard::startInspection(int i, const InspectionInputs& in) {
+    Side& side = sides_[i];
+    if (side.job) { // a job for other inputs (e.g. the truth samples changed): abandon it
+        side.job->stop.request_stop();
+        retiring_.push_back(std::move(side.job->result));
+        side.job.reset();
+        ++counts_.cancelled;
+    }
+    try {
+        // The read-back needs the GL context, so it happens here; the analysis runs on a worker.
+        geometry::analysis::FrameReadback frame = renderer::readBack(*side.renderer, side.plan);
+        InspectionJob job;
+        job.inputs = in;
+        job.eye = side.renderer->readEye();
+        job.plan = side.plan;
+        const geometry::analysis::GroundTruth* truth = in.truthSamples > 0 ? scene_.truth.get() : nullptr;
+        const int samples = std::max(1, in.truthSamples);
+        job.result = std::async(std::launch::async, [frame = std::move(frame), plan = job.plan, truth, samples,
+                                                     stop = job.stop.get_token()]() mutable {
+            return geometry::analysis::makeInspection(std::move(frame), plan, truth, samples, stop);
+        });
+        side.job = std::move(job);
+    } catch (const std::exception& e) {
+        status_ = std::string("inspection failed: ") + e.what();
+        side.inspection.reset();
+        side.inspected = in; // not again until something changes
+    }
+}
+
+void Dashboard::pollInspections() {
+    std::erase_if(retiring_, [](const std::future<geometry::analysis::Inspection>& f) { return ready(f); });
+    for (Side& side : sides_) {
+        if (!side.job || !ready(side.job->result)) continue;
+        InspectionJob job = std::move(*side.job);
+        side.job.reset();
+        try {
+            side.inspection = job.result.get();
+            side.eye = std::move(job.eye);
+            ++counts_.inspections;
+        } catch (const geometry::analysis::Cancelled&) {
+            continue; // only a stop request cancels, and that job was not this one
+        } catch (const std::exception& e) {
+            status_ = std::string("inspection failed: ") + e.what();
+            side.inspection.reset();
+        }
+        side.inspected = job.inputs;
+        side.inspectionSerial = nextInspectionSerial_++;
+    }
+}
+
+void Dashboard::cancelInspections() noexcept {
+    for (Side& side : sides_)
+        if (side.job) {
+            side.job->stop.request_stop();
+            retiring_.push_back(std::move(side.job->result));
+            side.job.reset();
+        }
+}
+
+bool Dashboard::finishBackgroundWork() {
+    bool any = !retiring_.empty();
+    for (Side& side : sides_)
+        if (side.job && side.job->result.valid()) {
+            side.job->result.wait();
+            any = true;
+        }
+    for (auto& f : retiring_) f.wait();
+    retiring_.clear();
+    pollInspections();
+    return any;
+}
+
+// ---- [SECTION] Heatmap ----------------------------------------------------------------------
+
+void Dashboard::updateHeatmap() {
+    const ViewSettings& v = state_.views;
+    const int s = shownSide();
+    const HeatmapInputs in{sides_[0].inspectionSerial,
+                           comparing() ? sides_[1].inspectionSerial : 0,
+                           s,
+                           comparing(),
+                           v.heatmap,
+                           v.heatmapBlend,
+                           v.texelGrid};
+    if (heatmapShown_ && *heatmapShown_ == in) return;
+    heatmapShown_ = in;
+    const Side& side = sides_[s];
+    geometry::analysis::Image img;
+    try {
+        if (!side.inspection) {
+            img = placeholder(side.size.width, side.size.height);
+        } else {
+            const geometry::analysis::Inspection& in = *side.inspection;
+            switch (v.heatmap) {
+            case HeatmapKind::Aliasing: img = geometry::analysis::aliasingView(in, side.eye, v.heatmapBlend); break;
+            case HeatmapKind::Truth:
+                img = in.occluded ? geometry::analysis::truthView(in, side.eye, v.heatmapBlend)
+                                  : placeholder(in.width, in.height);
+                break;
+            case HeatmapKind::Splits: img = geometry::analysis::splitsView(side.eye, in, side.plan); break;
+            case HeatmapKind::Texels:
+                img = geometry::analysis::texelsView(side.eye, in, std::max(1, v.texelGrid));
+                break;
+            case HeatmapKind::Difference:
+                img = comparing() && sides_[0].inspection && sides_[1].inspection &&
+                              sides_[0].inspection->width == sides_[1].inspection->width &&
+                              sides_[0].inspection->height == sides_[1].inspection->height
+                          ? geometry::analysis::differenceView(*sides_[0].inspection, *sides_[1].inspection)
+                          : placeholder(in.width, in.height);
+                break;
+            case HeatmapKind::Count: img = placeholder(in.width, in.height); break;
+            }
+        }
+    } catch (const std::exception& e) {
+        status_ = std::string("heatmap: ") + e.what();
+        img = placeholder(side.size.width, side.size.height);
+    }
+    heatmapImage_ = std::move(img);
+    heatmap_.upload(heatmapImage_);
+}
+
+// ---- [SECTION] Scheduling -------------------------------------------------------------------
+
+bool Dashboard::backgroundBusy() const noexcept {
+    return !retiring_.empty() || sides_[0].job || sides_[1].job || loader_.busy() || lodBuild_.valid() ||
+           sweep_.running || recommend_.running;
+}
+
+std::optional<double> Dashboard::nextFrameIn() const {
+    if (drewThisFrame_) return 0.0; // once more, so the panels' text matches the new images
+    const int sides = comparing() ? 2 : 1;
+    for (int i = 0; i < sides; ++i)
+        if (!sides_[i].drawn || *sides_[i].drawn != passInputs(i)) return 0.0;
+    std::optional<double> wait;
+    if (coarse()) {
+        const double since = std::chrono::duration<double>(Clock::now() - lastChange_).count();
+        wait = std::max(0.0, kRefinePause - since);
+    }
+    if (backgroundBusy()) wait = std::min(wait.value_or(0.05), 0.05);
+    return wait;
+}
+
+} // namespace ui
