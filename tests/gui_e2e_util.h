@@ -364,8 +364,13 @@ struct WidgetMap {
     int width = 0, height = 0;
     std::string status;
     std::map<std::string, Rect> widgets;
+    std::map<std::string, double> counters; // e.g. passes.shadow, passes.eye_full, coarse
 
     [[nodiscard]] bool has(const std::string& id) const { return widgets.count(id) != 0; }
+    [[nodiscard]] double counter(const std::string& name) const {
+        const auto it = counters.find(name);
+        return it == counters.end() ? -1.0 : it->second;
+    }
     [[nodiscard]] std::string describe() const {
         std::ostringstream s;
         s << "widget map: frame " << frame << ", window " << width << "x" << height << ", status \"" << status << "\", "
@@ -389,6 +394,8 @@ inline std::optional<WidgetMap> readWidgetMap(const fs::path& file) {
         for (const auto& [id, r] : j.at("widgets").items())
             m.widgets[id] =
                 Rect{r.at(0).get<double>(), r.at(1).get<double>(), r.at(2).get<double>(), r.at(3).get<double>()};
+        if (j.contains("counters"))
+            for (const auto& [name, v] : j.at("counters").items()) m.counters[name] = v.get<double>();
     } catch (const std::exception&) {
         return std::nullopt;
     }

@@ -8,15 +8,19 @@
 // (app stdout/stderr, Xvfb log, widget map, screenshots) and prints where it is; so does every
 // test with SHADOWSCOPE_E2E_KEEP=1. SHADOWSCOPE_E2E_TRACE=1 logs each xdotool command.
 //
-// Synchronisation: the widget map is rewritten whenever its content changes and on every 30th frame,
-// so "n more frames have run" means the map's frame counter reached the next multiple of 30 after
-// its last value, + n - 1 (waitFrames). Everything else waits on what the app shows (status line,
-// map, files), with deadlines.
+// Synchronisation: the widget map is rewritten every frame, and with the hook set the app runs a
+// frame at least every 0.1 s (it otherwise sleeps until input), so "n more frames have run" means
+// the map's frame counter passed its last value + 1 (the frame under way may have polled its events
+// before the input was sent) + n - 1 (waitFrames). Everything else waits on what the app shows
+// (status line, map, pass counters, files), with deadlines.
 #include "gui_e2e_util.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 namespace {
 
@@ -202,11 +206,10 @@ protected:
     }
 
     /// Waits until at least `n` frames have started after the call, i.e. have seen the input sent
-    /// before it. The map read says frame F; the app may be further, but not past the next
-    /// periodic write (the next multiple of 30), else the file would say so.
+    /// before it. The map read says frame F finished; frame F + 1 may have polled its events already.
     void waitFrames(int n) {
         const long last = currentMap().frame;
-        const long target = (last / 30 + 1) * 30 - 1 + n;
+        const long target = last + 1 + n;
         waitForMap(
             std::to_string(n) + " more frames", [&](const WidgetMap& m) { return m.frame >= target; }, scaled(240));
     }
@@ -252,7 +255,7 @@ protected:
             xdo({"mousemove", screenX(12), screenY(before.height * 0.5), "click", button});
             // The map changes when the panel scrolls; at either end nothing changes, so also stop once
             // a frame has seen the wheel (as in waitFrames).
-            const long seen = (before.frame / 30 + 1) * 30;
+            const long seen = before.frame + 2;
             const auto moved = [&](const WidgetMap& m) {
                 if (m.widgets.size() != before.widgets.size()) return true;
                 for (const auto& [id, r] : m.widgets) {
@@ -508,6 +511,110 @@ TEST_F(GuiE2E, CorruptConfigIsIgnored) {
     const auto saved = config();
     ASSERT_TRUE(saved) << "the config was not rewritten: " << readText(configFile_);
     EXPECT_EQ(configSetting("warp.method"), "\"uniform\"");
+}
+
+// Drawing only what changed (issue 18), counted by the passes the dashboard publishes in the
+// widget map: hovering for 2 s draws nothing; a slider change draws one refinement sequence (coarse
+// frames while it moves, then exactly one full frame); Reset camera restores the view pixel for
+// pixel; a near/far edit changes the heatmap.
+TEST_F(GuiE2E, DrawsOnlyWhatChanged) {
+    launch();
+    const auto passes = [](const WidgetMap& m) {
+        return std::array<double, 4>{m.counter("passes.shadow"), m.counter("passes.eye_full"),
+                                     m.counter("passes.eye_coarse"), m.counter("passes.inspections")};
+    };
+    const auto describePasses = [&](const WidgetMap& m) {
+        const auto p = passes(m);
+        return std::to_string(long(p[0])) + " shadow, " + std::to_string(long(p[1])) + " full, " +
+               std::to_string(long(p[2])) + " coarse, " + std::to_string(long(p[3])) + " inspections";
+    };
+    // Settled: full resolution, no statistics under way, and no pass for half a second.
+    const auto settle = [&](const std::string& what) {
+        WidgetMap last = currentMap();
+        auto since = std::chrono::steady_clock::now();
+        return waitForMap("the dashboard to settle " + what, [&](const WidgetMap& m) {
+            if (passes(m) != passes(last)) {
+                last = m;
+                since = std::chrono::steady_clock::now();
+                return false;
+            }
+            return m.counter("coarse") == 0 && m.counter("statistics_pending") == 0 &&
+                   m.counter("passes.inspections") >= 1 &&
+                   std::chrono::steady_clock::now() - since > std::chrono::milliseconds(500);
+        });
+    };
+    xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
+    const WidgetMap start = settle("after start-up");
+    ASSERT_GE(start.counter("passes.eye_full"), 1) << start.describe();
+    const Shots base = screenshot("base");
+
+    // Hover over the eye view, moving, for 2 s.
+    const Rect eye = start.widgets.at("eye_image");
+    const WidgetMap beforeHover = currentMap();
+    for (int i = 0; i < 20; ++i) {
+        xdo({"mousemove", screenX(eye.x + eye.w * 0.3 + 8 * i), screenY(eye.cy())});
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    waitFrames(2);
+    const WidgetMap afterHover = currentMap();
+    std::cout << "[ e2e ] hover 2 s: " << describePasses(beforeHover) << " -> " << describePasses(afterHover) << '\n';
+    EXPECT_EQ(passes(afterHover), passes(beforeHover)) << "hovering must draw no pass";
+
+    // A slider dragged in one gesture: at most coarse frames while it moves, then one full frame.
+    const Rect az = scrollIntoView("sun.azimuth");
+    xdo({"mousemove", screenX(az.x + az.w * 0.5), screenY(az.cy()), "mousedown", "1", "mousemove",
+         screenX(az.x + az.w * 0.55), screenY(az.cy()), "mousemove", screenX(az.x + az.w * 0.6), screenY(az.cy()),
+         "mousemove", screenX(az.x + az.w * 0.65), screenY(az.cy()), "mouseup", "1"});
+    const WidgetMap beforeSlider = afterHover;
+    const WidgetMap afterSlider = settle("after the slider");
+    std::cout << "[ e2e ] slider drag: " << describePasses(beforeSlider) << " -> " << describePasses(afterSlider)
+              << '\n';
+    EXPECT_EQ(afterSlider.counter("passes.eye_full"), beforeSlider.counter("passes.eye_full") + 1)
+        << "exactly one full-resolution frame after the slider stops";
+    EXPECT_GT(afterSlider.counter("passes.shadow"), beforeSlider.counter("passes.shadow")) << "the sun moved";
+
+    xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
+    const Shots home = screenshot("home");
+
+    // Orbit, then Reset camera: the views are those from before the orbit again.
+    // (One step per frame: ImGui sees a press and release within one frame as a click, not a drag.)
+    xdo({"mousemove", screenX(eye.cx()), screenY(eye.cy()), "mousedown", "1"});
+    waitFrames(1);
+    for (int dx : {20, 40, 60, 80}) {
+        xdo({"mousemove", screenX(eye.cx() + dx), screenY(eye.cy() + dx / 8)});
+        waitFrames(1);
+    }
+    xdo({"mouseup", "1"});
+    settle("after the orbit");
+    xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
+    const Shots orbited = screenshot("orbited");
+    const ImageDiff moved = diffImages(home.eye, orbited.eye);
+    std::cout << "[ e2e ] eye view after the orbit: " << moved.describe() << '\n';
+    EXPECT_GT(moved.fraction(), 0.05) << moved.describe();
+    scrollIntoView("camera.reset");
+    click("camera.reset");
+    settle("after Reset camera");
+    xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
+    const Shots reset = screenshot("reset");
+    const ImageDiff back = diffImages(home.eye, reset.eye);
+    std::cout << "[ e2e ] eye view after Reset camera vs before the orbit: " << back.describe() << '\n';
+    EXPECT_EQ(back.differing, 0) << back.describe();
+
+    // near, far: type a new near into the first field; the heatmap (statistics of the new frusta) follows.
+    const Rect nearFar = scrollIntoView("camera.near_far");
+    xdo({"mousemove", screenX(nearFar.x + nearFar.w * 0.15), screenY(nearFar.cy()), "click", "1"});
+    waitFrames(1);
+    pressKey("ctrl+a");
+    typeText("3");
+    pressKey("Return");
+    settle("after the near/far edit");
+    xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
+    const Shots edited = screenshot("near_far");
+    const ImageDiff heat = diffImages(reset.heatmap, edited.heatmap);
+    std::cout << "[ e2e ] heatmap after near = 3: " << heat.describe() << '\n';
+    EXPECT_GT(heat.fraction(), 0.01) << "the heatmap should follow the new near plane: " << heat.describe();
+    EXPECT_EQ(currentMap().status.find("refused"), std::string::npos) << context();
+    closeGracefully();
 }
 
 // The GUI and `shadowscope render --views dashboard` draw the same views with the same pixels.
