@@ -131,7 +131,7 @@ void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
     if (!prepassReady_ || prepassViewProj_ != viewProj || prepassSize_ != glm::ivec2(viewport.width, viewport.height)) {
         timers_.begin(Pass::Prepass);
-        depthPrePass(plan, viewport);
+        depthPrePass(plan, viewport, views.depthPrePass);
     }
     prepassReady_ = false;
     ShadowMapKey maps = shadowMapKey(plan);
@@ -339,7 +339,8 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
 
 /// The eye's depth pre-pass: the heavy eye shader (filter taps, six targets) then runs once per
 /// pixel instead of once per overlapping surface, and focus.mode = samples reduces its depths.
-void Renderer::depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport) {
+void Renderer::depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
+                            bool draw) {
     // 58 bytes per pixel over eight targets; refuse before the driver fails (or swaps) on a huge size.
     const double bytes = 58.0 * viewport.width * viewport.height;
     if (viewport.width > maxTextureSize_ || viewport.height > maxTextureSize_ || bytes > limits_.viewMemoryBytes)
@@ -359,6 +360,8 @@ void Renderer::depthPrePass(const geometry::shadow::ShadowPlan& plan, const geom
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     glDisable(GL_POLYGON_OFFSET_FILL);
+    prepassDrawn_ = draw;
+    if (!draw) return; // the eye pass writes the depth itself (coarse frames: fewer vertices beat less overdraw)
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
     Program& depthOnly = depthProgram("#define EYE_DEPTH\n");
     depthOnly.use();
@@ -387,8 +390,8 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
     const auto inView = [&](const geometry::scene::Aabb& box) {
         return geometry::shadow::intersectsClipVolume(box, viewProj);
     };
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
+    glDepthFunc(prepassDrawn_ ? GL_LEQUAL : GL_LESS);
+    glDepthMask(prepassDrawn_ ? GL_FALSE : GL_TRUE);
     eyeProgram_.use();
     eyeProgram_.set("uViewProj", viewProj);
     const auto& f = plan.filter;

@@ -47,6 +47,9 @@ struct ViewOptions {
     /// Keep the maps drawn by the previous render() when the plan's shadowMapKey() is unchanged
     /// (the dashboard); off for measurements, which time every pass of every frame.
     bool reuseShadowMaps = false;
+    /// Draw the eye's depth pre-pass (else the eye pass writes depth itself: the dashboard's coarse
+    /// frames, where the vertices cost more than the overdraw). focus.mode = samples always has one.
+    bool depthPrePass = true;
 };
 
 struct RendererLimits {
@@ -118,7 +121,8 @@ private:
     void drawCasters(const geometry::shadow::ShadowPlan& plan, int index, Program& program, bool backFacesOnly);
     void peelAndCombine(const geometry::shadow::ShadowPlan& plan);
     void momentsPass(const geometry::shadow::ShadowPlan& plan);
-    void depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport);
+    void depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
+                      bool draw = true);
     void eyePass(const geometry::shadow::ShadowPlan& plan);
     void eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan);
     void lightViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views);
@@ -162,6 +166,7 @@ private:
     [[nodiscard]] const ColorTarget& eyeImage() const noexcept { return eyeTargets_[eyeSlot_].image; }
     std::optional<ShadowMapKey> drawnMaps_;            // what the maps hold now; empty: nothing reusable
     std::unique_ptr<SampleReduction> sampleReduction_; // made on first use
+    bool prepassDrawn_ = true;                         // this frame's eye buffers hold the pre-pass depth
     bool prepassReady_ = false;                        // eyeSamples drew the pre-pass for this camera:
     glm::mat4 prepassViewProj_{1.f};                   // …
     glm::ivec2 prepassSize_{0};                        // … at this size

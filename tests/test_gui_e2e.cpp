@@ -205,6 +205,33 @@ protected:
         return *m;
     }
 
+    /// The dashboard's pass counters: shadow, eye full, eye coarse, inspections.
+    static std::array<double, 4> passes(const WidgetMap& m) {
+        return {m.counter("passes.shadow"), m.counter("passes.eye_full"), m.counter("passes.eye_coarse"),
+                m.counter("passes.inspections")};
+    }
+    static std::string describePasses(const WidgetMap& m) {
+        const auto p = passes(m);
+        return std::to_string(long(p[0])) + " shadow, " + std::to_string(long(p[1])) + " full, " +
+               std::to_string(long(p[2])) + " coarse, " + std::to_string(long(p[3])) + " inspections";
+    }
+
+    /// Waits until the dashboard has settled: full resolution, its statistics in, no pass for 0.5 s.
+    WidgetMap settle(const std::string& what) {
+        WidgetMap last = currentMap();
+        auto since = std::chrono::steady_clock::now();
+        return waitForMap("the dashboard to settle " + what, [&](const WidgetMap& m) {
+            if (passes(m) != passes(last)) {
+                last = m;
+                since = std::chrono::steady_clock::now();
+                return false;
+            }
+            return m.counter("coarse") == 0 && m.counter("statistics_pending") == 0 &&
+                   m.counter("passes.inspections") >= 1 &&
+                   std::chrono::steady_clock::now() - since > std::chrono::milliseconds(500);
+        });
+    }
+
     /// Waits until at least `n` frames have started after the call, i.e. have seen the input sent
     /// before it. The map read says frame F finished; frame F + 1 may have polled its events already.
     void waitFrames(int n) {
@@ -519,30 +546,6 @@ TEST_F(GuiE2E, CorruptConfigIsIgnored) {
 // pixel; a near/far edit changes the heatmap.
 TEST_F(GuiE2E, DrawsOnlyWhatChanged) {
     launch();
-    const auto passes = [](const WidgetMap& m) {
-        return std::array<double, 4>{m.counter("passes.shadow"), m.counter("passes.eye_full"),
-                                     m.counter("passes.eye_coarse"), m.counter("passes.inspections")};
-    };
-    const auto describePasses = [&](const WidgetMap& m) {
-        const auto p = passes(m);
-        return std::to_string(long(p[0])) + " shadow, " + std::to_string(long(p[1])) + " full, " +
-               std::to_string(long(p[2])) + " coarse, " + std::to_string(long(p[3])) + " inspections";
-    };
-    // Settled: full resolution, no statistics under way, and no pass for half a second.
-    const auto settle = [&](const std::string& what) {
-        WidgetMap last = currentMap();
-        auto since = std::chrono::steady_clock::now();
-        return waitForMap("the dashboard to settle " + what, [&](const WidgetMap& m) {
-            if (passes(m) != passes(last)) {
-                last = m;
-                since = std::chrono::steady_clock::now();
-                return false;
-            }
-            return m.counter("coarse") == 0 && m.counter("statistics_pending") == 0 &&
-                   m.counter("passes.inspections") >= 1 &&
-                   std::chrono::steady_clock::now() - since > std::chrono::milliseconds(500);
-        });
-    };
     xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
     const WidgetMap start = settle("after start-up");
     ASSERT_GE(start.counter("passes.eye_full"), 1) << start.describe();
@@ -621,8 +624,10 @@ TEST_F(GuiE2E, DrawsOnlyWhatChanged) {
 TEST_F(GuiE2E, SamePixelsAsHeadless) {
     launch();
     // The cursor on the status bar: no hover highlight over the views. (The frame that sees F12
-    // also sees the pointer there: X delivers the events in order.)
+    // also sees the pointer there: X delivers the events in order.) The statistics behind the
+    // heatmap come from a worker thread: wait for them, as the headless render does.
     xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
+    settle("before the screenshot");
     const Shots gui = screenshot("gui");
     const WidgetMap m = currentMap();
     const fs::path headlessDir = tmp_ / "headless";

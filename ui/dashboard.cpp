@@ -81,6 +81,27 @@ void Dashboard::adoptScene(LoadedScene loaded) {
     status_ = "loaded " + scene_.source + " (" + std::to_string(scene_.file.scene.triangleCount()) + " triangles)";
 }
 
+void Dashboard::applyCameraInput(const FrameInput& input) {
+    const ImGuiIO& io = ImGui::GetIO();
+    flying_ = flyLooking_ && glm::length(input.fly) > 0.f; // right mouse held on the eye view, WASD/QE
+    if (flying_) {
+        const float step = state_.flySpeed * std::clamp(input.deltaSeconds, 0.f, 0.25f);
+        state_.camera.fly(input.fly.z * step, input.fly.x * step, input.fly.y * step);
+    }
+    const glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
+    if (cameraDragging_ && (delta.x != 0.f || delta.y != 0.f)) {
+        const bool left = ImGui::IsMouseDown(ImGuiMouseButton_Left),
+                   middle = ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+        if (left && !io.KeyShift && !io.KeyCtrl) state_.camera.rotate(delta.x, delta.y);
+        else if (middle || (left && io.KeyShift))
+            state_.camera.pan(delta.x, delta.y, cameraAreaHeight_, scene_.file.scene.camera.fovYDeg);
+        else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) state_.camera.look(delta.x, delta.y);
+    }
+    if (cameraHovered_ && io.MouseWheel != 0.f && !io.KeyCtrl) state_.camera.zoom(io.MouseWheel);
+    // Recorded again by this frame's eye panel.
+    cameraHovered_ = cameraDragging_ = flyLooking_ = false;
+}
+
 namespace {
 
 Rect contentArea(const Rect& panel, float header, float pad) noexcept {
@@ -103,7 +124,8 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     lightViewSize_ = std::clamp(int(std::min(lightArea_.w, lightArea_.h)), 16, 2048);
 
     stepCasterLod();
-    renderViews(input);
+    applyCameraInput(input);
+    renderViews();
     stepTradeoffSweep();
     stepRecommend();
     pollInspections();
@@ -132,7 +154,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     // What the next frame draws at: coarse while this frame's input drags, dollies or flies.
     const ImGuiIO& io = ImGui::GetIO();
     const bool dragging = ImGui::IsAnyItemActive() && (io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2]);
-    continuousInput_ = dragging || io.MouseWheel != 0.f || glm::length(input.fly) > 0.f;
+    continuousInput_ = dragging || io.MouseWheel != 0.f || flying_;
     widgetMapCounter("passes.shadow", double(counts_.shadow));
     widgetMapCounter("passes.eye_full", double(counts_.eyeFull));
     widgetMapCounter("passes.eye_coarse", double(counts_.eyeCoarse));

@@ -39,6 +39,9 @@ struct DashboardOptions {
     float uiScale = 1.f;
     std::string view;                       // the canonical view the scene was opened at, if any
     std::optional<geometry::io::UpAxis> up; // --up: model files' up axis, until the Scene group changes it
+    /// Draw both passes at full resolution every frame, as the dashboard did before it drew only what
+    /// changed: the "before" of the dashboard benchmark (tests/bench_dashboard.cpp), not a user option.
+    bool redrawEveryFrame = false;
 };
 
 /// What the window front end reads from its input system for a frame (the dashboard itself
@@ -185,7 +188,7 @@ private:
     void giveCasterLod(renderer::Renderer& r) const;
     [[nodiscard]] std::string casterLodStatus(int side) const;
     // Drawing only what changed (dashboard_frame.cpp).
-    void renderViews(const FrameInput& input);
+    void renderViews();
     [[nodiscard]] PassInputs passInputs(int side) const;
     [[nodiscard]] InspectionInputs inspectionInputs(int side) const;
     void drawSide(int side, const PassInputs& in, int divisor);
@@ -262,6 +265,12 @@ private:
     float targetGammaDeg_ = 30.f;                // the "set γ" control
     int requestedTab_ = -1;
     bool flyLooking_ = false; // right mouse held on the eye view: WASD/QE fly
+    // The eye view's camera controls, recorded by imageArea() and applied at the start of the next
+    // frame, before it draws: a drag step shows in the frame that takes it.
+    bool cameraHovered_ = false, cameraDragging_ = false;
+    float cameraAreaHeight_ = 1.f;
+    bool flying_ = false; // this frame moved the camera with the fly keys
+    void applyCameraInput(const FrameInput& input);
 
     /// The Charts panel's trade-off sweep, one configuration per dashboard frame so the UI stays live.
     struct TradeoffSweep {

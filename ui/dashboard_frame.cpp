@@ -1,4 +1,4 @@
-// Drawing only what changed (docs/design.md §6): each frame compares a side's PassInputs with what
+// Drawing only what changed (docs/design.md §2.6): each frame compares a side's PassInputs with what
 // its images were drawn from and draws again only on a difference, coarse while the user drags and
 // at full resolution once input pauses; the statistics and ground truth of a full-resolution frame
 // are computed on a worker thread and shown when ready; the heatmap is rebuilt only when what it
@@ -20,6 +20,12 @@
 #include <algorithm>
 #include <cmath>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace ui {
 
 namespace {
@@ -37,6 +43,13 @@ geometry::analysis::Image placeholder(int w, int h) {
     img.rgba.assign(size_t(img.width) * img.height * 4, 38);
     for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255;
     return img;
+}
+
+/// Nice 10 for the calling thread (Linux: per thread, inherited by the threads it starts).
+void lowerThreadPriority() noexcept {
+#ifdef __linux__
+    (void)setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+#endif
 }
 
 bool ready(const std::future<geometry::analysis::Inspection>& f) {
@@ -69,14 +82,9 @@ InspectionInputs Dashboard::inspectionInputs(int side) const {
 
 // ---- [SECTION] Drawing ----------------------------------------------------------------------
 
-void Dashboard::renderViews(const FrameInput& input) {
+void Dashboard::renderViews() {
     drewThisFrame_ = false;
     geometry::scene::Scene& scene = scene_.file.scene;
-    const bool flying = flyLooking_ && glm::length(input.fly) > 0.f;
-    if (flying) {
-        const float step = state_.flySpeed * std::clamp(input.deltaSeconds, 0.f, 0.25f);
-        state_.camera.fly(input.fly.z * step, input.fly.x * step, input.fly.y * step);
-    }
     state_.camera.applyTo(scene.camera);
     scene.light.direction = state_.sun.direction();
 
@@ -93,12 +101,12 @@ void Dashboard::renderViews(const FrameInput& input) {
         if (!side.renderer) side.renderer = std::make_unique<renderer::Renderer>(scene);
         giveCasterLod(*side.renderer);
         inputs[i] = passInputs(i);
-        changed[i] = !side.drawn || *side.drawn != inputs[i];
+        changed[i] = !side.drawn || *side.drawn != inputs[i] || options_.redrawEveryFrame;
         anyChanged = anyChanged || changed[i];
     }
     if (anyChanged) lastChange_ = now;
     const double since = std::chrono::duration<double>(now - lastChange_).count();
-    const bool continuous = continuousInput_ || flying;
+    const bool continuous = (continuousInput_ || flying_) && !options_.redrawEveryFrame;
     for (int i = 0; i < sides; ++i) {
         const Draw draw = decideDraw(changed[i], continuous, sides_[i].coarseDivisor > 1, since);
         if (draw == Draw::None) continue;
@@ -130,15 +138,19 @@ void Dashboard::drawSide(int i, const PassInputs& in, int divisor) {
     const geometry::shadow::Viewport size{std::max(8, full.width / divisor), std::max(8, full.height / divisor)};
     try {
         double us = 0;
-        // The plan at the drawn size (focus.mode = samples reduces that pre-pass); the aspect is the same.
-        side.plan = renderer::planFrame(*side.renderer, in.settings, scene.bounds(), in.camera, scene.light, size, &us);
+        // Planned for the full view, so the full frame that refines a coarse one keeps its maps; with
+        // focus.mode = samples the plan comes from the samples of the pre-pass at the drawn size.
+        const bool samples = in.settings.focus == geometry::shadow::FocusMode::Samples;
+        side.plan = renderer::planFrame(*side.renderer, in.settings, scene.bounds(), in.camera, scene.light,
+                                        samples ? size : full, &us);
         side.planMicroseconds.add(us);
         renderer::ViewOptions v;
         v.lightViewSize = in.lightViewSize;
         v.lightSplit = std::clamp(in.lightSplit, 0, std::max(0, int(side.plan.splits.size()) - 1));
         v.overlays = in.overlays;
         v.unwarped = in.unwarped;
-        v.reuseShadowMaps = true;
+        v.reuseShadowMaps = !options_.redrawEveryFrame;
+        v.depthPrePass = divisor == 1;
         side.renderer->render(side.plan, size, v);
         const renderer::FrameStats& st = side.renderer->stats();
         if (!st.shadowMapsReused) ++counts_.shadow;
@@ -189,6 +201,7 @@ void Dashboard::startInspection(int i, const InspectionInputs& in) {
         const int samples = std::max(1, in.truthSamples);
         job.result = std::async(std::launch::async, [frame = std::move(frame), plan = job.plan, truth, samples,
                                                      stop = job.stop.get_token()]() mutable {
+            lowerThreadPriority(); // the UI thread (and its GL) first; the truth's threads inherit it
             return geometry::analysis::makeInspection(std::move(frame), plan, truth, samples, stop);
         });
         side.job = std::move(job);

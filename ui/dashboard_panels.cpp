@@ -89,23 +89,20 @@ std::optional<glm::ivec2> Dashboard::imageArea(ViewPanel panel, GLuint texture, 
     const bool hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
     const ImGuiIO& io = ImGui::GetIO();
     const glm::vec2 mouse(io.MousePos.x, io.MousePos.y), delta(io.MouseDelta.x, io.MouseDelta.y);
-    if (hovered && io.MouseWheel != 0.f) {
-        if (cameraControls && !io.KeyCtrl) state_.camera.zoom(io.MouseWheel);
-        else view = zoomAround(view, area, w, h, mouse, std::pow(1.25f, io.MouseWheel));
+    // The camera moves in applyCameraInput(), before the frame draws, from what this records; the
+    // image's own zoom and pan (ctrl, and the other panels) happen here.
+    if (cameraControls) {
+        cameraHovered_ = cameraHovered_ || hovered;
+        cameraDragging_ = cameraDragging_ || active;
+        cameraAreaHeight_ = area.h;
+        flyLooking_ = flyLooking_ || (active && ImGui::IsMouseDown(ImGuiMouseButton_Right));
     }
-    if (cameraControls) flyLooking_ = active && ImGui::IsMouseDown(ImGuiMouseButton_Right);
+    if (hovered && io.MouseWheel != 0.f && (!cameraControls || io.KeyCtrl))
+        view = zoomAround(view, area, w, h, mouse, std::pow(1.25f, io.MouseWheel));
     if (active && (delta.x != 0.f || delta.y != 0.f)) {
         const bool left = ImGui::IsMouseDown(ImGuiMouseButton_Left),
                    middle = ImGui::IsMouseDown(ImGuiMouseButton_Middle);
-        if (cameraControls) {
-            if (left && !io.KeyShift && !io.KeyCtrl) state_.camera.rotate(delta.x, delta.y);
-            else if (middle || (left && io.KeyShift))
-                state_.camera.pan(delta.x, delta.y, area.h, scene_.file.scene.camera.fovYDeg);
-            else if (left && io.KeyCtrl) view = panBy(view, area, w, h, delta);
-            else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) state_.camera.look(delta.x, delta.y);
-        } else if (left || middle) {
-            view = panBy(view, area, w, h, delta);
-        }
+        if (cameraControls ? left && io.KeyCtrl : left || middle) view = panBy(view, area, w, h, delta);
     }
     if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) view = ImageView{};
     ImDrawList* dl = ImGui::GetWindowDrawList();

@@ -1,6 +1,6 @@
 #pragma once
 // What the dashboard's drawing and inspection of one side depend on, as plain comparable values
-// (docs/design.md §6 "Drawing only what changed"): a side is drawn again only when its PassInputs
+// (docs/design.md §2.6): a side is drawn again only when its PassInputs
 // change, inspected again only when its InspectionInputs change, and the heatmap rebuilt only when
 // its HeatmapInputs change. Hover, zoom, pan, tab switches and idle frames change none of them.
 #include "dashboard_state.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Progressive refinement of the eye view (docs/design.md §6): while the user drags, the eye pass
+// Progressive refinement of the eye view (docs/design.md §2.6): while the user drags, the eye pass
 // runs at a reduced resolution chosen to fit a frame-time budget; when input pauses it runs once
 // at full resolution. Pure decisions on plain values.
 namespace ui {

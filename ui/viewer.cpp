@@ -156,9 +156,9 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
         }
         glfwSwapBuffers(w);
         const ImGuiIO& io = ImGui::GetIO();
+        // (A pointer that only moves needs no extra frame: its hover shows in the frame that took it.)
         const bool active = io.MouseWheel != 0.f || io.WantTextInput || ImGui::IsAnyItemActive() || io.MouseDown[0] ||
-                            io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot ||
-                            io.MouseDelta.x != 0.f || io.MouseDelta.y != 0.f;
+                            io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
         settleFrames = active ? 2 : std::max(0, settleFrames - 1);
         if (now - lastSave > std::chrono::seconds(1)) {
             saveConfig(false);
