@@ -1,6 +1,7 @@
 // The dashboard drawn headless (OSMesa): every panel has content, and each setting changes the
 // panels it should and no other.
 #include "app/dashboard_setup.h"
+#include "dashboard_test_util.h"
 #include "renderer/context.h"
 #include "ui/dashboard_headless.h"
 
@@ -37,14 +38,7 @@ Region stats(const geometry::analysis::Image& img, const ui::Rect& r) {
     return out;
 }
 
-/// Pixels that differ between two images inside r.
-size_t differing(const geometry::analysis::Image& a, const geometry::analysis::Image& b, const ui::Rect& r) {
-    size_t n = 0;
-    for (int y = int(r.y); y < int(r.bottom()); ++y)
-        for (int x = int(r.x); x < int(r.right()); ++x)
-            if (std::memcmp(a.at(x, y), b.at(x, y), 3) != 0) ++n;
-    return n;
-}
+using testutil::differing;
 
 /// Fraction of near-white pixels inside r.
 double stats_of_white(const geometry::analysis::Image& img, const ui::Rect& r) {

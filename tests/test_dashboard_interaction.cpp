@@ -3,6 +3,7 @@
 // Reset camera restores the view, and a near/far edit re-inspects. Headless (OSMesa), with the
 // pointer driven through HeadlessDashboard::step.
 #include "app/dashboard_setup.h"
+#include "dashboard_test_util.h"
 #include "renderer/context.h"
 #include "ui/dashboard_headless.h"
 
@@ -14,13 +15,7 @@
 
 namespace {
 
-size_t differing(const geometry::analysis::Image& a, const geometry::analysis::Image& b, const ui::Rect& r) {
-    size_t n = 0;
-    for (int y = int(r.y); y < int(r.bottom()); ++y)
-        for (int x = int(r.x); x < int(r.right()); ++x)
-            if (std::memcmp(a.at(x, y), b.at(x, y), 3) != 0) ++n;
-    return n;
-}
+using testutil::differing;
 
 bool operator==(const ui::PassCounts& a, const ui::PassCounts& b) {
     return a.shadow == b.shadow && a.eyeFull == b.eyeFull && a.eyeCoarse == b.eyeCoarse &&

@@ -4,7 +4,9 @@
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/scene/builtin_scenes.h"
 
+#include "cancel_test_util.h"
 #include <glm/gtc/matrix_transform.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -639,41 +641,19 @@ TEST(GroundTruthCancel, AStopRequestedBeforeTheCallThrowsCancelled) {
 // The dashboard abandons a stale truth: a stop ~20 ms into a run of 5.3M coverage samples (two
 // threads) ends it within a task of a few hundred rays, long before the run would have finished.
 TEST(GroundTruthCancel, AStopFromAnotherThreadEndsCoverageEarly) {
-    using Clock = std::chrono::steady_clock;
-    const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
     constexpr int kW = 384, kH = 216, kSamples = 8, kThreads = 2;
     const GroundTruth& truth = platformTruth();
     const glm::mat4 vp = platformViewProj(kW, kH);
     const glm::vec3 l = platformScene().light.l();
-
-    auto start = Clock::now();
-    const auto full = truth.coverage(vp, kW, kH, l, kSamples, kThreads);
-    const double uncancelled = seconds(Clock::now() - start);
-    ASSERT_EQ(full.size(), size_t(kW * kH));
-
-    // 20 ms, or a tenth of the whole run on a machine that needs less than 0.2 s for it.
-    const auto delay = std::min<Clock::duration>(
-        std::chrono::milliseconds(20),
-        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(uncancelled / 10.0)));
-    std::stop_source source;
-    bool cancelled = false;
-    start = Clock::now();
-    std::jthread stopper([&] {
-        std::this_thread::sleep_for(delay);
-        source.request_stop();
-    });
-    try {
-        (void)truth.coverage(vp, kW, kH, l, kSamples, kThreads, source.get_token());
-    } catch (const Cancelled&) {
-        cancelled = true;
-    }
-    const double cancelledAfter = seconds(Clock::now() - start);
-    stopper.join();
-    RecordProperty("uncancelled_ms", std::to_string(uncancelled * 1e3));
-    RecordProperty("cancelled_ms", std::to_string(cancelledAfter * 1e3));
-    EXPECT_TRUE(cancelled) << "the run ended in " << cancelledAfter * 1e3 << " ms without noticing the stop";
-    EXPECT_LT(cancelledAfter, 0.5 * uncancelled)
-        << "cancelled after " << cancelledAfter * 1e3 << " ms; the whole run takes " << uncancelled * 1e3 << " ms";
+    size_t size = 0;
+    const testutil::CancelTiming t = testutil::timeCancellation(
+        [&](std::stop_token stop) { size = truth.coverage(vp, kW, kH, l, kSamples, kThreads, stop).size(); });
+    ASSERT_EQ(size, size_t(kW * kH));
+    RecordProperty("uncancelled_ms", std::to_string(t.uncancelledMs));
+    RecordProperty("cancelled_ms", std::to_string(t.cancelledMs));
+    EXPECT_TRUE(t.cancelled) << "the run ended in " << t.cancelledMs << " ms without noticing the stop";
+    EXPECT_LT(t.cancelledMs, 0.5 * t.uncancelledMs)
+        << "cancelled after " << t.cancelledMs << " ms; the whole run takes " << t.uncancelledMs << " ms";
 }
 
 // A token that is never stopped changes nothing: every result equals the call without one, bit for bit.

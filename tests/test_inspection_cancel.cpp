@@ -5,6 +5,8 @@
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/shadow/shadow_plan.h"
 
+#include "cancel_test_util.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -89,39 +91,18 @@ TEST(InspectionTruthCancel, AStopRequestedBeforeTheCallThrowsCancelled) {
 // makeInspection passes the token on to the truth: a stop ~20 ms into an inspection with 8 × 8
 // truth samples per pixel (two cores: coverage() dominates) ends it long before it would finish.
 TEST(InspectionTruthCancel, AStopFromAnotherThreadEndsMakeInspectionEarly) {
-    using Clock = std::chrono::steady_clock;
-    const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
     const Frame f = platformFrame(320, 180);
     const GroundTruth& truth = platformTruth();
-
-    auto start = Clock::now();
-    const Inspection full = makeInspection(f.readback, f.plan, &truth, 8);
-    const double uncancelled = seconds(Clock::now() - start);
-    ASSERT_TRUE(full.truthClasses.has_value());
-
-    // 20 ms, or a tenth of the whole run on a machine that needs less than 0.2 s for it.
-    const auto delay = std::min<Clock::duration>(
-        std::chrono::milliseconds(20),
-        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(uncancelled / 10.0)));
-    std::stop_source source;
-    bool cancelled = false;
-    start = Clock::now();
-    std::jthread stopper([&] {
-        std::this_thread::sleep_for(delay);
-        source.request_stop();
+    bool classes = false;
+    const testutil::CancelTiming t = testutil::timeCancellation([&](std::stop_token stop) {
+        classes = makeInspection(f.readback, f.plan, &truth, 8, stop).truthClasses.has_value();
     });
-    try {
-        (void)makeInspection(f.readback, f.plan, &truth, 8, source.get_token());
-    } catch (const Cancelled&) {
-        cancelled = true;
-    }
-    const double cancelledAfter = seconds(Clock::now() - start);
-    stopper.join();
-    RecordProperty("uncancelled_ms", std::to_string(uncancelled * 1e3));
-    RecordProperty("cancelled_ms", std::to_string(cancelledAfter * 1e3));
-    EXPECT_TRUE(cancelled) << "the run ended in " << cancelledAfter * 1e3 << " ms without noticing the stop";
-    EXPECT_LT(cancelledAfter, 0.5 * uncancelled)
-        << "cancelled after " << cancelledAfter * 1e3 << " ms; the whole run takes " << uncancelled * 1e3 << " ms";
+    ASSERT_TRUE(classes);
+    RecordProperty("uncancelled_ms", std::to_string(t.uncancelledMs));
+    RecordProperty("cancelled_ms", std::to_string(t.cancelledMs));
+    EXPECT_TRUE(t.cancelled) << "the run ended in " << t.cancelledMs << " ms without noticing the stop";
+    EXPECT_LT(t.cancelledMs, 0.5 * t.uncancelledMs)
+        << "cancelled after " << t.cancelledMs << " ms; the whole run takes " << t.uncancelledMs << " ms";
 }
 
 // A token that is never stopped changes nothing: the same fields, bit for bit, and the same metrics.
