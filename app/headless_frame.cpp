@@ -5,14 +5,20 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 namespace app {
 
 int lightViewSize(int shadowRes) noexcept { return std::clamp(shadowRes, 16, 1024); }
 
 HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames, renderer::ViewOptions views) {
+    return renderHeadless(loadScene(options), options, warmupFrames, views);
+}
+
+HeadlessFrame renderHeadless(geometry::scene::Scene scene, const RenderOptions& options, int warmupFrames,
+                             renderer::ViewOptions views) {
     HeadlessFrame f;
-    f.scene = loadScene(options);
+    f.scene = std::move(scene);
     f.context = renderer::createHeadlessContext(renderer::parseBackend(options.backend));
     const geometry::shadow::ShadowSettings& settings = options.settings;
     f.renderer = std::make_unique<renderer::Renderer>(f.scene);

@@ -19,6 +19,9 @@ struct HeadlessFrame {
 /// Renders `warmupFrames` + 1 frames of the options' scene and waits for GPU timings.
 [[nodiscard]] HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames = 1,
                                            renderer::ViewOptions views = {});
+/// The same for a scene already loaded (and seen from the options' view): options.scene is not read.
+[[nodiscard]] HeadlessFrame renderHeadless(geometry::scene::Scene scene, const RenderOptions& options,
+                                           int warmupFrames = 1, renderer::ViewOptions views = {});
 
 /// Edge of the square light-view image for a shadow-map resolution.
 [[nodiscard]] int lightViewSize(int shadowRes) noexcept;

@@ -20,6 +20,7 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace app {
 
@@ -138,15 +139,27 @@ bool wants(const ExportOptions& e, const std::string& view) {
 
 } // namespace
 
-int runRender(const RenderOptions& o, const ExportOptions& e) {
+void validateExports(const ExportOptions& e) {
     if (wants(e, "truth") && !e.truth.enabled) throw std::invalid_argument("--views truth needs --truth");
     if (wants(e, "pixels") && !e.truth.enabled) throw std::invalid_argument("--views pixels needs --truth");
+}
+
+int runRender(const RenderOptions& o, const ExportOptions& e) {
+    validateExports(e);
+    const RenderOutput output = renderInto(loadScene(o), o, e);
+    for (const auto& warning : output.warnings) std::cerr << "shadowscope: warning: " << warning << '\n';
+    for (const auto& path : output.written) std::cout << path << '\n';
+    return 0;
+}
+
+RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, const ExportOptions& e) {
+    validateExports(e);
     renderer::ViewOptions views;
     views.lightViewSize = lightViewSize(o.settings.resolution);
     views.lightSplit = e.lightSplit;
     views.unwarped = wants(e, "light_unwarped");
     views.depthRange = e.depthRange;
-    const HeadlessFrame f = renderHeadless(o, 1, views);
+    const HeadlessFrame f = renderHeadless(std::move(scene), o, 1, views);
     if (e.lightSplit >= int(f.plan.splits.size()))
         throw std::invalid_argument("--light-split " + std::to_string(e.lightSplit) + ": the plan has " +
                                     std::to_string(f.plan.splits.size()) + " split(s)");
@@ -158,7 +171,7 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     std::unique_ptr<geometry::analysis::GroundTruth> truth;
     if (e.truth.enabled) truth = std::make_unique<geometry::analysis::GroundTruth>(f.scene);
     const Inspection in = inspect(*f.renderer, f.plan, truth.get(), e.truth.samples);
-    const geometry::analysis::Image eye = f.renderer->readEye();
+    geometry::analysis::Image eye = f.renderer->readEye();
     if (wants(e, "eye")) w.png("eye.png", eye);
     if (wants(e, "light")) {
         geometry::analysis::Image light = f.renderer->readLight();
@@ -205,9 +218,7 @@ int runRender(const RenderOptions& o, const ExportOptions& e) {
     w.written.push_back(metrics);
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
-    for (const auto& warning : f.renderer->stats().warnings) std::cerr << "shadowscope: warning: " << warning << '\n';
-    for (const auto& path : w.written) std::cout << path << '\n';
-    return 0;
+    return {std::move(j), std::move(w.written), std::move(eye), f.renderer->stats().warnings};
 }
 
 } // namespace app

@@ -1,8 +1,9 @@
 #pragma once
+#include "geometry/analysis/image.h"
 #include "render_options.h"
 
 #include <glm/glm.hpp>
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -34,6 +35,24 @@ void addExportOptions(CLI::App& cmd, ExportOptions& options);
 /// `shadowscope render`: writes one PNG per view (plus PFM raw values for aliasing, the shadow
 /// factor and truth) and DIR/metrics.json; prints the paths.
 int runRender(const RenderOptions& options, const ExportOptions& exports = {});
+
+/// Throws std::invalid_argument when `exports` asks for views it cannot make (truth views without truth).
+void validateExports(const ExportOptions& exports);
+
+/// What one `render` wrote into options.out.
+struct RenderOutput {
+    nlohmann::json metrics;            // the content of metrics.json
+    std::vector<std::string> written;  // every file's path, metrics.json last
+    geometry::analysis::Image eye;     // the eye view (written as eye.png when exports ask for it)
+    std::vector<std::string> warnings; // the renderer's, not printed
+};
+
+/// The work of runRender on a scene already loaded and viewed (loadScene(options)), printing
+/// nothing: renders one frame, writes the exports and metrics.json into options.out (created).
+/// Throws std::invalid_argument for options the frame cannot honour (--light-split beyond the
+/// plan's splits), std::runtime_error when a file cannot be written or GL reports an error.
+[[nodiscard]] RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& options,
+                                      const ExportOptions& exports);
 
 /// metrics.json content for a rendered frame.
 [[nodiscard]] nlohmann::json frameMetrics(const HeadlessFrame& frame, const RenderOptions& options);

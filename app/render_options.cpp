@@ -202,14 +202,7 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
         "--size", [&o](const std::string& s) { o.size = parseSize(s); },
         "Image size WxH (default " + std::to_string(o.size.width) + "x" + std::to_string(o.size.height) + ")");
     cmd.add_option("--out", o.out, "Output folder")->capture_default_str();
-    if (bench)
-        cmd.add_option("--backend", o.backend, "GL backend: auto (EGL on a GPU, else OSMesa), osmesa, egl")
-            ->capture_default_str()
-            ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
-    else
-        cmd.add_option("--backend", o.backend, "GL backend: auto (EGL on a GPU, else OSMesa), osmesa, egl, glfw")
-            ->capture_default_str()
-            ->check(CLI::IsMember({"auto", "osmesa", "egl", "glfw"}));
+    addBackendOption(cmd, o.backend, !bench);
     if (bench) {
         cmd.add_option("--preset", o.presets, "A configuration from a JSON preset (repeatable; default: the defaults)")
             ->type_name("FILE");
@@ -240,6 +233,17 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
     addSettingSources(cmd, o);
 }
 
+void addBackendOption(CLI::App& cmd, std::string& backend, bool window) {
+    if (window)
+        cmd.add_option("--backend", backend, "GL backend: auto (EGL on a GPU, else OSMesa), osmesa, egl, glfw")
+            ->capture_default_str()
+            ->check(CLI::IsMember({"auto", "osmesa", "egl", "glfw"}));
+    else
+        cmd.add_option("--backend", backend, "GL backend: auto (EGL on a GPU, else OSMesa), osmesa, egl")
+            ->capture_default_str()
+            ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+}
+
 void addTruthOptions(CLI::App& cmd, TruthOptions& truth, const std::string& truthHelp) {
     if (!truthHelp.empty()) cmd.add_flag("--truth", truth.enabled, truthHelp);
     cmd.add_option("--truth-samples", truth.samples,
@@ -255,12 +259,12 @@ void addSettingOption(CLI::App& cmd, geometry::shadow::ShadowSettings& settings)
     });
 }
 
-geometry::io::SceneFile loadSceneFile(const RenderOptions& o) {
-    geometry::io::SceneFile file;
-    {
-        LoadProgress progress(std::filesystem::path(o.scene).filename().string());
-        file = geometry::io::resolveScene(findResource(o.scene), std::ref(progress), o.up);
-    }
+geometry::io::SceneFile resolveSceneFile(const RenderOptions& o) {
+    LoadProgress progress(std::filesystem::path(o.scene).filename().string());
+    return geometry::io::resolveScene(findResource(o.scene), std::ref(progress), o.up);
+}
+
+void applyView(geometry::io::SceneFile& file, const RenderOptions& o) {
     geometry::scene::Scene& scene = file.scene;
     if (!o.view.empty()) {
         const auto it = file.views.find(o.view);
@@ -273,6 +277,11 @@ geometry::io::SceneFile loadSceneFile(const RenderOptions& o) {
         scene.camera.target = o.camera->target;
     }
     if (o.light) scene.light.direction = *o.light;
+}
+
+geometry::io::SceneFile loadSceneFile(const RenderOptions& o) {
+    geometry::io::SceneFile file = resolveSceneFile(o);
+    applyView(file, o);
     return file;
 }
 

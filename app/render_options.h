@@ -63,6 +63,10 @@ void addTruthOptions(CLI::App& cmd, TruthOptions& truth, const std::string& trut
 /// --up AXIS (y, z, -y, -z, x, -x) into `up`; another value is a CLI error (exit 2).
 void addUpOption(CLI::App& cmd, std::optional<geometry::io::UpAxis>& up, const std::string& help);
 
+/// --backend NAME into `backend`: auto (EGL on a GPU, else OSMesa), osmesa, egl, and with `window` also glfw;
+/// another value is a CLI error (exit 2).
+void addBackendOption(CLI::App& cmd, std::string& backend, bool window);
+
 /// Adds the repeatable --set key=value option for shadow settings (keys from settingsDeclaration()),
 /// applied directly to `settings`; for commands without --preset.
 void addSettingOption(CLI::App& cmd, geometry::shadow::ShadowSettings& settings);
@@ -75,5 +79,10 @@ void addSettingOption(CLI::App& cmd, geometry::shadow::ShadowSettings& settings)
 [[nodiscard]] geometry::scene::Scene loadScene(const RenderOptions& options);
 /// loadScene() keeping the whole scene file (its canonical views and paths) around the scene.
 [[nodiscard]] geometry::io::SceneFile loadSceneFile(const RenderOptions& options);
+/// loadSceneFile() in two steps, for a command that renders one scene from several views: the scene
+/// as its file describes it (options.scene and options.up only; throws std::runtime_error), then
+/// options.view, camera and light applied to it (throws std::invalid_argument for an unknown view).
+[[nodiscard]] geometry::io::SceneFile resolveSceneFile(const RenderOptions& options);
+void applyView(geometry::io::SceneFile& file, const RenderOptions& options);
 
 } // namespace app
