@@ -1,5 +1,6 @@
 // shadowscope: inspect, tune and document real-time shadows on CAD models.
 #include "bench_command.h"
+#include "check_command.h"
 #include "curves_command.h"
 #include "gui_command.h"
 #include "mesh_command.h"
@@ -55,6 +56,12 @@ int main(int argc, char** argv) {
                                                 "tune.csv, tune.svg/png");
     app::addTuneCommand(*tune, tuneOptions);
 
+    app::CheckOptions checkOptions;
+    CLI::App* check = cli.add_subcommand("check", "Render the cases of a check file and test their metrics.json "
+                                                  "against bounds and their eye view against golden images "
+                                                  "(exit 0 all pass, 1 a case fails, 2 a bad check file)");
+    app::addCheckCommand(*check, checkOptions);
+
     try {
         cli.parse(argc, argv);
         if (mesh->parsed()) return app::runMesh(*mesh, meshOptions);
@@ -63,6 +70,7 @@ int main(int argc, char** argv) {
         if (sweep->parsed()) return app::runSweep(*sweep, sweepOptions);
         if (bench->parsed()) return app::runBench(benchOptions);
         if (tune->parsed()) return app::runTune(tuneOptions);
+        if (check->parsed()) return app::runCheck(checkOptions);
         return app::runGuiOrHeadless(guiOptions);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);

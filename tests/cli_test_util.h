@@ -2,9 +2,13 @@
 // Running the shadowscope executable from tests (SHADOWSCOPE_EXE is set by tests/CMakeLists.txt).
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace testutil {
 
@@ -22,6 +26,32 @@ inline CommandResult runShadowscope(const std::string& args) {
     while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
     const int status = pclose(pipe);
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+/// One run's exit code, stdout and stderr apart.
+struct SplitResult {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+/// runShadowscope() with stderr kept apart from stdout (through a file in the temp folder).
+inline SplitResult runShadowscopeSplit(const std::string& args) {
+    SplitResult r;
+    std::string errPath = (std::filesystem::temp_directory_path() / "shadowscope_stderr_XXXXXX").string();
+    const int fd = mkstemp(errPath.data());
+    if (fd < 0) return r;
+    close(fd);
+    const std::string cmd = std::string(SHADOWSCOPE_EXE) + " " + args + " 2>" + errPath;
+    if (FILE* pipe = popen(cmd.c_str(), "r")) {
+        std::array<char, 4096> buf{};
+        while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.out.append(buf.data(), n);
+        const int status = pclose(pipe);
+        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    std::ifstream in(errPath, std::ios::binary);
+    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    std::filesystem::remove(errPath);
     return r;
 }
 

@@ -1,0 +1,27 @@
+#pragma once
+// `shadowscope check FILE.json`: renders each case of a check file (app/check_file.h) as `render`
+// would, checks its metrics.json against the case's expectations and its eye view against a golden
+// image, and reports: a summary on stdout, one line per failure on stderr, DIR/report.html, and a
+// JUnit XML file for CI. Exit 0 when every case passes, 1 when one fails, 2 for a bad check file.
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace app {
+
+struct CheckOptions {
+    std::string file;              // the check file
+    std::string out = "out/check"; // DIR: DIR/CASE/ per case, DIR/report.html
+    std::string junit;             // JUnit XML file; empty: none
+    bool update = false;           // write each case's eye view as its golden
+    std::string backend = "auto";
+};
+
+/// Adds FILE, --out, --junit, --update, --backend.
+void addCheckCommand(CLI::App& cmd, CheckOptions& options);
+
+int runCheck(const CheckOptions& options);
+
+} // namespace app

@@ -1,0 +1,159 @@
+#include "check_report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace app {
+
+size_t CaseReport::failed() const noexcept {
+    return size_t(std::count_if(verdicts.begin(), verdicts.end(), [](const Verdict& v) { return !v.passed; }));
+}
+
+const char* CaseReport::status() const noexcept {
+    if (!error.empty()) return "error";
+    return failed() ? "FAIL" : "pass";
+}
+
+std::string xmlEscape(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (const char ch : text) {
+        switch (ch) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&apos;"; break;
+        case '\t':
+        case '\n':
+        case '\r': out += ch; break;
+        default: out += (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ? '?' : ch;
+        }
+    }
+    return out;
+}
+
+namespace {
+
+std::string seconds(double s, const char* format) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, format, s);
+    return buf;
+}
+
+double totalSeconds(const std::vector<CaseReport>& cases) {
+    double t = 0;
+    for (const auto& c : cases) t += c.seconds;
+    return t;
+}
+
+} // namespace
+
+std::string summaryTable(const std::vector<CaseReport>& cases) {
+    size_t width = 4; // "case"
+    for (const auto& c : cases) width = std::max(width, c.name.size());
+    std::ostringstream out;
+    const auto row = [&](const std::string& name, const std::string& verdict, const std::string& failed,
+                         const std::string& time) {
+        out << name << std::string(width - name.size() + 2, ' ') << verdict
+            << std::string(verdict.size() < 9 ? 9 - verdict.size() : 1, ' ') << failed
+            << std::string(failed.size() < 8 ? 8 - failed.size() : 1, ' ') << time << '\n';
+    };
+    row("case", "verdict", "failed", "time");
+    size_t passed = 0;
+    for (const auto& c : cases) {
+        row(c.name, c.status(), c.error.empty() ? std::to_string(c.failed()) : "-", seconds(c.seconds, "%.2f s"));
+        passed += c.passed();
+    }
+    out << cases.size() << " case(s): " << passed << " passed, " << cases.size() - passed << " failed\n";
+    return out.str();
+}
+
+std::string htmlReport(const std::string& title, const std::vector<CaseReport>& cases) {
+    std::ostringstream out;
+    size_t passed = 0;
+    for (const auto& c : cases) passed += c.passed();
+    out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << xmlEscape(title) << "</title>\n"
+        << "<style>body{font-family:sans-serif;margin:1.5em}table{border-collapse:collapse}"
+           "td,th{border:1px solid #ccc;padding:2px 8px;text-align:left}.pass{color:#070}.FAIL,.error{color:#b00}"
+           "figure{display:inline-block;margin:0 1em 1em 0;vertical-align:top}img{max-width:480px;"
+           "image-rendering:pixelated;border:1px solid #999}section{margin-bottom:2em}</style></head><body>\n"
+        << "<h1>" << xmlEscape(title) << "</h1>\n<p>" << cases.size() << " case(s): " << passed << " passed, "
+        << cases.size() - passed << " failed</p>\n<table><tr><th>case</th><th>verdict</th><th>failed checks</th>"
+        << "<th>time</th></tr>\n";
+    for (const auto& c : cases)
+        out << "<tr><td><a href=\"#" << xmlEscape(c.name) << "\">" << xmlEscape(c.name) << "</a></td><td class=\""
+            << c.status() << "\">" << c.status() << "</td><td>" << c.failed() << "</td><td>"
+            << seconds(c.seconds, "%.2f s") << "</td></tr>\n";
+    out << "</table>\n";
+    for (const auto& c : cases) {
+        out << "<section id=\"" << xmlEscape(c.name) << "\"><h2>" << xmlEscape(c.name) << " <span class=\""
+            << c.status() << "\">" << c.status() << "</span></h2>\n";
+        if (!c.facts.empty()) {
+            out << "<p>";
+            for (size_t i = 0; i < c.facts.size(); ++i)
+                out << (i ? " · " : "") << xmlEscape(c.facts[i].first) << ": " << xmlEscape(c.facts[i].second);
+            out << "</p>\n";
+        }
+        if (!c.error.empty()) out << "<p class=\"error\">error: " << xmlEscape(c.error) << "</p>\n";
+        if (!c.verdicts.empty()) {
+            out << "<table><tr><th>check</th><th>verdict</th><th>figures</th></tr>\n";
+            for (const auto& v : c.verdicts)
+                out << "<tr><td>" << xmlEscape(v.what) << "</td><td class=\"" << (v.passed ? "pass" : "FAIL") << "\">"
+                    << (v.passed ? "pass" : "FAIL") << "</td><td>" << xmlEscape(v.text) << "</td></tr>\n";
+            out << "</table>\n";
+        }
+        for (const auto& [label, image] : {std::pair<const char*, const std::string&>{"render", c.render},
+                                           {"golden", c.golden},
+                                           {"diff (magenta: pixels beyond the tolerance)", c.diff}})
+            if (!image.empty())
+                out << "<figure><a href=\"" << xmlEscape(image) << "\"><img src=\"" << xmlEscape(image) << "\" alt=\""
+                    << label << "\"></a><figcaption>" << label << "</figcaption></figure>\n";
+        out << "</section>\n";
+    }
+    out << "</body></html>\n";
+    return out.str();
+}
+
+std::string junitXml(const std::string& suite, const std::vector<CaseReport>& cases) {
+    size_t failures = 0, errors = 0;
+    for (const auto& c : cases) {
+        if (!c.error.empty()) ++errors;
+        else if (c.failed()) ++failures;
+    }
+    const std::string counts = "tests=\"" + std::to_string(cases.size()) + "\" failures=\"" + std::to_string(failures) +
+                               "\" errors=\"" + std::to_string(errors) + "\" time=\"" +
+                               seconds(totalSeconds(cases), "%.3f") + "\"";
+    std::ostringstream out;
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        << "<testsuites name=\"shadowscope check\" " << counts << ">\n"
+        << "  <testsuite name=\"" << xmlEscape(suite) << "\" " << counts << " skipped=\"0\">\n";
+    for (const auto& c : cases) {
+        out << "    <testcase name=\"" << xmlEscape(c.name) << "\" classname=\""
+            << xmlEscape("shadowscope.check." + suite) << "\" time=\"" << seconds(c.seconds, "%.3f") << "\">\n";
+        if (!c.error.empty()) {
+            out << "      <error message=\"" << xmlEscape(c.error) << "\" type=\"render\">" << xmlEscape(c.error)
+                << "</error>\n";
+        } else if (c.failed()) {
+            std::string message, body;
+            for (const auto& v : c.verdicts)
+                if (!v.passed) {
+                    message += (message.empty() ? "" : "; ") + v.text;
+                    body += v.text + "\n";
+                }
+            out << "      <failure message=\"" << xmlEscape(message) << "\" type=\"check\">" << xmlEscape(body)
+                << "</failure>\n";
+        }
+        if (!c.verdicts.empty()) {
+            std::string all;
+            for (const auto& v : c.verdicts) all += std::string(v.passed ? "pass " : "FAIL ") + v.text + "\n";
+            out << "      <system-out>" << xmlEscape(all) << "</system-out>\n";
+        }
+        out << "    </testcase>\n";
+    }
+    out << "  </testsuite>\n</testsuites>\n";
+    return out.str();
+}
+
+} // namespace app
