@@ -4,9 +4,12 @@
 // that it ended the run long before it would have finished.
 #include "geometry/analysis/cancelled.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <chrono>
 #include <stop_token>
+#include <string>
 #include <thread>
 
 namespace testutil {
@@ -41,6 +44,16 @@ template <class Work> CancelTiming timeCancellation(const Work& work) {
     }
     t.cancelledMs = ms(Clock::now() - start);
     return t;
+}
+
+/// The stop was noticed, and it ended the run in less than half the time of the whole run; both
+/// times go into the test's XML report.
+inline void expectCancelledEarly(const CancelTiming& t) {
+    ::testing::Test::RecordProperty("uncancelled_ms", std::to_string(t.uncancelledMs));
+    ::testing::Test::RecordProperty("cancelled_ms", std::to_string(t.cancelledMs));
+    EXPECT_TRUE(t.cancelled) << "the run ended in " << t.cancelledMs << " ms without noticing the stop";
+    EXPECT_LT(t.cancelledMs, 0.5 * t.uncancelledMs)
+        << "cancelled after " << t.cancelledMs << " ms; the whole run takes " << t.uncancelledMs << " ms";
 }
 
 } // namespace testutil
