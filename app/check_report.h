@@ -2,6 +2,7 @@
 // What `shadowscope check` reports, as text built from the results (no GL, no files): the summary
 // table on stdout, report.html and the JUnit XML file.
 #include "check_expect.h"
+#include "ui/charts/xml_text.h"
 
 #include <string>
 #include <string_view>
@@ -38,8 +39,7 @@ struct CaseReport {
 /// per case with an error, and every verdict in <system-out>.
 [[nodiscard]] std::string junitXml(const std::string& suite, const std::vector<CaseReport>& cases);
 
-/// Text for XML and HTML content and attributes: & < > " ' as entities; control characters XML 1.0
-/// cannot hold (all below 0x20 but tab, newline, carriage return) as '?'.
-[[nodiscard]] std::string xmlEscape(std::string_view text);
+/// Text for XML and HTML (shared with the charts' SVG).
+using ui::charts::xmlEscape;
 
 } // namespace app

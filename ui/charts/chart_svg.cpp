@@ -1,6 +1,7 @@
 // ui::Chart as SVG text: what the chart shows (ranges, ticks, labels) comes from chart_axes.cpp;
 // this file only lays it out in pixels.
 #include "ui/charts/chart.h"
+#include "ui/charts/xml_text.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -12,22 +13,6 @@ namespace ui::charts {
 namespace {
 
 constexpr const char* kFont = "font-family=\"sans-serif\"";
-
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    for (const char c : text) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&apos;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string num(double v) {
     char buf[32];
@@ -49,7 +34,7 @@ struct Box {
 
 std::string text(double x, double y, const std::string& s, double size, const char* anchor, const char* extra = "") {
     return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" " + kFont + " font-size=\"" + num(size) +
-           "\" text-anchor=\"" + anchor + "\"" + extra + ">" + escapeXml(s) + "</text>\n";
+           "\" text-anchor=\"" + anchor + "\"" + extra + ">" + xmlEscape(s) + "</text>\n";
 }
 
 std::string line(double x1, double y1, double x2, double y2, const char* stroke, double width) {
@@ -90,7 +75,7 @@ std::string seriesSvg(const Chart& c, const ChartFrame& f, const std::string& cl
                 const ChartPoint& p = s.points[i];
                 if (!plottable(p.x, c.x.log) || !plottable(p.y, c.y.log)) continue;
                 out += "<circle cx=\"" + num(px(p)) + "\" cy=\"" + num(py(p)) + "\" r=\"" + num(s.markerRadius) +
-                       "\" fill=\"" + stroke + "\" stroke=\"none\"><title>" + escapeXml(s.name) + "</title></circle>\n";
+                       "\" fill=\"" + stroke + "\" stroke=\"none\"><title>" + xmlEscape(s.name) + "</title></circle>\n";
                 if (i < s.labels.size() && !s.labels[i].empty())
                     labels += text(px(p) + s.markerRadius + 3, py(p) - s.markerRadius - 2, s.labels[i], 11, "start");
             }
@@ -105,7 +90,7 @@ std::string seriesSvg(const Chart& c, const ChartFrame& f, const std::string& cl
             out += "<polyline class=\"series\" stroke=\"" + stroke + "\" points=\"";
             for (const ChartPoint& p : run) out += num(px(p)) + "," + num(py(p)) + " ";
             out.back() = '"';
-            out += "><title>" + escapeXml(s.name) + "</title></polyline>\n";
+            out += "><title>" + xmlEscape(s.name) + "</title></polyline>\n";
         }
     }
     return out + "</g>\n" + labels;
