@@ -5,6 +5,7 @@
 #include "geometry/scene/builtin_scenes.h"
 
 #include "cancel_test_util.h"
+#include "truth_test_util.h"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <gtest/gtest.h>
@@ -591,15 +592,8 @@ TEST(GroundTruthPlatform, DefaultViewHasLitAndShadowedReceiversAndIsDeterministi
 
 // ---- Cancellation (std::stop_token) ------------------------------------------------------------
 
-const Scene& platformScene() {
-    static const Scene scene = makePlatformScene();
-    return scene;
-}
-
-const GroundTruth& platformTruth() {
-    static const GroundTruth truth(platformScene());
-    return truth;
-}
+using testutil::platformScene;
+using testutil::platformTruth;
 
 /// The platform's default view at w × h (what coverage() takes).
 glm::mat4 platformViewProj(int w, int h) {

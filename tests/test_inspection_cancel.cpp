@@ -6,6 +6,7 @@
 #include "geometry/shadow/shadow_plan.h"
 
 #include "cancel_test_util.h"
+#include "truth_test_util.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -24,15 +25,8 @@ using namespace geometry::analysis;
 
 namespace {
 
-const Scene& platformScene() {
-    static const Scene scene = makePlatformScene();
-    return scene;
-}
-
-const GroundTruth& platformTruth() {
-    static const GroundTruth truth(platformScene());
-    return truth;
-}
+using testutil::platformScene;
+using testutil::platformTruth;
 
 struct Frame {
     FrameReadback readback;

@@ -3,6 +3,8 @@
 #include "geometry/io/model_loader.h"
 #include "geometry/scene/mesh_builder.h"
 
+#include "temp_dir_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -20,25 +22,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class MeshLoading : public ::testing::Test {
+class MeshLoading : public testutil::TempDirTest {
 protected:
-    fs::path dir;
-
-    void SetUp() override {
-        dir = fs::temp_directory_path() / ("shadowscope_meshio_" + std::to_string(::getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    }
-
-    std::string write(const std::string& name, const std::string& bytes) const {
-        const fs::path p = dir / name;
-        std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        return p.string();
-    }
+    MeshLoading() : TempDirTest("shadowscope_meshio_") {}
 
     /// loadModel must throw a one-line runtime_error naming the file (and `needle`, if given).
     static void expectRejected(const std::string& path, const std::string& needle = {}) {

@@ -9,6 +9,8 @@
 #include "geometry/io/model_loader.h"
 #include "geometry/io/polygon_triangulation.h"
 
+#include "temp_dir_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,24 +28,9 @@ namespace {
 
 // ---- [SECTION] Fixture and helpers ----------------------------------------------------------
 
-class PolygonLoading : public ::testing::Test {
+class PolygonLoading : public testutil::TempDirTest {
 protected:
-    fs::path dir;
-
-    void SetUp() override {
-        dir = fs::temp_directory_path() / ("shadowscope_polygons_" + std::to_string(::getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    }
-    std::string write(const std::string& name, const std::string& bytes) const {
-        const fs::path p = dir / name;
-        std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        return p.string();
-    }
+    PolygonLoading() : TempDirTest("shadowscope_polygons_") {}
 };
 
 /// Points in the z = 0 plane, rounded to float as the loaders store them.

@@ -7,6 +7,8 @@
 #include "renderer/measure.h"
 #include "renderer/renderer.h"
 
+#include "render_bench_util.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,12 +20,7 @@ using namespace geometry::shadow;
 
 namespace {
 
-struct Bench {
-    std::unique_ptr<renderer::GlContext> context = renderer::createOSMesaContext();
-    Scene scene;
-    std::unique_ptr<renderer::Renderer> r;
-    explicit Bench(Scene s) : scene(std::move(s)), r(std::make_unique<renderer::Renderer>(scene)) {}
-};
+using Bench = testutil::SceneBench;
 
 Bench& platform() {
     static Bench b(makePlatformScene());

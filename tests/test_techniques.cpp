@@ -8,6 +8,8 @@
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
 
+#include "render_bench_util.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,12 +23,9 @@ using namespace geometry::analysis;
 
 namespace {
 
-/// One OSMesa context and renderer per scene for the whole test binary (contexts are costly).
-struct Bench {
-    std::unique_ptr<renderer::GlContext> context = renderer::createOSMesaContext();
-    Scene scene;
-    std::unique_ptr<renderer::Renderer> r;
-    explicit Bench(Scene s) : scene(std::move(s)), r(std::make_unique<renderer::Renderer>(scene)) {}
+/// A scene's context and renderer (render_bench_util.h) that renders a plan of given settings.
+struct Bench : testutil::SceneBench {
+    using SceneBench::SceneBench;
 
     ShadowPlan render(const ShadowSettings& settings, Viewport vp) {
         context->makeCurrent();
