@@ -195,7 +195,8 @@ private:
     void updateInspection();
     void startInspection(int side, const InspectionInputs& in);
     void pollInspections();
-    void cancelInspections() noexcept;
+    void abandonInspection(Side& side);
+    void cancelInspections();
     void updateHeatmap();
     [[nodiscard]] bool backgroundBusy() const noexcept;
     [[nodiscard]] bool comparing() const noexcept { return state_.views.compare != CompareMode::Off; }

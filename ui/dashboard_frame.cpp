@@ -7,8 +7,8 @@
 // Index
 //   [SECTION] Inputs ............... passInputs, inspectionInputs
 //   [SECTION] Drawing .............. renderViews, drawSide
-//   [SECTION] Inspection ........... updateInspection, startInspection, pollInspections, cancelInspections,
-//                                    finishBackgroundWork
+//   [SECTION] Inspection ........... updateInspection, startInspection, pollInspections, abandonInspection,
+//                                    cancelInspections, finishBackgroundWork
 //   [SECTION] Heatmap .............. updateHeatmap
 //   [SECTION] Scheduling ........... backgroundBusy, nextFrameIn
 #include "dashboard.h"
@@ -122,12 +122,7 @@ void Dashboard::renderViews() {
                                  (t.valid ? t.of(renderer::Pass::LightView) : 0.0);
             divisor = coarseDivisor(perPixel * sides, fixed * sides, kCoarseBudgetMs);
         }
-        if (changed[i] && sides_[i].job) { // its statistics would describe a view no longer shown
-            sides_[i].job->stop.request_stop();
-            retiring_.push_back(std::move(sides_[i].job->result));
-            sides_[i].job.reset();
-            ++counts_.cancelled;
-        }
+        if (changed[i]) abandonInspection(sides_[i]); // it would describe a view no longer shown
         drawSide(i, inputs[i], divisor);
     }
 }
@@ -185,12 +180,7 @@ void Dashboard::updateInspection() {
 
 void Dashboard::startInspection(int i, const InspectionInputs& in) {
     Side& side = sides_[i];
-    if (side.job) { // a job for other inputs (e.g. the truth samples changed): abandon it
-        side.job->stop.request_stop();
-        retiring_.push_back(std::move(side.job->result));
-        side.job.reset();
-        ++counts_.cancelled;
-    }
+    abandonInspection(side); // one for other inputs (e.g. the truth samples changed)
     try {
         // The read-back needs the GL context, so it happens here; the analysis runs on a worker.
         geometry::analysis::FrameReadback frame = renderer::readBack(*side.renderer, side.plan);
@@ -234,13 +224,16 @@ void Dashboard::pollInspections() {
     }
 }
 
-void Dashboard::cancelInspections() noexcept {
-    for (Side& side : sides_)
-        if (side.job) {
-            side.job->stop.request_stop();
-            retiring_.push_back(std::move(side.job->result));
-            side.job.reset();
-        }
+void Dashboard::abandonInspection(Side& side) {
+    if (!side.job) return;
+    side.job->stop.request_stop();
+    retiring_.push_back(std::move(side.job->result)); // polled until its worker has stopped
+    side.job.reset();
+    ++counts_.cancelled;
+}
+
+void Dashboard::cancelInspections() {
+    for (Side& side : sides_) abandonInspection(side);
 }
 
 bool Dashboard::finishBackgroundWork() {
