@@ -14,6 +14,8 @@
 #include "geometry/shadow/culling.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -49,6 +51,21 @@ void bindTexture(int unit, GLenum target, GLuint texture, GLuint sampler) {
 
 bool needsPeeling(const geometry::shadow::ShadowPlan& plan) {
     return plan.bias.type == BiasType::Midpoint || plan.bias.type == BiasType::DualDepth;
+}
+
+/// The moments of linear depth 1 (nothing between the light and the far end), as depth.frag's
+/// MOMENTS variant would write them for each filter.
+std::array<float, 4> emptyTexelMoments(const geometry::shadow::ShadowPlan& plan) noexcept {
+    const auto& f = plan.filter;
+    switch (f.type) {
+    case FilterType::Esm: return {std::exp(f.esmExponent), 0.f, 0.f, 0.f};
+    case FilterType::Evsm2:
+    case FilterType::Evsm4: {
+        const float pos = std::exp(f.evsmPositive), neg = -std::exp(-f.evsmNegative); // warped depth 1
+        return {pos, pos * pos, neg, neg * neg};
+    }
+    default: return {1.f, 1.f, 1.f, 1.f}; // vsm (z, z²), msm (z, z², z³, z⁴)
+    }
 }
 } // namespace
 
@@ -224,8 +241,10 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
                  std::to_string(maxTextureSize_) + "; using " + std::to_string(maxTextureSize_));
         resolution = maxTextureSize_;
     }
-    // Depth arrays (one, or three when peeling) and VSM moments: halve until they fit the budget.
-    const double bytesPerTexel = needsPeeling(plan) ? 12.0 : (plan.filter.type == FilterType::Vsm ? 20.0 : 4.0);
+    // Depth arrays (one, or three when peeling) and the moments (map and blur target, 32-bit float
+    // each): halve until they fit the budget.
+    const int moments = geometry::shadow::momentCount(plan.filter.type);
+    const double bytesPerTexel = needsPeeling(plan) ? 12.0 : 4.0 + 2.0 * 4.0 * moments;
     const int requested = resolution;
     while (resolution > 16 && double(resolution) * resolution * layers * bytesPerTexel > limits_.shadowMemoryBytes)
         resolution /= 2;
@@ -243,7 +262,7 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     const bool slope = plan.polygonOffset != glm::vec2(0.f);
-    const bool linear = plan.bias.linearZ;
+    const bool linear = plan.linearDepth; // bias.linear_z, and PCSS (blocker distances in scene units)
     if (slope && !linear) {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(plan.polygonOffset.x, plan.polygonOffset.y);
@@ -254,21 +273,21 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
         const auto& split = plan.splits[i];
         firstDepth_.bindLayer(i, splitResolution(split));
         glClear(GL_DEPTH_BUFFER_BIT);
-        if (split.empty()) continue;
+        if (split.empty() || moments > 0) continue; // the moment filters read only their moments pass
         drawCasters(plan, i, program, plan.bias.type == BiasType::SecondDepth);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     sampledDepth_ = firstDepth_.depthTexture();
     if (needsPeeling(plan)) peelAndCombine(plan);
-    if (plan.filter.type == FilterType::Vsm) momentsPass(plan);
+    if (moments > 0) momentsPass(plan);
 }
 
 void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
     const int layers = firstDepth_.layers(), res = firstDepth_.resolution();
     secondDepth_.ensure(res, layers, 0, true);
     combinedDepth_.ensure(res, layers, 0, true);
-    const bool linear = plan.bias.linearZ;
+    const bool linear = plan.linearDepth;
     Program& peel = depthProgram(linear ? "#define LINEAR_Z\n#define PEEL\n" : "#define PEEL\n");
     peel.use();
     bindTexture(0, GL_TEXTURE_2D_ARRAY, firstDepth_.depthTexture(), nearestSampler_);
@@ -299,15 +318,17 @@ void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
 
 void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
     const int layers = firstDepth_.layers(), res = firstDepth_.resolution();
-    moments_.ensure(res, layers, GL_RG32F, true);
-    momentsTemp_.ensure(res, layers, GL_RG32F, false);
+    const GLenum formats[] = {GL_R32F, GL_R32F, GL_RG32F, GL_RGBA32F, GL_RGBA32F}; // by moment count
+    const GLenum format = formats[std::clamp(geometry::shadow::momentCount(plan.filter.type), 0, 4)];
+    moments_.ensure(res, layers, format, true);
+    momentsTemp_.ensure(res, layers, format, false);
     Program& program = depthProgram("#define MOMENTS\n");
     program.use();
-    const float far[4] = {1.f, 1.f, 1.f, 1.f}; // empty texels: at the far end, fully lit
+    const std::array<float, 4> far = emptyTexelMoments(plan); // empty texels: at the far end, fully lit
     for (int i = 0; i < layers; ++i) {
         const auto& split = plan.splits[i];
         moments_.bindLayer(i, splitResolution(split));
-        glClearBufferfv(GL_COLOR, 0, far);
+        glClearBufferfv(GL_COLOR, 0, far.data());
         glClear(GL_DEPTH_BUFFER_BIT);
         if (split.empty()) continue;
         drawCasters(plan, i, program, false);
@@ -316,18 +337,18 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
     const int radius = plan.filter.kernel / 2;
     if (radius > 0) {
         glDisable(GL_DEPTH_TEST);
-        vsmBlurProgram_.use();
-        vsmBlurProgram_.set("uMoments", 0);
+        momentsBlurProgram_.use();
+        momentsBlurProgram_.set("uMoments", 0);
         for (int i = 0; i < layers; ++i) {
             const int size = splitResolution(plan.splits[i]);
-            vsmBlurProgram_.set("uSplit", i);
+            momentsBlurProgram_.set("uSplit", i);
             momentsTemp_.bindLayer(i, size);
             bindTexture(0, GL_TEXTURE_2D_ARRAY, moments_.colourTexture(), nearestSampler_);
-            vsmBlurProgram_.set("uStep", glm::ivec2(1, 0));
+            momentsBlurProgram_.set("uStep", glm::ivec2(1, 0));
             fullscreen();
             moments_.bindLayer(i, size);
             bindTexture(0, GL_TEXTURE_2D_ARRAY, momentsTemp_.colourTexture(), nearestSampler_);
-            vsmBlurProgram_.set("uStep", glm::ivec2(0, 1));
+            momentsBlurProgram_.set("uStep", glm::ivec2(0, 1));
             fullscreen();
         }
         glEnable(GL_DEPTH_TEST);
@@ -397,7 +418,8 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
     const auto& f = plan.filter;
     bindTexture(0, GL_TEXTURE_2D_ARRAY, sampledDepth_, nearestSampler_);
     bindTexture(1, GL_TEXTURE_2D_ARRAY, sampledDepth_, compareSampler_);
-    bindTexture(2, GL_TEXTURE_2D_ARRAY, f.type == FilterType::Vsm ? moments_.colourTexture() : 0, linearSampler_);
+    bindTexture(2, GL_TEXTURE_2D_ARRAY, geometry::shadow::isMomentFilter(f.type) ? moments_.colourTexture() : 0,
+                linearSampler_);
     eyeProgram_.set("uShadowMap", 0);
     eyeProgram_.set("uShadowMapCmp", 1);
     eyeProgram_.set("uMoments", 2);

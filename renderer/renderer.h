@@ -138,7 +138,7 @@ private:
     std::map<std::string, std::unique_ptr<Program>> depthPrograms_;
     Program eyeProgram_{"eye.vert", "eye.frag"};
     Program combineProgram_{"fullscreen.vert", "combine_depth.frag"};
-    Program vsmBlurProgram_{"fullscreen.vert", "vsm_blur.frag"};
+    Program momentsBlurProgram_{"fullscreen.vert", "moments_blur.frag"};
     Program eyeBlurProgram_{"fullscreen.vert", "eye_blur.frag"};
     Program composeProgram_{"fullscreen.vert", "compose.frag"};
     Program lightViewProgram_{"fullscreen.vert", "light_view.frag"};

@@ -1,6 +1,7 @@
 #include "renderer/shadow_block.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace renderer {
 
@@ -40,6 +41,11 @@ ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResol
     b.tangentPlane = bias.tangentPlane ? 1 : 0;
     b.eyeBlurFalloff = filter.eyeBlurFalloff;
     b.slopeBias = plan.polygonOffset;
+    b.sunTanHalfAngle = float(std::tan(glm::radians(double(plan.light.angularDiameterDeg)) * 0.5));
+    b.pcssMaxRadius = filter.pcssMaxRadius;
+    b.esmExponent = filter.esmExponent;
+    b.momentBias = filter.momentBias;
+    b.evsmExponents = {filter.evsmPositive, filter.evsmNegative};
     return b;
 }
 

@@ -3,7 +3,6 @@
 namespace renderer {
 
 ShadowMapKey shadowMapKey(const geometry::shadow::ShadowPlan& plan) {
-    using geometry::shadow::FilterType;
     ShadowMapKey k;
     k.splits.reserve(plan.splits.size());
     for (const auto& s : plan.splits)
@@ -12,9 +11,12 @@ ShadowMapKey shadowMapKey(const geometry::shadow::ShadowPlan& plan) {
     k.l = plan.l;
     k.polygonOffset = plan.polygonOffset;
     k.biasType = static_cast<int>(plan.bias.type);
-    k.linearZ = plan.bias.linearZ;
-    k.moments = plan.filter.type == FilterType::Vsm;
-    k.momentsKernel = k.moments ? plan.filter.kernel : 0;
+    k.linearZ = plan.linearDepth;
+    if (geometry::shadow::isMomentFilter(plan.filter.type)) {
+        k.momentFilter = static_cast<int>(plan.filter.type);
+        k.momentsKernel = plan.filter.kernel;
+        k.momentExponents = {plan.filter.esmExponent, plan.filter.evsmPositive, plan.filter.evsmNegative};
+    }
     k.casterLodTexels = plan.casterLodTexels;
     if (plan.casterLodTexels > 0.f) k.lodEye = plan.eye;
     return k;

@@ -24,10 +24,11 @@ struct ShadowMapKey {
     glm::vec2 polygonOffset{0.f};
     int biasType = 0; // second depth, midpoint and dual depth draw other faces or peel
     bool linearZ = false;
-    bool moments = false;      // VSM: the moments pass and its blur
-    int momentsKernel = 0;     // its blur width (VSM only)
-    float casterLodTexels = 0; // the caster levels chosen per chunk…
-    glm::vec3 lodEye{0.f};     // …measure their texels from the eye (caster_detail.h)
+    int momentFilter = -1;          // the moment filter (FilterType) whose moments pass and blur ran; −1: none
+    int momentsKernel = 0;          // its blur width
+    glm::vec3 momentExponents{0.f}; // esm c, evsm c+ and c− (the moments depend on them)
+    float casterLodTexels = 0;      // the caster levels chosen per chunk…
+    glm::vec3 lodEye{0.f};          // …measure their texels from the eye (caster_detail.h)
     [[nodiscard]] bool operator==(const ShadowMapKey&) const = default;
 };
 

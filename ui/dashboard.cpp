@@ -26,7 +26,8 @@ std::string settingGroup(std::string_view key) {
     if (key.starts_with("warp.") || key.starts_with("shadow_map.") || key.starts_with("stabilize.")) return "Warp";
     if (key.starts_with("splits.") || key.starts_with("focus.") || key.starts_with("casters.")) return "Partitions";
     if (key.starts_with("bias.")) return "Bias";
-    if (key.starts_with("filter.")) return "Filtering";
+    if (key.starts_with("filter.") || key.starts_with("light."))
+        return "Filtering"; // the sun size sets PCSS's penumbra
     return "Views";
 }
 

@@ -67,9 +67,15 @@ bool settingMatters(const ShadowSettings& s, std::string_view key) noexcept {
     if (key == "bias.z_max") return bias == BiasType::DualDepth;
     if (key == "bias.normal_offset") return bias == BiasType::NormalOffset || bias == BiasType::SlopeNormalOffset;
     if (key == "bias.tangent_plane") return filter == FilterType::Pcf || filter == FilterType::Disk;
-    if (key == "filter.kernel") return filter == FilterType::Pcf || filter == FilterType::Vsm;
-    if (key == "filter.taps" || key == "filter.radius") return filter == FilterType::Disk;
-    if (key == "filter.bleed_reduction") return filter == FilterType::Vsm;
+    if (key == "filter.kernel") return filter == FilterType::Pcf || shadow::isMomentFilter(filter);
+    if (key == "filter.taps") return filter == FilterType::Disk || filter == FilterType::Pcss;
+    if (key == "filter.radius") return filter == FilterType::Disk;
+    if (key == "filter.pcss.max_radius") return filter == FilterType::Pcss;
+    if (key == "filter.bleed_reduction") return shadow::isMomentFilter(filter) && filter != FilterType::Esm;
+    if (key == "filter.esm.exponent") return filter == FilterType::Esm;
+    if (key == "filter.evsm.positive_exponent") return filter == FilterType::Evsm2 || filter == FilterType::Evsm4;
+    if (key == "filter.evsm.negative_exponent") return filter == FilterType::Evsm4;
+    if (key == "filter.msm.moment_bias") return filter == FilterType::Msm;
     if (key == "filter.eye_blur.falloff") return s.filter.eyeBlurIterations > 0;
     if (key == "warp.direction" || key == "warp.multiplier") return warped;
     if (key == "warp.falloff") return s.warp.method == WarpMethod::Glispsm;

@@ -97,9 +97,10 @@ const std::vector<SettingInfo>& settingsDeclaration() {
             "bias.type",
             "Bias: none, constant (z_offset along the light), slope (polygon offset), second_depth (back faces "
             "into the map), midpoint and dual_depth (two-layer depth peeling), normal_offset (receiver along "
-            "its normal), slope_normal_offset (slope and normal offset together, as engines ship them)",
+            "its normal), slope_normal_offset (slope and normal offset together, as engines ship them), "
+            "receiver_plane (each filter tap compares against the receiver's plane; PCF family)",
             {"none", "constant", "slope", "second_depth", "midpoint", "dual_depth", "normal_offset",
-             "slope_normal_offset"},
+             "slope_normal_offset", "receiver_plane"},
             [](ShadowSettings & s) -> auto& { return s.bias.type; }),
         number(
             "bias.constant", "Constant depth offset z_offset, in scene units along the light (Barroso Table 1)",
@@ -129,20 +130,43 @@ const std::vector<SettingInfo>& settingsDeclaration() {
         choice(
             "filter.type",
             "Filter: none (one tap), hw2x2 (hardware bilinear compare), pcf (k x k texels), disk "
-            "(rotated disk taps), vsm (variance shadow maps)",
-            {"none", "hw2x2", "pcf", "disk", "vsm"}, [](ShadowSettings & s) -> auto& { return s.filter.type; }),
+            "(rotated disk taps), vsm (variance shadow maps), pcss (percentage-closer soft shadows: blocker "
+            "search, penumbra from light.angular_diameter_deg), esm (exponential), evsm2 and evsm4 (exponential "
+            "variance, 2 or 4 moments), msm (Hamburger four-moment shadow maps)",
+            {"none", "hw2x2", "pcf", "disk", "vsm", "pcss", "esm", "evsm2", "evsm4", "msm"},
+            [](ShadowSettings & s) -> auto& { return s.filter.type; }),
         oddNumber(
-            "filter.kernel", "pcf: k x k taps one texel apart; vsm: blur width (odd)", 1, 9,
+            "filter.kernel", "pcf: k x k taps one texel apart; vsm, esm, evsm2, evsm4, msm: blur width (odd)", 1, 9,
             [](ShadowSettings & s) -> auto& { return s.filter.kernel; }),
         number(
-            "filter.taps", "disk: number of taps", Kind::Int, 1, 64,
+            "filter.taps", "disk: number of taps; pcss: taps of the blocker search and of the filter", Kind::Int, 1, 64,
             [](ShadowSettings & s) -> auto& { return s.filter.taps; }),
         number(
             "filter.radius", "disk: radius in texels", Kind::Float, 0.5, 16,
             [](ShadowSettings & s) -> auto& { return s.filter.radius; }),
         number(
-            "filter.bleed_reduction", "vsm: light-bleeding reduction (cuts the Chebyshev tail)", Kind::Float, 0, 0.95,
-            [](ShadowSettings & s) -> auto& { return s.filter.bleedReduction; }),
+            "filter.bleed_reduction",
+            "vsm, evsm2, evsm4, msm: light-bleeding reduction (lit fractions below it become 0, the rest is "
+            "rescaled)",
+            Kind::Float, 0, 0.95, [](ShadowSettings & s) -> auto& { return s.filter.bleedReduction; }),
+        number(
+            "filter.pcss.max_radius", "pcss: cap on the blocker search and filter radius, texels", Kind::Float, 1, 256,
+            [](ShadowSettings & s) -> auto& { return s.filter.pcssMaxRadius; }),
+        number(
+            "filter.esm.exponent",
+            "esm: c in exp(c z) over linear depth z in [0,1]; higher bleeds less but rings at contacts", Kind::Float, 1,
+            88, [](ShadowSettings & s) -> auto& { return s.filter.esmExponent; }),
+        number(
+            "filter.evsm.positive_exponent", "evsm2, evsm4: c+ in exp(c+ z), z in [-1,1]", Kind::Float, 1, 42,
+            [](ShadowSettings & s) -> auto& { return s.filter.evsmPositive; }),
+        number(
+            "filter.evsm.negative_exponent", "evsm4: c- in -exp(-c- z), z in [-1,1]", Kind::Float, 1, 42,
+            [](ShadowSettings & s) -> auto& { return s.filter.evsmNegative; }),
+        number(
+            "filter.msm.moment_bias",
+            "msm: alpha pulling the four moments towards (0.5, 0.5, 0.5, 0.5) against numeric failure; higher "
+            "bleeds more",
+            Kind::Float, 1e-8, 0.01, [](ShadowSettings & s) -> auto& { return s.filter.momentBias; }, true),
         number(
             "filter.eye_blur.iterations",
             "Eye-space blur of the shadow mask, stronger near the viewer "
@@ -153,6 +177,11 @@ const std::vector<SettingInfo>& settingsDeclaration() {
             "Eye-space blur: taps 1/(1 + falloff * view depth) pixels apart, 3 each side, per "
             "iteration",
             Kind::Float, 0, 10, [](ShadowSettings & s) -> auto& { return s.filter.eyeBlurFalloff; }, true),
+        number(
+            "light.angular_diameter_deg",
+            "Angular diameter of the sun, degrees (0: a point; the real sun is 0.53): PCSS's penumbra, and truth "
+            "traces rays over this disk",
+            Kind::Float, 0, 20, [](ShadowSettings & s) -> auto& { return s.light.angularDiameterDeg; }),
         choice(
             "stabilize.mode",
             "Stabilization: off; snap (unwarped maps fitted to their split's bounding sphere, moved in whole "

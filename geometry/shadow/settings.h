@@ -14,7 +14,19 @@ namespace geometry::shadow {
 
 /// Bias types (Barroso Table 1; Scherzer §4.2; docs/design.md §3.5).
 /// SlopeNormalOffset: slope-scaled polygon offset and normal offset together, as engines ship them.
-enum class BiasType { None, Constant, Slope, SecondDepth, Midpoint, DualDepth, NormalOffset, SlopeNormalOffset };
+/// ReceiverPlane: every filter tap compares against the receiver's plane at that tap's texel centre,
+/// less the half-texel sampling error (Isidoro 2006; MJP's Shadows sample), for the PCF family.
+enum class BiasType {
+    None,
+    Constant,
+    Slope,
+    SecondDepth,
+    Midpoint,
+    DualDepth,
+    NormalOffset,
+    SlopeNormalOffset,
+    ReceiverPlane
+};
 
 struct BiasSettings {
     BiasType type = BiasType::Constant;
@@ -28,15 +40,39 @@ struct BiasSettings {
     [[nodiscard]] bool operator==(const BiasSettings&) const = default;
 };
 
-/// Filters (Barroso §2.2; Scherzer §4.3; docs/design.md §3.6).
-enum class FilterType { None, Hw2x2, Pcf, Disk, Vsm };
+/// Filters (Barroso §2.2; Scherzer §4.3; docs/design.md §3.6, docs/filters.md). The PCF family
+/// (none..disk, pcss) compares depths; the moment family (vsm, esm, evsm2, evsm4, msm) filters a
+/// blurred map of moments of linear light depth.
+enum class FilterType { None, Hw2x2, Pcf, Disk, Vsm, Pcss, Esm, Evsm2, Evsm4, Msm };
+
+/// The filters that read a blurred moments map instead of comparing depths.
+[[nodiscard]] constexpr bool isMomentFilter(FilterType f) noexcept {
+    return f == FilterType::Vsm || f == FilterType::Esm || f == FilterType::Evsm2 || f == FilterType::Evsm4 ||
+           f == FilterType::Msm;
+}
+/// Moments stored per texel: 1 (esm), 2 (vsm, evsm2), 4 (evsm4, msm); 0 for the PCF family.
+[[nodiscard]] constexpr int momentCount(FilterType f) noexcept {
+    switch (f) {
+    case FilterType::Esm: return 1;
+    case FilterType::Vsm:
+    case FilterType::Evsm2: return 2;
+    case FilterType::Evsm4:
+    case FilterType::Msm: return 4;
+    default: return 0;
+    }
+}
 
 struct FilterSettings {
     FilterType type = FilterType::Hw2x2;
-    int kernel = 3;               // filter.kernel: k×k PCF taps / VSM blur width, odd
-    int taps = 16;                // filter.taps: disk taps
+    int kernel = 3;               // filter.kernel: k×k PCF taps / moments blur width, odd
+    int taps = 16;                // filter.taps: disk and PCSS taps
     float radius = 2.f;           // filter.radius: disk radius, texels
-    float bleedReduction = 0.2f;  // filter.bleed_reduction: VSM light-bleeding cut
+    float bleedReduction = 0.2f;  // filter.bleed_reduction: VSM/EVSM/MSM light-bleeding cut
+    float pcssMaxRadius = 64.f;   // filter.pcss.max_radius: cap on the blocker search and filter radius, texels
+    float esmExponent = 80.f;     // filter.esm.exponent: c in exp(c·z)
+    float evsmPositive = 40.f;    // filter.evsm.positive_exponent: c+ in exp(c+·z)
+    float evsmNegative = 5.f;     // filter.evsm.negative_exponent: c− in −exp(−c−·z) (evsm4)
+    float momentBias = 3e-5f;     // filter.msm.moment_bias: α pulling the moments towards a safe vector
     int eyeBlurIterations = 0;    // filter.eye_blur.iterations: Scherzer's eye-space blur, 0 = off
     float eyeBlurFalloff = 0.05f; // filter.eye_blur.falloff: how fast the blur shrinks with view depth
     [[nodiscard]] bool operator==(const FilterSettings&) const = default;
@@ -60,6 +96,13 @@ struct CasterSettings {
     [[nodiscard]] bool operator==(const CasterSettings&) const = default;
 };
 
+/// The sun as the shadows see it: light.angular_diameter_deg (0: a point; the real sun is 0.53°).
+/// PCSS sizes its penumbra from it, and truth traces rays over its disk.
+struct LightSettings {
+    float angularDiameterDeg = 0.f;
+    [[nodiscard]] bool operator==(const LightSettings&) const = default;
+};
+
 struct ShadowSettings {
     int resolution = 2048; // shadow_map.resolution
     StabilizeMode stabilize = StabilizeMode::Off;
@@ -70,6 +113,7 @@ struct ShadowSettings {
     WarpDirection direction = WarpDirection::Standard;
     SplitParams splits;
     CasterSettings casters;
+    LightSettings light;
     [[nodiscard]] bool operator==(const ShadowSettings&) const = default;
 };
 

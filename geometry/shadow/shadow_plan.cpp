@@ -267,6 +267,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         plan.normalOffsetTexels = settings.bias.normalOffset;
     plan.bias = settings.bias;
     plan.filter = settings.filter;
+    plan.light = settings.light;
     plan.casterLodTexels = settings.casters.lod == CasterLod::Auto ? settings.casters.lodTexels : 0.f;
 
     const dvec3 l(plan.l), v(plan.v), eye(camera.eye);
@@ -373,7 +374,8 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         plan.splits.push_back(std::move(split));
     }
     // Derived once here so that no pass recomputes them.
-    plan.linearDepth = settings.bias.linearZ || settings.filter.type == FilterType::Vsm;
+    plan.linearDepth =
+        settings.bias.linearZ || isMomentFilter(settings.filter.type) || settings.filter.type == FilterType::Pcss;
     for (auto& split : plan.splits) {
         split.linearDepthScale = 1.f / std::max(split.linearDepthRange.y - split.linearDepthRange.x, 1e-6f);
         split.dualDepthCap = settings.bias.zMax * (settings.bias.linearZ ? split.linearDepthScale : split.depthPerUnit);

@@ -77,8 +77,9 @@ struct ShadowPlan {
     float casterLodTexels = 0.f;
     BiasSettings bias; // what the renderer applies, as chosen in the settings
     FilterSettings filter;
-    /// The maps the eye pass compares against hold linear light depth (bias.linear_z, or VSM's
-    /// moments, which are always of linear depth).
+    LightSettings light; // the sun's size: PCSS's penumbra and the soft truth
+    /// The maps the eye pass reads hold linear light depth: bias.linear_z, the moment filters (their
+    /// moments are of linear depth) and PCSS (its penumbra needs blocker distances in scene units).
     bool linearDepth = false;
     std::vector<SplitPlan> splits;
 };

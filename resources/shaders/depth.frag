@@ -1,7 +1,8 @@
 #version 430 core
 // Shadow pass fragment. Variants (defines): LINEAR_Z stores linear light depth (Scherzer §4.2),
 // PEEL keeps only surfaces behind the first layer (second depth for midpoint / dual depth),
-// MOMENTS writes VSM moments of linear depth; EYE_DEPTH is the eye pass's depth pre-pass.
+// MOMENTS writes the moment filter's moments of linear depth (vsm, esm, evsm2, evsm4, msm:
+// docs/filters.md); EYE_DEPTH is the eye pass's depth pre-pass.
 #include "shadow_block.glsl"
 #if defined(LINEAR_Z) || defined(MOMENTS)
 in vec3 vWorldPos;
@@ -13,7 +14,8 @@ uniform int uSplit;
 uniform sampler2DArray uFirstLayer;
 #endif
 #ifdef MOMENTS
-layout(location = 0) out vec2 oMoments;
+layout(location = 0) out vec4 oMoments;
+#include "moments.glsl"
 #endif
 
 #if defined(LINEAR_Z) || defined(MOMENTS)
@@ -33,8 +35,12 @@ void main() {
 #endif
 #ifdef MOMENTS
     float m = linearDepth();
-    float dx = dFdx(m), dy = dFdy(m);
-    oMoments = vec2(m, m * m + 0.25 * (dx * dx + dy * dy)); // Donnelly & Lauritzen's slope term
+    if (shadow.filterType == FILTER_VSM) {
+        float dx = dFdx(m), dy = dFdy(m);
+        oMoments = vec4(m, m * m + 0.25 * (dx * dx + dy * dy), 0.0, 0.0); // Donnelly & Lauritzen's slope term
+    } else {
+        oMoments = momentsOf(m);
+    }
 #endif
 #if defined(LINEAR_Z)
     gl_FragDepth = clamp(z, 0.0, 1.0);

@@ -3,13 +3,14 @@
 // (Scherzer §4.3) and inspected. Every bias and filter of docs/design.md §3.5–3.6 lives here; the
 // parameters come in the shadow block (renderer/shadow_block.inc).
 #include "shadow_block.glsl"
+#include "moments.glsl"
 in vec3 vWorldPos;
 in vec3 vNormal;
 uniform vec3 uColor;
 
 uniform sampler2DArray uShadowMap;          // depth, nearest, no compare
 uniform sampler2DArrayShadow uShadowMapCmp; // same texture, linear compare (hw2x2)
-uniform sampler2DArray uMoments;            // VSM moments, linear
+uniform sampler2DArray uMoments;            // the moment filters' blurred moments, linear
 
 layout(location = 0) out vec4 oBase;   // rgb albedo·ambient, a view depth
 layout(location = 1) out vec4 oDirect; // rgb albedo·(1−ambient)·N·L
@@ -51,6 +52,70 @@ float hardTest(vec2 texel, float z, int split, float res) {
     return z > texelFetch(uShadowMap, ivec3(t, split), 0).r ? 0.0 : 1.0;
 }
 
+/// bias.type = receiver_plane: the tap at `tap` compares against the receiver's plane at the centre of
+/// the texel it reads (where the stored depth was rasterized), less half a texel's slope, which
+/// covers curved receivers and caster edges inside the texel (Isidoro 2006, with the plane evaluated
+/// at texel centres).
+float planeSlack(vec2 dzdt) { return 0.5 * (abs(dzdt.x) + abs(dzdt.y)) + 1e-6; }
+
+float planeTest(vec2 texel, vec2 tap, float z, vec2 dzdt, int split, float res) {
+    vec2 centre = floor(tap) + 0.5;
+    float ref = z + dot(dzdt, centre - texel) - planeSlack(dzdt);
+    return hardTest(tap, ref, split, res);
+}
+
+/// A point of the Vogel disk: tap k of n, radius 1, rotated by `angle`.
+vec2 vogel(int k, int n, float angle) {
+    float a = float(k) * kGoldenAngle + angle;
+    return sqrt((float(k) + 0.5) / float(n)) * vec2(cos(a), sin(a));
+}
+
+/// Interleaved gradient noise (Jimenez 2014): a per-pixel rotation that trades banding for noise.
+float pixelAngle() { return 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715)))); }
+
+/// PCSS (Fernando 2005) for a sun of angular radius atan(sunTanHalfAngle), with taps on the receiver's
+/// plane in world space, so the kernel keeps its size and shape in scene units under any warp:
+/// 1. blocker search over the disk a blocker at the map's near end could shade from;
+/// 2. penumbra radius = (receiver - mean blocker distance along l) * tan(half angle);
+/// 3. PCF over a disk of that radius (uniform over the disk: a straight edge gives the sun's profile).
+float pcss(vec3 receiver, vec3 n, float z, int split, float res) {
+    float scale = shadow.splits[split].linearScale; // linear map depth per scene unit along l
+    vec3 e1 = normalize(cross(shadow.lightDir, abs(shadow.lightDir.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+    vec3 e2 = cross(shadow.lightDir, e1);
+    float texel = texelWorldSize(receiver, split, res);
+    float nl = min(dot(n, shadow.lightDir), -0.05); // the receiver faces the light; bounded at grazing
+    float slope = sqrt(max(1.0 - nl * nl, 0.0)) / -nl; // scene units along l per unit across it
+    float eps = scale * texel * slope + 1e-6;           // one texel of the receiver's slope
+    float maxRadius = shadow.pcssMaxRadius * texel;
+    float angle = pixelAngle();
+    vec2 shift = vec2(shadow.splits[split].lookupShiftX, shadow.splits[split].lookupShiftY);
+    float searchRadius = clamp(z / scale * shadow.sunTanHalfAngle, texel, maxRadius);
+    float blockers = 0.0, blockerDepth = 0.0;
+    for (int k = 0; k < shadow.taps; ++k) {
+        vec2 o = vogel(k, shadow.taps, angle) * searchRadius;
+        vec3 offset = e1 * o.x + e2 * o.y;
+        vec3 q = mapCoords(receiver + offset - shadow.lightDir * (dot(n, offset) / nl), split);
+        ivec2 t = clamp(ivec2(floor(q.xy * res + shift)), ivec2(0), ivec2(int(res) - 1));
+        float d = texelFetch(uShadowMap, ivec3(t, split), 0).r;
+        if (d < q.z - eps) {
+            blockers += 1.0;
+            blockerDepth += d;
+        }
+    }
+    if (blockers == 0.0) return 1.0;
+    float distance = max(z - blockerDepth / blockers, 0.0) / scale; // receiver to blockers, scene units
+    float radius = clamp(distance * shadow.sunTanHalfAngle, 0.5 * texel, maxRadius);
+    float lit = 0.0;
+    for (int k = 0; k < shadow.taps; ++k) {
+        vec2 o = vogel(k, shadow.taps, angle + 1.0) * radius;
+        vec3 offset = e1 * o.x + e2 * o.y;
+        vec3 q = mapCoords(receiver + offset - shadow.lightDir * (dot(n, offset) / nl), split);
+        ivec2 t = clamp(ivec2(floor(q.xy * res + shift)), ivec2(0), ivec2(int(res) - 1));
+        lit += q.z - eps > texelFetch(uShadowMap, ivec3(t, split), 0).r ? 0.0 : 1.0;
+    }
+    return lit / float(shadow.taps);
+}
+
 /// k×k box PCF one texel apart (k = shadow.kernel, odd), four texels per textureGather: the k×k block
 /// is covered by ⌈k/2⌉² gathers and the extra row and column are masked out.
 float pcfBox(vec2 texel, float z, int split, vec2 dzdt) {
@@ -70,14 +135,6 @@ float pcfBox(vec2 texel, float z, int split, vec2 dzdt) {
     return lit / float(shadow.kernel * shadow.kernel);
 }
 
-float chebyshev(vec2 uv, float z, int split) {
-    vec2 m = texture(uMoments, vec3(uv, float(split))).rg;
-    if (z <= m.x) return 1.0;
-    float variance = max(m.y - m.x * m.x, 1e-7);
-    float d = z - m.x;
-    float pMax = variance / (variance + d * d);
-    return clamp((pMax - shadow.bleedReduction) / (1.0 - shadow.bleedReduction), 0.0, 1.0);
-}
 
 /// What one split's map says about a receiver: the shadow factor, where the lookup landed, and the
 /// texel-space derivatives behind the receiver plane and J.
@@ -92,7 +149,7 @@ struct Lookup {
 /// Looks `receiver` up in split `split`'s map. The screen derivatives of the receiver's world position
 /// come from the caller, taken in uniform control flow; they go through this split's matrix, so a
 /// 2×2 block that straddles a split boundary does not mix two maps.
-Lookup lookUp(int split, vec3 receiver, vec3 dPdx, vec3 dPdy, float ndotl) {
+Lookup lookUp(int split, vec3 receiver, vec3 n, vec3 dPdx, vec3 dPdy, float ndotl) {
     float res = float(shadow.arrayResolution) * shadow.splits[split].mapScale;
     vec3 p = mapCoords(receiver, split);
     vec3 px = mapCoords(receiver + dPdx, split), py = mapCoords(receiver + dPdy, split);
@@ -104,7 +161,8 @@ Lookup lookUp(int split, vec3 receiver, vec3 dPdx, vec3 dPdy, float ndotl) {
     // The receiver plane's depth gradient per texel (Barroso §2.2).
     vec2 dzdt = abs(L.det) > 1e-12 ? vec2(dzdx * L.dTdy.y - dzdy * L.dTdx.y, dzdy * L.dTdx.x - dzdx * L.dTdy.x) / L.det
                                    : vec2(0.0);
-    if (shadow.tangentPlane == 0) dzdt = vec2(0.0);
+    bool receiverPlane = shadow.biasType == BIAS_RECEIVER_PLANE;
+    if (shadow.tangentPlane == 0 && !receiverPlane) dzdt = vec2(0.0);
 
     p.xy += vec2(shadow.splits[split].lookupShiftX, shadow.splits[split].lookupShiftY) / res; // 0 but in tests
     vec2 texel = p.xy * res; // texel-space position within this split's map
@@ -114,24 +172,27 @@ Lookup lookUp(int split, vec3 receiver, vec3 dPdx, vec3 dPdy, float ndotl) {
     bool inside = all(greaterThanEqual(p, vec3(0.0))) && all(lessThanEqual(p.xy, vec2(1.0)));
     if (inside && ndotl > 0.0) {
         if (shadow.filterType == FILTER_NONE) {
-            s = hardTest(texel, p.z, split, res);
+            s = receiverPlane ? planeTest(texel, texel, p.z, dzdt, split, res) : hardTest(texel, p.z, split, res);
         } else if (shadow.filterType == FILTER_HW2X2) {
-            s = texture(uShadowMapCmp, vec4(uvArray, float(split), p.z));
+            // One reference for four texels: the receiver plane can only lower it by a texel's slope.
+            float ref = receiverPlane ? p.z - 2.0 * planeSlack(dzdt) : p.z;
+            s = texture(uShadowMapCmp, vec4(uvArray, float(split), ref));
         } else if (shadow.filterType == FILTER_PCF) {
-            s = pcfBox(texel, p.z, split, dzdt);
+            s = pcfBox(texel, receiverPlane ? p.z - planeSlack(dzdt) : p.z, split, dzdt);
         } else if (shadow.filterType == FILTER_DISK) {
-            // Vogel disk, rotated per pixel (interleaved gradient noise) to trade banding for noise.
-            float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+            // Vogel disk, rotated per pixel to trade banding for noise.
+            float angle = pixelAngle();
             float sum = 0.0;
             for (int k = 0; k < shadow.taps; ++k) {
-                float radius = shadow.diskRadius * sqrt((float(k) + 0.5) / float(shadow.taps));
-                float a = float(k) * kGoldenAngle + angle;
-                vec2 offset = radius * vec2(cos(a), sin(a));
-                sum += hardTest(texel + offset, p.z + dot(dzdt, offset), split, res);
+                vec2 offset = shadow.diskRadius * vogel(k, shadow.taps, angle);
+                sum += receiverPlane ? planeTest(texel, texel + offset, p.z, dzdt, split, res)
+                                     : hardTest(texel + offset, p.z + dot(dzdt, offset), split, res);
             }
             s = sum / float(shadow.taps);
+        } else if (shadow.filterType == FILTER_PCSS) {
+            s = pcss(receiver, n, p.z, split, res);
         } else {
-            s = chebyshev(uvArray, p.z, split);
+            s = momentLit(texture(uMoments, vec3(uvArray, float(split))), p.z);
         }
     }
     L.s = s;
@@ -160,7 +221,7 @@ void main() {
     if (shadow.normalOffset > 0.0) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
     vec3 dPdx = dFdx(receiver), dPdy = dFdy(receiver); // in uniform control flow
 
-    Lookup L = lookUp(split, receiver, dPdx, dPdy, ndotl);
+    Lookup L = lookUp(split, receiver, n, dPdx, dPdy, ndotl);
     float s = L.s;
     float m = aliasingM(L);
     // splits.blend: in the band before this split's far end, fade into the next split's shadow (and
@@ -169,7 +230,7 @@ void main() {
     float blendStart = shadow.splits[split].blendStart, splitFar = shadow.splits[split].splitFar;
     if (split < shadow.splitCount - 1 && viewDepth > blendStart && splitFar > blendStart) {
         float t = clamp((viewDepth - blendStart) / (splitFar - blendStart), 0.0, 1.0);
-        Lookup next = lookUp(split + 1, receiver, dPdx, dPdy, ndotl);
+        Lookup next = lookUp(split + 1, receiver, n, dPdx, dPdy, ndotl);
         s = mix(s, next.s, t);
         m = mix(m, aliasingM(next), t);
     }
