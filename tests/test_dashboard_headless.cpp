@@ -292,7 +292,7 @@ TEST_F(HeadlessDashboardTest, RecommendFindsSettingsAndAppliesThemToB) {
     dash.showTab(4);
     const geometry::analysis::Image before = d->render(1);
     const double p95 = dash.inspection(0)->aliasing.p95;
-    ASSERT_TRUE(dash.startRecommend("p95=" + std::to_string(p95 * 0.6), 12));
+    ASSERT_TRUE(dash.startRecommend("p95=" + std::to_string(p95 * 0.6), 24)); // the filter axis has 5 values
     int frames = 0;
     for (; frames < 40 && dash.recommendRunning(); ++frames) (void)d->render(1);
     EXPECT_FALSE(dash.recommendRunning());

@@ -17,7 +17,7 @@ std::vector<TuneAxis> defaultTuneSpace() {
     // The strongest levers first: coordinate descent takes the axes in this order.
     return {
         {"bias.type", {"constant", "slope", "slope_normal_offset"}},
-        {"filter.type", {"hw2x2", "pcf"}},
+        {"filter.type", {"hw2x2", "pcf", "pcss", "evsm4", "msm"}},
         {"shadow_map.resolution", {"1024", "2048", "4096"}},
         {"warp.method", {"uniform", "lispsm", "glispsm"}},
         {"splits.count", {"1", "2", "3", "4"}},
