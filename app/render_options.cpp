@@ -183,9 +183,10 @@ void addUpOption(CLI::App& cmd, std::optional<geometry::io::UpAxis>& up, const s
 
 void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
     const bool bench = use == OptionUse::Bench;
-    cmd.add_option("--scene", o.scene,
-                   "Scene: a built-in name (platform, piperack, plane), a scene file (resources/scenes/*.json) or "
-                   "a model file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
+    cmd.add_option(
+           "--scene", o.scene,
+           "Scene: a built-in name (platform, piperack, plane, overlap), a scene file (resources/scenes/*.json) or "
+           "a model file (.obj, .stl, .off, .ply, .gltf, .glb; shown on a ground plane with a framed camera)")
         ->capture_default_str();
     addUpOption(cmd, o.up,
                 "Up axis of model files (y, z, -y, -z, x, -x; default: z for STL, the CAD convention, y for the "

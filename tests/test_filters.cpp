@@ -2,7 +2,6 @@
 // and split count, light bleeding of the moment filters on a planted overlap, and the receiver-plane
 // bias against acne.
 #include "geometry/scene/builtin_scenes.h"
-#include "geometry/scene/mesh_builder.h"
 #include "renderer/context.h"
 #include "renderer/renderer.h"
 
@@ -45,29 +44,6 @@ struct Bench : testutil::SceneBench {
     }
 };
 
-/// Two casters stacked over a receiver (docs/filters.md, "light bleeding"): the ground, plate A
-/// (8 × 8 m, 1 m up) and above it plate B (6 m up) covering x < 0. Every ground point under A is
-/// in A's umbra; where B's edge crosses above it, a filter's window holds both B's and A's depth,
-/// and the moment filters' bounds let light through (light bleeding).
-Scene overlapScene() {
-    Scene scene;
-    scene.name = "overlap";
-    MeshBuilder ground("ground", {0.75f, 0.75f, 0.72f});
-    ground.addGroundGrid({0.f, 0.f, 0.f}, 24.f, 4);
-    scene.meshes.push_back(ground.build());
-    MeshBuilder plates("plates", {0.3f, 0.4f, 0.8f});
-    plates.addBox({0.f, 1.f, 0.f}, {4.f, 0.02f, 4.f});
-    plates.addBox({-6.f, 6.f, 0.f}, {6.f, 0.02f, 6.f});
-    scene.meshes.push_back(plates.build());
-    scene.camera.eye = {0.f, 0.4f, 3.8f}; // low, under plate A, looking along its umbra
-    scene.camera.target = {0.f, 0.f, -2.f};
-    scene.camera.fovYDeg = 70.f;
-    scene.camera.near = 0.05f;
-    scene.camera.far = 60.f;
-    scene.light.direction = {0.05f, -1.f, 0.03f};
-    return scene;
-}
-
 } // namespace
 
 // Every filter with every warp and split count: no GL error, every shadow factor in [0, 1] (no
@@ -98,10 +74,10 @@ TEST(Filters, EveryFilterRendersWithEveryWarpAndSplitCount) {
             }
 }
 
-// The moment filters on the overlap: light in A's umbra where B's edge crosses it. EVSM4 and MSM
-// bleed less than VSM; the test checks that VSM does bleed here, so the case is a real one.
+// The moment filters on the overlap scene (two plates A below B over the ground): light in A's umbra where B's edge
+// crosses it. EVSM4 and MSM bleed less than VSM; the test checks that VSM does bleed here, so the case is a real one.
 TEST(Filters, Evsm4AndMsmBleedLessThanVsmWhereCastersOverlap) {
-    Bench b(overlapScene());
+    Bench b(makeOverlapScene());
     const auto bleeding = [&](FilterType type, float bleedReduction) {
         ShadowSettings s;
         s.resolution = 256;

@@ -37,6 +37,10 @@ struct Pole {
 inline constexpr float kPlaneSceneHalfSize = 40.f;
 [[nodiscard]] Scene makePlaneScene();
 
+/// Light bleeding's classic case (docs/filters.md): two plates stacked over the ground, the upper one's
+/// edge crossing above the lower one's umbra; the camera looks along that umbra from under the lower plate.
+[[nodiscard]] Scene makeOverlapScene();
+
 [[nodiscard]] const std::vector<std::string>& builtinSceneNames();
 /// Throws std::invalid_argument naming the valid scenes for an unknown name.
 [[nodiscard]] Scene makeBuiltinScene(std::string_view name);

@@ -35,7 +35,7 @@ Scene makePlaneScene() {
 }
 
 const std::vector<std::string>& builtinSceneNames() {
-    static const std::vector<std::string> names = {"platform", "piperack", "plane"};
+    static const std::vector<std::string> names = {"platform", "piperack", "plane", "overlap"};
     return names;
 }
 
@@ -43,8 +43,9 @@ Scene makeBuiltinScene(std::string_view name) {
     if (name == "platform") return makePlatformScene();
     if (name == "piperack") return makePiperackScene();
     if (name == "plane") return makePlaneScene();
+    if (name == "overlap") return makeOverlapScene();
     throw std::invalid_argument("unknown scene '" + std::string(name) +
-                                "' (built-in scenes: platform, piperack, plane)");
+                                "' (built-in scenes: platform, piperack, plane, overlap)");
 }
 
 } // namespace geometry::scene
