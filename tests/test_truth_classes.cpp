@@ -101,6 +101,10 @@ TEST(TruthClasses, AmbiguousLeaksAndPenumbra) {
     EXPECT_DOUBLE_EQ(t.ambiguous, 1.0 / double(t.count));
     EXPECT_DOUBLE_EQ(t.edgeError, 1.0 / double(t.count));
     EXPECT_NEAR(t.penumbraMeanAbs, (1.0 + 0.25 + 1.0) / double(t.count - 1), 1e-12);
+    // The umbra: all but the ambiguous pixel and the 3×3 block about the penumbra pixel; its only
+    // light is the leak.
+    EXPECT_EQ(t.umbraPixels, t.count - 1 - 9);
+    EXPECT_DOUBLE_EQ(t.umbraLight, 1.0 / double(t.count - 10));
 }
 
 TEST(TruthClasses, BadInputsThrow) {

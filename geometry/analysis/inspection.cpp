@@ -160,6 +160,8 @@ nlohmann::json classesJson(const TruthClasses& c) {
              {{"median", c.edgeDisplacementTexelsMedian}, {"p95", c.edgeDisplacementTexelsP95}}},
             {"ambiguous", c.ambiguous},
             {"penumbra_mean_abs", c.penumbraMeanAbs},
+            {"umbra_light", c.umbraLight},
+            {"umbra_pixels", c.umbraPixels},
             {"pixels", c.count}};
 }
 

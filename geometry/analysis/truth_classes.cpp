@@ -32,7 +32,7 @@ void check(const TruthClassInput& in) {
 struct Tally {
     TruthClasses out;
     size_t interiorShadow = 0, interiorLit = 0, edge = 0, amb = 0, penumbra = 0;
-    double absSum = 0;
+    double absSum = 0, umbraSum = 0;
     std::vector<double> px, texels;
 
     [[nodiscard]] TruthClasses finish() {
@@ -43,6 +43,7 @@ struct Tally {
         out.edgeError = double(edge) / total;
         out.ambiguous = double(amb) / total;
         out.penumbraMeanAbs = penumbra ? absSum / double(penumbra) : 0.0;
+        out.umbraLight = out.umbraPixels ? umbraSum / double(out.umbraPixels) : 0.0;
         if (!px.empty()) {
             out.edgeDisplacementPxMedian = median(std::span(px));
             out.edgeDisplacementPxP95 = percentile(std::span(px), 95);
@@ -116,6 +117,10 @@ std::vector<TruthClasses> classify(const TruthClassInput& in, std::span<const in
                 ++t.penumbra;
                 t.absSum += std::abs(double(in.s[i]) - double(in.coverage[i]));
                 const bool rendered = renderedLit(i), truth = truthLit(i);
+                if (in.coverage[i] == 0.f && !nearEdge(x, y)) {
+                    ++t.out.umbraPixels;
+                    t.umbraSum += double(in.s[i]);
+                }
                 if (rendered != truth) {
                     if (nearEdge(x, y)) {
                         ++t.edge;

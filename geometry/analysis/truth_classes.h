@@ -46,6 +46,10 @@ struct TruthClasses {
     double edgeError = 0;           // rendered ≠ truth within 1 px of a truth edge
     double ambiguous = 0;           // left out of the three above
     double penumbraMeanAbs = 0;     // mean |s − c| over the counted, non-ambiguous pixels
+    // Light in the umbra: mean s over the non-ambiguous pixels the truth shadows at every sample,
+    // ≥ 1 px from a truth edge (light bleeding and leaks, partial light included); 0 when none.
+    double umbraLight = 0;
+    size_t umbraPixels = 0;
     // How far rendered edges lie from true ones, over the edge-error pixels: the width of the wrong
     // band each lies in, across the edge (from the nearest pixel whose truth is what was rendered
     // here to the nearest pixel rendered the other way, each less half a pixel: edges lie between
