@@ -239,6 +239,17 @@ TEST(SceneFile, GroundAloneIsAScene) {
     EXPECT_GT(f.scene.camera.far, f.scene.camera.near);
 }
 
+TEST(SceneFile, OccluderEdgeIsReadInWorldSpace) {
+    const fs::path dir = freshDir("edge");
+    const SceneFile f = loadSceneFile(
+        writeFile(dir / "edge.json", R"({"ground": {}, "occluder_edge": [[-2, 1.5, 0.25], [3, 1.5, -0.5]]})").string());
+    ASSERT_TRUE(f.scene.occluderEdge.has_value());
+    expectNear((*f.scene.occluderEdge)[0], {-2.f, 1.5f, 0.25f}, 0.f);
+    expectNear((*f.scene.occluderEdge)[1], {3.f, 1.5f, -0.5f}, 0.f);
+    const SceneFile none = loadSceneFile(writeFile(dir / "none.json", R"({"ground": {}})").string());
+    EXPECT_FALSE(none.scene.occluderEdge.has_value());
+}
+
 // ---- Errors -----------------------------------------------------------------------------------
 
 struct BadScene {
@@ -313,6 +324,14 @@ TEST(SceneFile, EveryErrorIsOneLineNamingTheFileAndTheKey) {
         {R"({"ground": {}, "paths": {"p": {"light": []}}})", "paths.p.light: expected a non-empty array"},
         {R"({"ground": {}, "paths": {"p": {"camera": [{"eye": [0, 0, 0], "target": [0, 0, 0]}]}}})",
          "paths.p.camera[0].target"},
+        // A NaN as nlohmann writes it (null), beyond float's range (infinite as a float), one point, the
+        // same point twice.
+        {R"({"ground": {}, "occluder_edge": [[0, null, 0], [1, 1, 0]]})", "occluder_edge[0][1]: expected a number"},
+        {R"({"ground": {}, "occluder_edge": [[0, 1, 0], [1e39, 1, 0]]})", "occluder_edge[1][0]: number out of range"},
+        {R"({"ground": {}, "occluder_edge": [[0, 1, 0]]})", "occluder_edge: expected 2 points"},
+        {R"({"ground": {}, "occluder_edge": [[0, 1, 0], [0, 1, 0]]})", "occluder_edge: the two points are the same"},
+        {R"({"ground": {}, "occluder_edge": [[0, 1, 0], [1, 1]]})", "occluder_edge[1]: expected 3 numbers"},
+        {R"({"ground": {}, "occluder_edge": "x"})", "occluder_edge: expected 2 points"},
     };
     const fs::path dir = freshDir("errors");
     int index = 0;

@@ -18,6 +18,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -386,6 +387,18 @@ void readGround(const Reader& r, const json& j, scene::Scene& scene) {
     scene.meshes.push_back(makeGround(scene.bounds(), size, height, color));
 }
 
+/// "occluder_edge": [[x,y,z], [x,y,z]], two distinct finite points in world space.
+void readOccluderEdge(const Reader& r, const json& j, scene::Scene& scene) {
+    if (!j.contains("occluder_edge")) return;
+    const json& v = j["occluder_edge"];
+    if (!v.is_array() || v.size() != 2)
+        r.fail("occluder_edge", "expected 2 points [[x,y,z], [x,y,z]], got " + describe(v));
+    const std::array<glm::vec3, 2> edge{r.vec3(v[0], element("occluder_edge", 0)),
+                                        r.vec3(v[1], element("occluder_edge", 1))};
+    if (!(glm::length(edge[1] - edge[0]) > 0.f)) r.fail("occluder_edge", "the two points are the same");
+    scene.occluderEdge = edge;
+}
+
 void readViews(const Reader& r, const json& j, SceneFile& f) {
     if (!j.contains("views")) return;
     const json& views = j["views"];
@@ -433,7 +446,8 @@ void readPaths(const Reader& r, const json& j, SceneFile& f) {
 
 SceneFile readSceneFile(const std::string& path, const json& j, const Progress& progress, std::optional<UpAxis> up) {
     const Reader r(path);
-    r.checkObject(j, "", {"name", "description", "meshes", "ground", "camera", "light", "views", "paths"});
+    r.checkObject(j, "",
+                  {"name", "description", "meshes", "ground", "camera", "light", "occluder_edge", "views", "paths"});
     SceneFile f;
     f.scene.name = j.contains("name") ? r.string(j["name"], "name") : fs::path(path).stem().string();
     if (j.contains("description")) (void)r.string(j["description"], "description");
@@ -449,6 +463,7 @@ SceneFile readSceneFile(const std::string& path, const json& j, const Progress& 
     f.scene.camera = j.contains("camera") ? r.camera(j["camera"], "camera", base) : base;
     const scene::DirectionalLight light = defaults.light ? *defaults.light : defaultLight();
     f.scene.light = j.contains("light") ? r.light(j["light"], "light", light) : light;
+    readOccluderEdge(r, j, f.scene);
     readViews(r, j, f);
     readPaths(r, j, f);
     return f;

@@ -13,6 +13,8 @@
 //     "ground": { "size": 200, "height": 0, "color": [r,g,b] },
 //     "camera": { "eye": [..], "target": [..], "up": [..], "fov_y": 60, "near": 0.5, "far": 1000 },
 //     "light": { "direction": [..] },
+//     "occluder_edge": [ [x,y,z], [x,y,z] ],      (a straight occluder edge, world space: the truth's
+//                                                  penumbra_width_error measures its shadow)
 //     "views": { "NAME": { "camera": {...}, "light": {...} } },
 //     "paths": { "NAME": { "camera": [ {"eye": [..], "target": [..]}, ... ], "light": [ [dx,dy,dz], ... ] } } }
 // File paths are relative to the scene file's folder. Camera and light objects may be partial:
@@ -57,7 +59,8 @@ struct SceneFile {
 /// kMaxSceneFileBytes, nested deeper than kMaxSceneFileDepth, not JSON, not an object, unknown
 /// keys, wrong types, numbers out of range, a model file that does not load (loadModel's message),
 /// no meshes and no ground, eye == target, near <= 0, far <= near, fov_y outside (0, 180), a zero
-/// light direction. `progress` sees the model loads, scaled to the whole file.
+/// light direction, an occluder_edge that is not two distinct finite points. `progress` sees the
+/// model loads, scaled to the whole file.
 /// `up`: the up axis of model files whose entry has no "up" (default: their format's).
 [[nodiscard]] SceneFile loadSceneFile(const std::string& path, const Progress& progress = {},
                                       std::optional<UpAxis> up = std::nullopt);

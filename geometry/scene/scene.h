@@ -3,7 +3,9 @@
 // (docs/design.md §2: "model no more of a scene than it needs").
 #include "geometry/scene/aabb.h"
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,6 +60,9 @@ struct Scene {
     std::vector<Mesh> meshes;
     Camera camera;
     DirectionalLight light;
+    /// A straight occluder edge (two distinct points, world space) whose shadow the truth's
+    /// penumbra-width metric measures (docs/design.md §4 "Soft truth"); none by default.
+    std::optional<std::array<glm::vec3, 2>> occluderEdge;
 
     [[nodiscard]] Aabb bounds() const noexcept; // S, world space
     [[nodiscard]] size_t triangleCount() const noexcept;
