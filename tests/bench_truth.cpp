@@ -69,6 +69,34 @@ static void BM_PrimaryHits(benchmark::State& state) {
 }
 BENCHMARK(BM_PrimaryHits)->Unit(benchmark::kMillisecond)->UseRealTime()->ComputeStatistics("min", fastest);
 
+/// sunVisibility() with the soft truth's 8 × 8 rays per receiver and a 0.53° sun, over the receivers
+/// (facing the light) of a 320 × 180 view: 64 rays each, in packets of 16 per receiver.
+static void BM_SunVisibility(benchmark::State& state) {
+    const Fixture& f = fixture();
+    static const PrimaryHits small = f.truth.primaryHits(f.scene.camera, 320, 180);
+    const glm::vec3 l = f.scene.light.l();
+    std::vector<glm::vec3> normals = small.normals;
+    size_t receivers = 0;
+    for (glm::vec3& n : normals) {
+        if (glm::dot(n, -l) > 0.f) ++receivers;
+        else n = glm::vec3(0.f); // not a receiver: not traced, as addTruth does
+    }
+    const int threads = static_cast<int>(state.range(0));
+    constexpr int kSamples = GroundTruth::kSunSamplesPerAxis;
+    for (auto _ : state) {
+        auto v = f.truth.sunVisibility(small.points, normals, l, glm::radians(0.53f), kSamples, threads);
+        benchmark::DoNotOptimize(v.data());
+    }
+    reportRays(state, receivers * kSamples * kSamples);
+}
+BENCHMARK(BM_SunVisibility)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->ComputeStatistics("min", fastest);
+
 /// BVH build over the 250k triangles (once per scene).
 static void BM_Build(benchmark::State& state) {
     const Fixture& f = fixture();

@@ -5,6 +5,7 @@
 //   [SECTION] GroundTruth ................................. PrimaryHits::hitCount, GroundTruth, epsilon
 //   [SECTION] Tracing rays ................................ traceOccluded, occluded, surfaceNormals, primaryHits,
 //                                                           coverage
+//   [SECTION] The sun's disk .............................. mix32, concentricDisk, sunVisibility
 
 #include "geometry/analysis/ground_truth.h"
 
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -169,12 +171,13 @@ void setLane(Packet& ray, int lane, const glm::vec3& org, const glm::vec3& dir, 
     ray.flags[lane] = 0;
 }
 
-void checkInputs(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, const glm::vec3& l) {
+void checkInputs(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                 const std::string& who = "GroundTruth::occluded") {
     if (points.size() != normals.size())
-        throw std::invalid_argument("GroundTruth::occluded: " + std::to_string(points.size()) + " points but " +
+        throw std::invalid_argument(who + ": " + std::to_string(points.size()) + " points but " +
                                     std::to_string(normals.size()) + " normals");
     if (!finite(l) || !(glm::length(l) > 0.f))
-        throw std::invalid_argument("GroundTruth::occluded: light direction must be finite and non-zero");
+        throw std::invalid_argument(who + ": light direction must be finite and non-zero");
 }
 
 } // namespace
@@ -187,7 +190,8 @@ struct GroundTruth::Impl {
     size_t triangles = 0;
     std::vector<std::string> meshNames; // per scene mesh
     std::vector<int> geomMesh;          // Embree geometry ID → scene mesh index (empty meshes get no ID)
-    float epsilonScale = 0.f;           // 0.01 · scene diagonal: the floor of ‖p‖∞ in epsilon()
+    std::optional<std::array<glm::vec3, 2>> occluderEdge; // the scene's, copied
+    float epsilonScale = 0.f; // 0.01 · scene diagonal: the floor of ‖p‖∞ in epsilon()
 
     std::mutex errorMutex;
     std::string error; // first Embree error since the last check
@@ -288,6 +292,7 @@ struct GroundTruth::Impl {
         rtcCommitScene(scene);
         throwIfError("building the BVH");
         epsilonScale = 0.01f * glm::length(bounds.extent());
+        occluderEdge = input.occluderEdge;
     }
 };
 
@@ -308,6 +313,11 @@ size_t GroundTruth::triangleCount() const noexcept { return impl_ ? impl_->trian
 const std::vector<std::string>& GroundTruth::meshNames() const noexcept {
     static const std::vector<std::string> none;
     return impl_ ? impl_->meshNames : none;
+}
+
+const std::optional<std::array<glm::vec3, 2>>& GroundTruth::occluderEdge() const noexcept {
+    static const std::optional<std::array<glm::vec3, 2>> none;
+    return impl_ ? impl_->occluderEdge : none;
 }
 
 float GroundTruth::epsilon(const glm::vec3& p) const noexcept {
@@ -562,6 +572,120 @@ std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, i
     for (size_t i = 0; i < lit.size(); ++i)
         lit[i] = hit[i] > 0.f ? lit[i] / hit[i] : std::numeric_limits<float>::quiet_NaN();
     return lit;
+}
+
+// ---- [SECTION] The sun's disk ---------------------------------------------------------------
+
+namespace {
+
+/// MurmurHash3's 32-bit finalizer: every input bit flips each output bit with probability ~1/2.
+constexpr uint32_t mix32(uint32_t h) noexcept {
+    h ^= h >> 16;
+    h *= 0x85ebca6bu;
+    h ^= h >> 13;
+    h *= 0xc2b2ae35u;
+    h ^= h >> 16;
+    return h;
+}
+
+/// The top 24 bits of h as a float in [0, 1).
+float unitFloat(uint32_t h) noexcept { return static_cast<float>(h >> 8) * 0x1p-24f; }
+
+/// A seed from the point's coordinates alone, so the jitter follows the point wherever it lies in
+/// the input and whichever thread traces it.
+uint32_t pointSeed(const glm::vec3& p) noexcept {
+    uint32_t h = mix32(std::bit_cast<uint32_t>(p.x) ^ 0x9e3779b9u);
+    h = mix32(h ^ std::bit_cast<uint32_t>(p.y));
+    return mix32(h ^ std::bit_cast<uint32_t>(p.z));
+}
+
+/// Shirley and Chiu's concentric map from the unit square [0, 1]² onto the unit disk: area
+/// preserving and continuous, so a stratified grid stays stratified on the disk.
+glm::vec2 concentricDisk(float u, float v) noexcept {
+    const float a = 2.f * u - 1.f, b = 2.f * v - 1.f;
+    if (a == 0.f && b == 0.f) return glm::vec2(0.f);
+    constexpr float kQuarterPi = 0.785398163397448f;
+    if (std::abs(a) > std::abs(b)) {
+        const float phi = kQuarterPi * (b / a);
+        return a * glm::vec2(std::cos(phi), std::sin(phi));
+    }
+    const float phi = 2.f * kQuarterPi - kQuarterPi * (a / b);
+    return b * glm::vec2(std::cos(phi), std::sin(phi));
+}
+
+/// Two unit vectors spanning the plane ⊥ d (unit): Duff et al.'s branchless orthonormal basis.
+std::array<glm::vec3, 2> perpendicularBasis(const glm::vec3& d) noexcept {
+    const float sign = std::copysign(1.f, d.z);
+    const float a = -1.f / (sign + d.z), b = d.x * d.y * a;
+    return {glm::vec3(1.f + sign * d.x * d.x * a, sign * b, -sign * d.x), glm::vec3(b, sign + d.y * d.y * a, -d.y)};
+}
+
+} // namespace
+
+std::vector<float> GroundTruth::sunVisibility(const std::vector<glm::vec3>& points,
+                                              const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                              float angularDiameterRad, int samplesPerAxis, int threads,
+                                              std::stop_token stop) const {
+    checkInputs(points, normals, l, "GroundTruth::sunVisibility");
+    constexpr float kPi = 3.14159265358979f;
+    if (!(angularDiameterRad >= 0.f && angularDiameterRad < kPi))
+        throw std::invalid_argument("GroundTruth::sunVisibility: the sun's angular diameter must lie in [0, pi) "
+                                    "radians");
+    if (samplesPerAxis < 1 || samplesPerAxis > kMaxSamplesPerAxis)
+        throw std::invalid_argument("GroundTruth::sunVisibility: samples per axis " + std::to_string(samplesPerAxis) +
+                                    " is outside 1.." + std::to_string(kMaxSamplesPerAxis));
+    if (!impl_) throw std::logic_error("GroundTruth::sunVisibility on a moved-from object");
+
+    const glm::vec3 toLight = -glm::normalize(l); // as traceOccluded: θ = 0 traces exactly its ray
+    const std::array<glm::vec3, 2> e = perpendicularBasis(toLight);
+    const float tanHalf = std::tan(0.5f * angularDiameterRad);
+    const int S = samplesPerAxis, samples = S * S;
+    // Each task takes whole points, so a point's count is one thread's: ~256 rays a task.
+    const size_t pointsPerTask = std::max<size_t>(1, 256 / size_t(samples));
+    const size_t tasks = (points.size() + pointsPerTask - 1) / pointsPerTask;
+    std::vector<float> visible(points.size(), 0.f);
+    parallelFor(tasks, resolveThreads(threads), stop, [&](size_t task) {
+        const size_t end = std::min(points.size(), (task + 1) * pointsPerTask);
+        for (size_t idx = task * pointsPerTask; idx < end; ++idx) {
+            const glm::vec3& p = points[idx];
+            const glm::vec3& n = normals[idx];
+            const float len = glm::length(n);
+            if (!finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len)) continue; // 0, untraced
+            const float eps = epsilon(p);
+            const glm::vec3 side = glm::dot(n, toLight) > 0.f ? n : -n;
+            const glm::vec3 origin = p + side * (eps / len);
+            const uint32_t seed = pointSeed(p);
+            int lit = 0;
+            for (int first = 0; first < samples; first += kLanes) {
+                RTCRay16 ray;
+                alignas(64) std::array<int, kLanes> valid{};
+                for (int i = 0; i < kLanes; ++i) {
+                    const int k = first + i;
+                    if (k >= samples) {
+                        setIdleLane(ray, i);
+                        continue;
+                    }
+                    glm::vec3 dir = toLight;
+                    if (tanHalf > 0.f) {
+                        const uint32_t h = mix32(seed ^ (0x9e3779b9u * uint32_t(k + 1)));
+                        const float u = (float(k % S) + unitFloat(h)) / float(S);
+                        const float v = (float(k / S) + unitFloat(mix32(h ^ 0x68e31da4u))) / float(S);
+                        const glm::vec2 d = tanHalf * concentricDisk(u, v);
+                        dir = glm::normalize(toLight + d.x * e[0] + d.y * e[1]);
+                    }
+                    setLane(ray, i, origin, dir, eps, kInf);
+                    valid[i] = -1;
+                }
+                RTCIntersectContext ctx = coherentContext();
+                rtcOccluded16(valid.data(), impl_->scene, &ctx, &ray);
+                for (int i = 0; i < kLanes; ++i)
+                    if (valid[i] && !(ray.tfar[i] < 0.f)) ++lit; // Embree sets tfar = −inf on a hit
+            }
+            visible[idx] = static_cast<float>(lit) / static_cast<float>(samples);
+        }
+    });
+    impl_->throwIfError("tracing sun rays");
+    return visible;
 }
 
 } // namespace geometry::analysis
