@@ -1,12 +1,14 @@
 #include "geometry/analysis/inspection.h"
 
 #include "geometry/analysis/ground_truth.h"
+#include "geometry/analysis/penumbra_width.h"
 #include "geometry/shadow/contact_distance.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 namespace geometry::analysis {
@@ -15,6 +17,35 @@ namespace {
 
 /// Per-pixel loops check the stop token once per this many pixels: well under a millisecond apart.
 constexpr size_t kPixelsPerStopCheck = 4096;
+
+/// The soft truth of addTruth: the sun's visible fraction per receiver and the figures over it.
+void addSoftTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, std::stop_token stop) {
+    in.sunVisibility.clear();
+    in.softTruth.reset();
+    const float diameterDeg = plan.light.angularDiameterDeg;
+    if (!(diameterDeg > 0.f)) return;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const double theta = double(diameterDeg) * std::numbers::pi / 180.0;
+    // Non-receivers get a zero normal: not traced, then NaN.
+    std::vector<glm::vec3> normals = in.geometricNormals;
+    for (size_t i = 0; i < normals.size(); ++i)
+        if (!in.receiver[i]) normals[i] = glm::vec3(0.f);
+    in.sunVisibility =
+        truth.sunVisibility(in.positions, normals, plan.l, float(theta), GroundTruth::kSunSamplesPerAxis, 0, stop);
+    for (size_t i = 0; i < in.sunVisibility.size(); ++i)
+        if (!in.receiver[i]) in.sunVisibility[i] = nan;
+    SoftTruthStats soft;
+    soft.meanAbs = softMeanAbs(in.shadow, in.sunVisibility, in.receiver);
+    soft.angularDiameterDeg = diameterDeg;
+    soft.raysPerPixel = GroundTruth::kSunSamplesPerAxis * GroundTruth::kSunSamplesPerAxis;
+    if (const auto& edge = truth.occluderEdge()) {
+        throwIfStopped(stop);
+        soft.penumbraWidthError = penumbraWidth(in.positions, in.shadow, in.receiver, plan.l, *edge, theta).error;
+        soft.penumbraWidthErrorTruth =
+            penumbraWidth(in.positions, in.sunVisibility, in.receiver, plan.l, *edge, theta).error;
+    }
+    in.softTruth = soft;
+}
 
 } // namespace
 
@@ -106,6 +137,7 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
     throwIfStopped(stop);
     in.meshNames = truth.meshNames();
     in.meshTruthClasses = truthClassesByGroup(input, in.mesh, int(in.meshNames.size()));
+    addSoftTruth(in, plan, truth, stop);
 }
 
 std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
@@ -127,9 +159,11 @@ std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, 
         {"class",
          "TruthClass: 0 not counted, 1 agrees, 2 interior false shadow, 3 interior false lit, "
          "4 edge error, 5 ambiguous",
-         {}}};
+         {}},
+        {"visibility", "soft truth: fraction of the sun's disk visible (NaN: point sun or not a receiver)", {}}};
     for (auto& layer : layers) layer.values.assign(n, nan);
-    enum { ViewDepth, Split, NormalX, NormalY, NormalZ, NDotL, M, S, Coverage, Class }; // the order above
+    enum { ViewDepth, Split, NormalX, NormalY, NormalZ, NDotL, M, S, Coverage, Class, Visibility }; // the order above
+    const bool soft = in.sunVisibility.size() == n;
     const glm::vec3 toLight = -glm::normalize(l);
     for (size_t i = 0; i < n; ++i) {
         const bool seen = in.aux[i].z >= 0.f;
@@ -145,6 +179,7 @@ std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, 
         layers[M].values[i] = in.m[i] > 0.f && in.m[i] < kSingularM ? in.m[i] : nan;
         layers[S].values[i] = in.shadow[i];
         layers[Coverage].values[i] = in.receiver[i] ? in.coverage[i] : nan;
+        if (soft) layers[Visibility].values[i] = in.sunVisibility[i];
     }
     return layers;
 }
@@ -179,6 +214,15 @@ void addInspectionMetrics(nlohmann::json& j, const Inspection& in) {
                       {"pixels", in.truth->count},
                       {"samples_per_pixel", in.truthSamples * in.truthSamples}};
         if (in.truthClasses) j["truth"].update(classesJson(*in.truthClasses));
+        if (const auto& soft = in.softTruth) {
+            // NaN figures go in as NaN: nlohmann writes them as null, as elsewhere in metrics.json.
+            j["truth"]["soft_mean_abs"] = soft->meanAbs;
+            j["truth"]["sun_angular_diameter_deg"] = soft->angularDiameterDeg;
+            j["truth"]["sun_rays_per_pixel"] = soft->raysPerPixel;
+            if (soft->penumbraWidthError) j["truth"]["penumbra_width_error"] = *soft->penumbraWidthError;
+            if (soft->penumbraWidthErrorTruth)
+                j["truth"]["penumbra_width_error_truth"] = *soft->penumbraWidthErrorTruth;
+        }
         for (size_t s = 0; s < in.splitTruthClasses.size() && s < j["splits"].size(); ++s)
             j["splits"][s]["truth"] = classesJson(in.splitTruthClasses[s]);
         // Meshes the camera sees, by name; a repeated name gets "#index" so no mesh hides another.

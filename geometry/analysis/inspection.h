@@ -19,6 +19,17 @@ namespace geometry::analysis {
 
 class GroundTruth;
 
+/// The soft truth's figures (docs/design.md §4 "Soft truth"): the rendered s against the fraction v
+/// of the sun's disk each receiver sees.
+struct SoftTruthStats {
+    double meanAbs = 0;            // soft_mean_abs: mean |s − v| over the receivers (NaN: none)
+    double angularDiameterDeg = 0; // the sun's, from the plan
+    int raysPerPixel = 0;          // GroundTruth::kSunSamplesPerAxis²
+    // With a scene's occluder edge (Scene::occluderEdge): penumbraWidth's error measured on s, and
+    // on v (the measurement's own error); NaN when too few pixels cross the penumbra.
+    std::optional<double> penumbraWidthError, penumbraWidthErrorTruth;
+};
+
 struct Inspection {
     int width = 0, height = 0;
     std::vector<float> shadow;                    // s per pixel
@@ -38,6 +49,11 @@ struct Inspection {
     std::vector<float> coverage;
     std::vector<uint8_t> ambiguity;
     std::vector<TruthClass> classes;
+    // With truth and a sun of non-zero size (plan.light.angularDiameterDeg > 0): the fraction v of
+    // the sun's disk each receiver sees (GroundTruth::sunVisibility; NaN for non-receivers), and
+    // the figures over it. Empty and nullopt for a point sun.
+    std::vector<float> sunVisibility;
+    std::optional<SoftTruthStats> softTruth;
 
     AliasingStats aliasing;
     std::optional<TruthStats> truth;
@@ -71,7 +87,10 @@ struct FrameReadback {
 /// - the ambiguity of each receiver: the terminator (|N·L| < 0.1 by the geometric normal), a normal
 ///   flip (shading and geometric normal on different sides of the light), or a contact (an occluder
 ///   within contactDistance() of the receiver along the light);
-/// - the TruthClasses overall, per split and per scene mesh.
+/// - the TruthClasses overall, per split and per scene mesh;
+/// - with plan.light.angularDiameterDeg > 0, the soft truth: sunVisibility over
+///   GroundTruth::kSunSamplesPerAxis² rays per receiver (geometric normals), softTruth's
+///   soft_mean_abs and, where the truth's scene has an occluder edge, the penumbra width errors.
 /// Throws std::invalid_argument for samplesPerAxis outside 1..GroundTruth::kMaxSamplesPerAxis, and
 /// Cancelled once `stop` is requested, leaving `in` partly updated (discard it).
 void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis = 1,
@@ -99,14 +118,17 @@ struct PixelLayer {
 
 /// The per-pixel quantities behind every figure of an inspection with truth (addTruth): view_depth,
 /// split, normal_x/y/z (geometric), n_dot_l (geometric normal · direction to the light), m, s,
-/// coverage (the truth's lit fraction c) and class (TruthClass as a number). Pixels that see no
+/// coverage (the truth's lit fraction c), class (TruthClass as a number) and visibility (the soft
+/// truth's fraction of the sun's disk seen; NaN without one, or off the receivers). Pixels that see no
 /// geometry hold NaN (split: −1); m at the singular cap is NaN. `eye` and unit `viewDir` place the
 /// camera for the view depth. Throws std::invalid_argument without truth.
 [[nodiscard]] std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
                                                   const glm::vec3& l);
 
 /// metrics.json fields: aliasing{mean,p50,p95,max,undersampled,singular}; with truth, truth{false_shadow,
-/// false_lit, mean_abs, samples_per_pixel, the classes}, splits[i].truth and meshes[name].truth.
+/// false_lit, mean_abs, samples_per_pixel, the classes}, splits[i].truth and meshes[name].truth; with
+/// soft truth, truth{soft_mean_abs, sun_angular_diameter_deg, sun_rays_per_pixel} and, with an occluder
+/// edge, truth{penumbra_width_error, penumbra_width_error_truth} (NaN written as null).
 void addInspectionMetrics(nlohmann::json& j, const Inspection& in);
 
 } // namespace geometry::analysis

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -103,6 +104,19 @@ TruthStats truthStats(std::span<const float> s, std::span<const uint8_t> occlude
     st.falseLit = double(falseLit) / n;
     st.meanAbs = absSum / n;
     return st;
+}
+
+double softMeanAbs(std::span<const float> s, std::span<const float> v, std::span<const uint8_t> receiver) {
+    requireSameSize(s.size(), v.size(), "softMeanAbs");
+    requireSameSize(s.size(), receiver.size(), "softMeanAbs");
+    double sum = 0;
+    size_t count = 0;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (!receiver[i] || !std::isfinite(s[i]) || !std::isfinite(v[i])) continue;
+        sum += std::abs(double(s[i]) - double(v[i]));
+        ++count;
+    }
+    return count ? sum / double(count) : std::numeric_limits<double>::quiet_NaN();
 }
 
 double texelUtilization(std::span<const glm::vec4> aux, std::span<const uint8_t> receiver, int split, int resolution) {

@@ -51,6 +51,11 @@ struct TruthStats {
 [[nodiscard]] TruthStats truthStats(std::span<const float> s, std::span<const uint8_t> occluded,
                                     std::span<const uint8_t> receiver);
 
+/// Mean |s − v| over the receiver pixels where both are finite: the rendered shadow factor against
+/// the soft truth's sun visibility v (docs/design.md §4 "Soft truth"). NaN when no pixel counts.
+/// Throws std::invalid_argument when the sizes differ.
+[[nodiscard]] double softMeanAbs(std::span<const float> s, std::span<const float> v, std::span<const uint8_t> receiver);
+
 /// Texel utilization (docs/design.md §4): the fraction of split `split`'s resolution² texels that hold
 /// at least one receiver pixel's sample point. aux[i] = (u, v in texels of the split's map,
 /// split index, map depth); a pixel belongs to the split when its index rounds to `split`, and
