@@ -221,6 +221,19 @@ void Dashboard::drawStatsTable() {
                 },
                 "Median distance from a misplaced shadow edge to the true one, in texels; receivers whose truth is "
                 "ambiguous (terminator, shading and geometric normals disagree), left out of the classes");
+            bool soft = false; // the soft truth's row only where a side has one (light.angular_diameter_deg > 0)
+            for (int i = 0; i < sides; ++i) soft = soft || (insp(i) && insp(i)->softTruth);
+            if (soft)
+                row(
+                    "soft truth |s − v|",
+                    [&](int i) {
+                        const auto* in = insp(i);
+                        if (!in || !in->softTruth) return std::string("–");
+                        return fmt("%.4f", in->softTruth->meanAbs) +
+                               fmt(" (sun %.2f°)", in->softTruth->angularDiameterDeg);
+                    },
+                    "soft_mean_abs (docs/design.md §4 \"Soft truth\"): mean |s − v| over the receivers, v the "
+                    "fraction of the sun's disk each one sees, traced with 64 rays");
             row(
                 "texel utilization",
                 [&](int i) {
