@@ -1,8 +1,11 @@
 // The filters of issue 20 on OSMesa at small sizes (docs/filters.md): every filter with every warp
 // and split count, light bleeding of the moment filters on a planted overlap, and the receiver-plane
 // bias against acne.
+#include "geometry/analysis/ground_truth.h"
+#include "geometry/io/scene_file.h"
 #include "geometry/scene/builtin_scenes.h"
 #include "renderer/context.h"
+#include "renderer/inspection.h"
 #include "renderer/renderer.h"
 
 #include "render_bench_util.h"
@@ -129,4 +132,41 @@ TEST(Filters, ReceiverPlaneBiasRemovesAcneForThePcfFamily) {
         EXPECT_LT(dark(filter, BiasType::ReceiverPlane), 0.01) << int(filter);
     }
     EXPECT_LT(dark(FilterType::Pcss, BiasType::ReceiverPlane), 0.01); // PCSS always works on the plane
+}
+
+// Pole over plane (resources/scenes/penumbra.json: the plane scene's pole 0 close up, its silhouette
+// as the occluder edge) under a 2° sun: PCSS's penumbra at the ground is within 20 % of the sun
+// disk's, whose full width is the occluder's distance × tan 2° (truth.penumbra_width_error), and its
+// mean |s − v| against the ray-traced sun is below 5×5 PCF's.
+TEST(Filters, PcssPenumbraMatchesTheSunAndBeatsPcf) {
+    const auto file =
+        geometry::io::resolveScene(std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/penumbra.json");
+    Scene scene = file.scene;
+    scene.camera = file.views.at("closeup").camera;
+    scene.light = file.views.at("closeup").light;
+    ASSERT_TRUE(scene.occluderEdge.has_value());
+    Bench b(scene);
+    const geometry::analysis::GroundTruth truth(scene);
+    const auto measure = [&](FilterType type) {
+        ShadowSettings s;
+        s.filter.type = type;
+        s.filter.kernel = 5;
+        s.light.angularDiameterDeg = 2.f;
+        const ShadowPlan plan = b.render(s, {480, 270});
+        const auto in = renderer::inspect(*b.r, plan, &truth);
+        EXPECT_TRUE(in.softTruth.has_value());
+        return *in.softTruth;
+    };
+    const auto pcss = measure(FilterType::Pcss), pcf = measure(FilterType::Pcf);
+    std::printf("pcss: width error %.3f (truth's own %.3f), soft_mean_abs %.4f; pcf 5x5: width error %.3f, "
+                "soft_mean_abs %.4f\n",
+                pcss.penumbraWidthError.value_or(NAN), pcss.penumbraWidthErrorTruth.value_or(NAN), pcss.meanAbs,
+                pcf.penumbraWidthError.value_or(NAN), pcf.meanAbs);
+    ASSERT_TRUE(pcss.penumbraWidthErrorTruth && std::abs(*pcss.penumbraWidthErrorTruth) < 0.05)
+        << "the view resolves the penumbra, so the measurement itself is exact to 5 %";
+    ASSERT_TRUE(pcss.penumbraWidthError.has_value());
+    EXPECT_LT(std::abs(*pcss.penumbraWidthError), 0.2);
+    EXPECT_LT(pcss.meanAbs, pcf.meanAbs);
+    EXPECT_LT(*pcf.penumbraWidthError, -0.5)
+        << "5x5 PCF's fixed kernel is far narrower here: the case tells them apart";
 }
