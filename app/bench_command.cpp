@@ -114,7 +114,9 @@ void addBenchCommand(CLI::App& cmd, BenchOptions& o) {
     cmd.add_option("--x", o.x, "Trade-off chart x axis")
         ->check(CLI::IsMember(ui::charts::tradeoffXNames()))
         ->capture_default_str();
-    cmd.add_option("--y", o.y, "Trade-off chart y axis (interior, edge, misclassified need --truth; flicker --path)")
+    cmd.add_option("--y", o.y,
+                   "Trade-off chart y axis (interior, edge, misclassified, umbra need --truth; soft --truth and "
+                   "light.angular_diameter_deg > 0; flicker --path)")
         ->check(CLI::IsMember(ui::charts::tradeoffYNames()))
         ->capture_default_str();
 }
@@ -124,6 +126,7 @@ namespace {
 struct Row {
     std::string config, preset, view;
     double gamma = 0, gpuMs = 0, cpuMs = 0, p95 = 0, falseLit = 0, falseShadow = 0, memoryMiB = 0, shadowMs = 0;
+    double soft = NAN; // soft_mean_abs, with truth and a sun of non-zero size
     uint64_t shadowTriangles = 0, shadowTrianglesWithoutLod = 0;
     geometry::analysis::TruthClasses classes; // with truth
     bool truth = false;
@@ -148,6 +151,8 @@ ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, con
             const double figure = yAxis == TradeoffY::P95        ? std::log(r.p95)
                                   : yAxis == TradeoffY::Interior ? k.interiorFalseShadow + k.interiorFalseLit
                                   : yAxis == TradeoffY::Edge     ? k.edgeError
+                                  : yAxis == TradeoffY::Soft     ? r.soft
+                                  : yAxis == TradeoffY::Umbra    ? k.umbraLight
                                                                  : r.falseLit + r.falseShadow;
             if (!std::isfinite(cost) || !std::isfinite(figure)) continue;
             x += cost;
@@ -180,7 +185,8 @@ int runBench(const BenchOptions& o) {
     const ui::charts::TradeoffX xAxis = ui::charts::parseTradeoffX(o.x).value_or(ui::charts::TradeoffX::GpuMs);
     const ui::charts::TradeoffY yAxis = ui::charts::parseTradeoffY(o.y).value_or(ui::charts::TradeoffY::P95);
     const bool needsTruth = yAxis == ui::charts::TradeoffY::Interior || yAxis == ui::charts::TradeoffY::Edge ||
-                            yAxis == ui::charts::TradeoffY::Misclassified;
+                            yAxis == ui::charts::TradeoffY::Misclassified || yAxis == ui::charts::TradeoffY::Soft ||
+                            yAxis == ui::charts::TradeoffY::Umbra;
     if (needsTruth && !o.truth.enabled) throw std::invalid_argument("--y " + o.y + " needs --truth");
     if (yAxis == ui::charts::TradeoffY::Flicker && o.path.empty())
         throw std::invalid_argument("--y flicker needs --path");
@@ -231,6 +237,7 @@ int runBench(const BenchOptions& o) {
                 row.falseLit = in.truth->falseLit;
                 row.falseShadow = in.truth->falseShadow;
                 if (in.truthClasses) row.classes = *in.truthClasses;
+                if (in.softTruth) row.soft = in.softTruth->meanAbs;
             }
             rows.push_back(row);
             std::cerr << "[" << rows.size() << "/" << total << "] " << cfg.label << " @ " << viewName << ": GPU "
@@ -257,7 +264,7 @@ int runBench(const BenchOptions& o) {
         csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
                "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
                "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam,shadow_ms_median,"
-               "shadow_triangles,shadow_triangles_without_lod\n";
+               "shadow_triangles,shadow_triangles_without_lod,soft_mean_abs,umbra_light\n";
         for (const Row& w : rows) {
             csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
                 << w.cpuMs << ',' << w.p95 << ',';
@@ -275,7 +282,11 @@ int runBench(const BenchOptions& o) {
             const renderer::PathFigures& f = paths[size_t(cfg - configs.begin())];
             if (path) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
             else csv << ",,,,";
-            csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << '\n';
+            csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << ',';
+            if (std::isfinite(w.soft)) csv << w.soft;
+            csv << ',';
+            if (w.truth) csv << c.umbraLight;
+            csv << '\n';
         }
         if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
     }

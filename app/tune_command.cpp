@@ -34,7 +34,8 @@ void addTuneCommand(CLI::App& cmd, TuneCommandOptions& o) {
     cmd.add_option("--target", o.target,
                    "KEY=VALUE[,KEY=VALUE...]: the figures to reach, each at or below its value. Keys: p95 (aliasing "
                    "m), interior (interior false shadow + false lit), edge (edge error), misclassified (false shadow "
-                   "+ false lit); fractions of the receiver pixels")
+                   "+ false lit); fractions of the receiver pixels; soft (mean |s - v| against the sun's disk: set "
+                   "light.angular_diameter_deg > 0), umbra (mean s in the truth's umbra: light bleeding)")
         ->required();
     cmd.add_option("--space", o.spaces,
                    "KEY=v1,v2,...: search these values of a setting (replaces its default candidates, or adds the "

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -91,6 +92,43 @@ TEST(Bench, WritesOneRowPerConfigurationAndViewAndTheTradeoffChart) {
             red += p[0] > 190 && p[1] < 80 && p[2] < 80;
         }
     EXPECT_GT(red, 100u);
+}
+
+// The filters of issue 20 in a bench sweep with a soft sun: each row has soft_mean_abs and
+// umbra_light, PCSS's soft error is below hard PCF's, and --y soft draws the chart from them.
+TEST(Bench, SweepsTheNewFiltersAgainstASoftSun) {
+    const auto dir = testutil::freshDir("bench_filters");
+    const auto r = runShadowscope("bench --backend osmesa --scene " + std::string(SHADOWSCOPE_SOURCE_DIR) +
+                                  "/resources/scenes/penumbra.json --sweep filter.type=pcf,pcss,esm,evsm2,evsm4,msm "
+                                  "--set light.angular_diameter_deg=2 --frames 1 --warmup 1 --size 240x135 --truth "
+                                  "--y soft --out " +
+                                  dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto rows = readCsv(dir / "results.csv");
+    ASSERT_EQ(rows.size(), 1u + 6) << slurp(dir / "results.csv");
+    const auto& header = rows[0];
+    const auto col = [&](const std::string& name) {
+        return size_t(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    ASSERT_LT(col("soft_mean_abs"), header.size());
+    ASSERT_LT(col("umbra_light"), header.size());
+    double pcf = NAN, pcss = NAN;
+    for (size_t i = 1; i < rows.size(); ++i) {
+        const double soft = std::stod(rows[i][col("soft_mean_abs")]);
+        EXPECT_GE(soft, 0.0);
+        EXPECT_LT(soft, 0.5);
+        const double umbra = std::stod(rows[i][col("umbra_light")]);
+        EXPECT_GE(umbra, 0.0);
+        EXPECT_LE(umbra, 1.0);
+        if (rows[i][0].find("filter.type=pcf") != std::string::npos) pcf = soft;
+        if (rows[i][0].find("filter.type=pcss") != std::string::npos) pcss = soft;
+    }
+    EXPECT_LT(pcss, pcf);
+    EXPECT_NE(slurp(dir / "tradeoff.svg").find("soft_mean_abs"), std::string::npos) << "the chart's y axis";
+    // soft needs ground truth.
+    const auto noTruth = runShadowscope("bench --backend osmesa --scene plane --frames 1 --size 64x48 --y soft --out " +
+                                        (dir / "x").string());
+    EXPECT_EQ(noTruth.exitCode, 2) << noTruth.output;
 }
 
 TEST(Bench, BadSweepsAreOneLineErrors) {

@@ -101,6 +101,23 @@ TEST(TuneTarget, ViolationRatioAndMisses) {
     EXPECT_TRUE(std::isinf(targetViolation(f, t)));
 }
 
+// The soft-shadow keys: soft (soft_mean_abs against the sun's disk) and umbra (umbra_light); a figure
+// the measurement could not give (no sun size) misses the target instead of meeting it.
+TEST(TuneTarget, SoftAndUmbraKeys) {
+    const TuneTarget t = parseTuneTarget("soft=0.01,umbra=0.02");
+    EXPECT_EQ(t.soft, 0.01);
+    EXPECT_EQ(t.umbra, 0.02);
+    EXPECT_FALSE(t.empty());
+    EXPECT_EQ(formatTuneTarget(t), "soft=0.01,umbra=0.02");
+    TuneFigures f;
+    f.soft = 0.005;
+    f.umbra = 0.0401;
+    EXPECT_EQ(describeMisses(f, t), "umbra 0.0401 > 0.02");
+    f.soft = NAN; // a point sun: no soft truth
+    EXPECT_TRUE(std::isinf(targetViolation(f, t)));
+    EXPECT_THROW((void)parseTuneTarget("soft=1,soft=2"), std::invalid_argument);
+}
+
 TEST(TuneFigures, CombiningViewsTakesTheWorstAccuracyAndTheSummedTime) {
     TuneFigures a, b;
     a.p95 = 1;

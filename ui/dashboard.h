@@ -283,7 +283,8 @@ private:
         struct Figures {
             std::string label, preset;
             double gpuMs = 0, cpuMs = 0, memoryMiB = 0, p95 = 0;
-            double interior = NAN, edge = NAN, misclassified = NAN; // with ground truth on
+            double interior = NAN, edge = NAN, misclassified = NAN, umbra = NAN; // with ground truth on
+            double soft = NAN;    // with ground truth and a sun of non-zero size
             double flicker = NAN; // world-space, along `path` (when the sweep ran with one)
         };
         std::vector<Config> configs;

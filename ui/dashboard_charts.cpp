@@ -117,11 +117,13 @@ void Dashboard::drawTradeoffTab() {
     widgetMapRecord("tradeoff.x");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7);
-    if (ImGui::Combo("y", &y, "p95\0interior\0edge\0misclassified\0flicker\0")) s.y = charts::TradeoffY(y);
+    if (ImGui::Combo("y", &y, "p95\0interior\0edge\0misclassified\0flicker\0soft\0umbra\0")) s.y = charts::TradeoffY(y);
     widgetMapRecord("tradeoff.y");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("interior, edge and misclassified need ground truth (Views); flicker, a path of the scene "
-                          "file that each configuration walks (world-space flicker, 10 frames)");
+        ImGui::SetTooltip("interior, edge, misclassified and umbra (light in the truth's umbra) need ground truth "
+                          "(Views); soft (mean |s - v| against the sun's disk) also a sun size "
+                          "(light.angular_diameter_deg > 0); flicker, a path of the scene file that each "
+                          "configuration walks (world-space flicker, 10 frames)");
     if (s.y == charts::TradeoffY::Flicker) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
@@ -154,6 +156,8 @@ std::vector<charts::TradeoffPoint> Dashboard::tradeoffResults() const {
                          : sweep_.y == charts::TradeoffY::Interior      ? f.interior
                          : sweep_.y == charts::TradeoffY::Edge          ? f.edge
                          : sweep_.y == charts::TradeoffY::Misclassified ? f.misclassified
+                         : sweep_.y == charts::TradeoffY::Soft          ? f.soft
+                         : sweep_.y == charts::TradeoffY::Umbra         ? f.umbra
                                                                         : f.flicker;
         points.push_back({f.label, f.preset, x, y});
     }
@@ -210,8 +214,10 @@ void Dashboard::stepTradeoffSweep() {
         if (const auto& t = m.inspection.truthClasses) {
             f.interior = t->interiorFalseShadow + t->interiorFalseLit;
             f.edge = t->edgeError;
+            f.umbra = t->umbraLight;
         }
         if (const auto& t = m.inspection.truth) f.misclassified = t->falseShadow + t->falseLit;
+        if (const auto& t = m.inspection.softTruth) f.soft = t->meanAbs;
         const auto path = scene_.file.paths.find(s.runningPath);
         if (path != scene_.file.paths.end() && scene_.truth)
             f.flicker = renderer::measurePath(*s.renderer, cfg.settings, scene.bounds(),

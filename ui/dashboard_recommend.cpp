@@ -91,7 +91,8 @@ void Dashboard::drawRecommendControls() {
     widgetMapRecord("recommend.target");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
-            "KEY=VALUE,...: p95 (aliasing m), interior, edge, misclassified (fractions of the receivers)");
+            "KEY=VALUE,...: p95 (aliasing m), interior, edge, misclassified (fractions of the receivers), soft "
+            "(mean |s - v| against the sun's disk; needs light.angular_diameter_deg > 0), umbra (light in the umbra)");
     ImGui::SameLine();
     if (!r.running) {
         if (ImGui::SmallButton("Recommend")) (void)startRecommend(r.target, r.budget);

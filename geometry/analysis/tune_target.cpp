@@ -50,6 +50,8 @@ std::vector<TargetTerm> terms(const TuneFigures& f, const TuneTarget& t) {
     if (t.interior) out.push_back({f.interior, *t.interior, kFractionEpsilon, "interior"});
     if (t.edge) out.push_back({f.edge, *t.edge, kFractionEpsilon, "edge"});
     if (t.misclassified) out.push_back({f.misclassified, *t.misclassified, kFractionEpsilon, "misclassified"});
+    if (t.soft) out.push_back({f.soft, *t.soft, kFractionEpsilon, "soft"});
+    if (t.umbra) out.push_back({f.umbra, *t.umbra, kFractionEpsilon, "umbra"});
     return out;
 }
 
@@ -75,7 +77,7 @@ TuneTarget parseTuneTarget(std::string_view text) {
     const auto bad = [&](const std::string& why) {
         return std::invalid_argument("--target " + std::string(text) + ": " + why);
     };
-    if (text.empty()) throw bad("empty (keys: p95, interior, edge, misclassified)");
+    if (text.empty()) throw bad("empty (keys: p95, interior, edge, misclassified, soft, umbra)");
     for (std::string_view item : splitCommas(text)) {
         const size_t eq = item.find('=');
         if (eq == std::string_view::npos) throw bad("'" + std::string(item) + "' is not KEY=VALUE");
@@ -93,8 +95,10 @@ TuneTarget parseTuneTarget(std::string_view text) {
                                       : key == "interior"      ? &t.interior
                                       : key == "edge"          ? &t.edge
                                       : key == "misclassified" ? &t.misclassified
+                                      : key == "soft"          ? &t.soft
+                                      : key == "umbra"         ? &t.umbra
                                                                : nullptr;
-        if (!slot) throw bad("unknown key '" + key + "' (keys: p95, interior, edge, misclassified)");
+        if (!slot) throw bad("unknown key '" + key + "' (keys: p95, interior, edge, misclassified, soft, umbra)");
         if (*slot) throw bad("'" + key + "' given twice");
         *slot = v;
     }
@@ -110,6 +114,8 @@ std::string formatTuneTarget(const TuneTarget& t) {
     add("interior", t.interior);
     add("edge", t.edge);
     add("misclassified", t.misclassified);
+    add("soft", t.soft);
+    add("umbra", t.umbra);
     return out;
 }
 
@@ -119,7 +125,9 @@ TuneFigures tuneFigures(const Inspection& in, double frameMs, uint64_t memoryByt
     if (in.truthClasses && in.truthClasses->count) {
         f.interior = in.truthClasses->interiorFalseShadow + in.truthClasses->interiorFalseLit;
         f.edge = in.truthClasses->edgeError;
+        f.umbra = in.truthClasses->umbraLight;
     }
+    if (in.softTruth) f.soft = in.softTruth->meanAbs;
     if (in.truth && in.truth->count) f.misclassified = in.truth->falseShadow + in.truth->falseLit;
     f.frameMs = frameMs;
     f.memoryBytes = memoryBytes;
@@ -139,6 +147,8 @@ TuneFigures combineViews(const std::vector<TuneFigures>& views) noexcept {
         out.interior = worst(out.interior, v.interior);
         out.edge = worst(out.edge, v.edge);
         out.misclassified = worst(out.misclassified, v.misclassified);
+        out.soft = worst(out.soft, v.soft);
+        out.umbra = worst(out.umbra, v.umbra);
         out.frameMs += v.frameMs;
         out.memoryBytes = std::max(out.memoryBytes, v.memoryBytes);
     }

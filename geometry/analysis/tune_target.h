@@ -18,10 +18,14 @@ struct TuneTarget {
     std::optional<double> interior;      // interior false shadow + interior false lit (fractions)
     std::optional<double> edge;          // edge error (fraction)
     std::optional<double> misclassified; // false shadow + false lit at the pixel centre (fraction)
-    [[nodiscard]] bool empty() const noexcept { return !p95 && !interior && !edge && !misclassified; }
+    std::optional<double> soft;          // soft_mean_abs: mean |s − v| against the sun's disk (needs its size)
+    std::optional<double> umbra;         // umbra_light: mean s in the truth's umbra (light bleeding, leaks)
+    [[nodiscard]] bool empty() const noexcept {
+        return !p95 && !interior && !edge && !misclassified && !soft && !umbra;
+    }
 };
 
-/// "p95=2,interior=0.001": keys p95, interior, edge, misclassified, each once, values finite and
+/// "p95=2,interior=0.001": keys p95, interior, edge, misclassified, soft, umbra, each once, values finite and
 /// ≥ 0. Throws std::invalid_argument (one line, naming --target) otherwise.
 [[nodiscard]] TuneTarget parseTuneTarget(std::string_view text);
 /// The target as parseTuneTarget reads it back.
@@ -30,7 +34,7 @@ struct TuneTarget {
 /// One configuration's figures (over all views: the worst accuracy, the summed time).
 struct TuneFigures {
     static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-    double p95 = kNaN, interior = kNaN, edge = kNaN, misclassified = kNaN;
+    double p95 = kNaN, interior = kNaN, edge = kNaN, misclassified = kNaN, soft = kNaN, umbra = kNaN;
     double frameMs = kNaN;    // median GPU frame time (CPU when the GPU timer gave nothing)
     uint64_t memoryBytes = 0; // shadow-map memory
 };

@@ -8,7 +8,7 @@ const std::vector<std::string>& tradeoffXNames() {
 }
 
 const std::vector<std::string>& tradeoffYNames() {
-    static const std::vector<std::string> names{"p95", "interior", "edge", "misclassified", "flicker"};
+    static const std::vector<std::string> names{"p95", "interior", "edge", "misclassified", "flicker", "soft", "umbra"};
     return names;
 }
 
@@ -40,6 +40,8 @@ std::string tradeoffYLabel(TradeoffY y) {
     case TradeoffY::Edge: return "edge error (fraction)";
     case TradeoffY::Misclassified: return "misclassified (fraction)";
     case TradeoffY::Flicker: return "world-space flicker, mean over the path (fraction)";
+    case TradeoffY::Soft: return "mean |s - v| against the sun's disk (soft_mean_abs)";
+    case TradeoffY::Umbra: return "light in the umbra, mean s (umbra_light)";
     }
     return "";
 }

@@ -13,10 +13,10 @@ namespace ui::charts {
 
 /// The x axis: a cost. The y axis: an accuracy figure (lower is better for both).
 enum class TradeoffX { GpuMs, CpuMs, MemoryMiB };
-enum class TradeoffY { P95, Interior, Edge, Misclassified, Flicker };
+enum class TradeoffY { P95, Interior, Edge, Misclassified, Flicker, Soft, Umbra };
 
 /// Axis names as `--x` / `--y` spell them: gpu_ms, cpu_ms, memory_mib; p95, interior, edge,
-/// misclassified, flicker.
+/// misclassified, flicker, soft (soft_mean_abs against the sun's disk), umbra (umbra_light).
 [[nodiscard]] const std::vector<std::string>& tradeoffXNames();
 [[nodiscard]] const std::vector<std::string>& tradeoffYNames();
 [[nodiscard]] std::optional<TradeoffX> parseTradeoffX(std::string_view name) noexcept;
