@@ -24,13 +24,6 @@ namespace {
 struct Bench : testutil::SceneBench {
     using SceneBench::SceneBench;
 
-    ShadowPlan render(const ShadowSettings& settings, Viewport vp) {
-        context->makeCurrent();
-        const ShadowPlan plan = planShadows(settings, scene.bounds(), scene.camera, scene.light, vp);
-        r->render(plan, vp, 64);
-        return plan;
-    }
-
     /// Mean shadow factor over the pixels whose world position passes `where`, and how many.
     std::pair<double, size_t> meanLit(const std::function<bool(const glm::vec3&)>& where) const {
         const auto mask = r->readShadowMask();

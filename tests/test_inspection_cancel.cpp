@@ -28,41 +28,19 @@ namespace {
 using testutil::platformScene;
 using testutil::platformTruth;
 
-struct Frame {
-    FrameReadback readback;
-    ShadowPlan plan;
-};
+using Frame = testutil::TracedFrame;
 
 /// The platform's default view at w × h as the eye pass would read it back: positions, normals and
 /// splits from the truth's primary rays, s from its verdict with every 97th pixel flipped (so
 /// some pixels disagree), and m varying from pixel to pixel.
 Frame platformFrame(int w, int h) {
     const Scene& scene = platformScene();
-    Frame f;
-    f.plan = planShadows(ShadowSettings{}, scene.bounds(), scene.camera, scene.light, Viewport{w, h});
+    const ShadowPlan plan = planShadows(ShadowSettings{}, scene.bounds(), scene.camera, scene.light, Viewport{w, h});
     const PrimaryHits hits = platformTruth().primaryHits(scene.camera, w, h);
-    const auto occ = platformTruth().occluded(hits.points, hits.normals, f.plan.l);
-    FrameReadback& r = f.readback;
-    r.width = w;
-    for (size_t i = 0; i < hits.points.size(); ++i) {
-        const glm::vec3 p = hits.points[i], n = hits.normals[i];
-        if (!std::isfinite(p.x)) {
-            r.positions.emplace_back(0.f);
-            r.normals.emplace_back(0.f);
-            r.aux.emplace_back(0.f, 0.f, -1.f, 0.f);
-            r.shadow.push_back(1.f);
-            continue;
-        }
-        const float depth = glm::dot(p - f.plan.eye, f.plan.v);
-        int split = 0;
-        while (split + 1 < int(f.plan.splits.size()) && depth > f.plan.splits[size_t(split)].far) ++split;
-        r.positions.emplace_back(p, 0.25f + 0.5f * float(i % 7));
-        r.normals.emplace_back(n, glm::dot(n, -f.plan.l));
-        r.aux.emplace_back(0.5f, 0.5f, float(split), 0.5f);
-        r.shadow.push_back((occ[i] != 0) != (i % 97 == 0) ? 0.f : 1.f);
-    }
-    for (const SplitPlan& s : f.plan.splits) r.resolutions.push_back(s.resolution);
-    return f;
+    const auto occ = platformTruth().occluded(hits.points, hits.normals, plan.l);
+    return testutil::tracedFrame(scene.camera, platformTruth(), plan, w, h, [&](size_t i, const glm::vec3&) {
+        return glm::vec2((occ[i] != 0) != (i % 97 == 0) ? 0.f : 1.f, 0.25f + 0.5f * float(i % 7));
+    });
 }
 
 std::stop_token stopped() {

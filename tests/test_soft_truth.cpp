@@ -7,6 +7,8 @@
 #include "geometry/analysis/metrics.h"
 #include "geometry/shadow/shadow_plan.h"
 
+#include "truth_test_util.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -69,37 +71,16 @@ double analyticVisibility(const glm::vec3& p, double theta) {
     return 0.5 + (x * std::sqrt(1.0 - x * x) + std::asin(x)) / kPi;
 }
 
-struct Frame {
-    FrameReadback readback;
-    ShadowPlan plan;
-};
+using Frame = testutil::TracedFrame;
 
 /// The scene's view at w × h as the eye pass would read it back, s = shadow(p) on every pixel.
 Frame edgeFrame(const Scene& scene, const GroundTruth& truth, float sunDeg, int w, int h,
                 const std::function<float(const glm::vec3&)>& shadow) {
-    Frame f;
     ShadowSettings settings;
     settings.light.angularDiameterDeg = sunDeg;
-    f.plan = planShadows(settings, scene.bounds(), scene.camera, scene.light, Viewport{w, h});
-    const PrimaryHits hits = truth.primaryHits(scene.camera, w, h);
-    FrameReadback& r = f.readback;
-    r.width = w;
-    for (size_t i = 0; i < hits.points.size(); ++i) {
-        const glm::vec3 p = hits.points[i], n = hits.normals[i];
-        if (!std::isfinite(p.x)) {
-            r.positions.emplace_back(0.f);
-            r.normals.emplace_back(0.f);
-            r.aux.emplace_back(0.f, 0.f, -1.f, 0.f);
-            r.shadow.push_back(1.f);
-            continue;
-        }
-        r.positions.emplace_back(p, 0.5f);
-        r.normals.emplace_back(n, glm::dot(n, -f.plan.l));
-        r.aux.emplace_back(0.5f, 0.5f, 0.f, 0.5f);
-        r.shadow.push_back(shadow(p));
-    }
-    for (const SplitPlan& s : f.plan.splits) r.resolutions.push_back(s.resolution);
-    return f;
+    const ShadowPlan plan = planShadows(settings, scene.bounds(), scene.camera, scene.light, Viewport{w, h});
+    return testutil::tracedFrame(scene.camera, truth, plan, w, h,
+                                 [&](size_t, const glm::vec3& p) { return glm::vec2(shadow(p), 0.5f); });
 }
 
 constexpr int kW = 128, kH = 96;

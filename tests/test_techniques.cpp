@@ -23,17 +23,8 @@ using namespace geometry::analysis;
 
 namespace {
 
-/// A scene's context and renderer (render_bench_util.h) that renders a plan of given settings.
-struct Bench : testutil::SceneBench {
-    using SceneBench::SceneBench;
-
-    ShadowPlan render(const ShadowSettings& settings, Viewport vp) {
-        context->makeCurrent();
-        const ShadowPlan plan = planShadows(settings, scene.bounds(), scene.camera, scene.light, vp);
-        r->render(plan, vp, 64);
-        return plan;
-    }
-};
+/// A scene's context and renderer that renders a plan of given settings (render_bench_util.h).
+using Bench = testutil::SceneBench;
 
 Bench& planeBench() {
     static Bench b(makePlaneScene());
