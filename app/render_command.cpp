@@ -26,7 +26,8 @@ namespace app {
 
 const std::vector<std::string>& viewNames() {
     static const std::vector<std::string> names = {"eye",    "light",  "light_unwarped", "aliasing", "truth",
-                                                   "splits", "texels", "dashboard",      "pixels",   "shadow_map"};
+                                                   "splits", "texels", "dashboard",      "pixels",   "shadow_map",
+                                                   "soft"};
     return names;
 }
 
@@ -142,6 +143,8 @@ bool wants(const ExportOptions& e, const std::string& view) {
 void validateExports(const ExportOptions& e) {
     if (wants(e, "truth") && !e.truth.enabled) throw std::invalid_argument("--views truth needs --truth");
     if (wants(e, "pixels") && !e.truth.enabled) throw std::invalid_argument("--views pixels needs --truth");
+    if (wants(e, "soft") && !e.truth.enabled)
+        throw std::invalid_argument("--views soft needs --truth (and light.angular_diameter_deg > 0)");
 }
 
 int runRender(const RenderOptions& o, const ExportOptions& e) {
@@ -198,6 +201,7 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
         for (size_t i = 0; i < t.size(); ++i) t[i] = in.receiver[i] ? in.coverage[i] : NAN;
         w.pfm("truth.pfm", t, in.width, in.height);
         if (wants(e, "truth")) w.png("truth.png", truthView(in, eye, e.heatmapBlend));
+        if (wants(e, "soft")) w.png("soft.png", softView(in, eye, e.heatmapBlend));
         if (wants(e, "pixels"))
             for (const auto& layer : geometry::analysis::pixelLayers(in, f.plan.eye, f.plan.v, f.plan.l))
                 w.pfm("pixels_" + layer.name + ".pfm", layer.values, in.width, in.height);

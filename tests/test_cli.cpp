@@ -285,3 +285,47 @@ TEST(Cli, RenderWritesTheRawShadowMaps) {
         EXPECT_EQ(std::count(b.output.begin(), b.output.end(), '\n'), 1) << "one line: " << b.output;
     }
 }
+
+// --views soft: s − v against the sun's disk, red where the render is darker than the sun allows,
+// blue where lighter, white where they agree (checked against the pixel layers of the same frame);
+// without a sun size it is a one-line error.
+TEST(Cli, RenderWritesTheSoftTruthView) {
+    const fs::path dir = freshDir("soft");
+    const CommandResult r = run("render --backend osmesa --scene " + std::string(SHADOWSCOPE_SOURCE_DIR) +
+                                "/resources/scenes/penumbra.json --view closeup --size 480x270 --truth --views "
+                                "soft,pixels --set filter.type=pcf --set filter.kernel=5 --set "
+                                "light.angular_diameter_deg=2 --out " +
+                                dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    int w = 0, h = 0;
+    const auto s = geometry::analysis::readPfm((dir / "pixels_s.pfm").string(), w, h);
+    const auto v = geometry::analysis::readPfm((dir / "pixels_visibility.pfm").string(), w, h);
+    const geometry::analysis::Image img = geometry::analysis::readImageFile((dir / "soft.png").string());
+    ASSERT_EQ(img.width, w);
+    int darker = 0, lighter = 0, agree = 0;
+    for (int y = 0; y < h / 2; ++y) // the top half: the legend sits bottom left
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * size_t(w) + size_t(x);
+            if (!std::isfinite(s[i]) || !std::isfinite(v[i])) continue;
+            const uint8_t* p = img.at(x, y);
+            const float d = s[i] - v[i];
+            if (d < -0.25f) {
+                EXPECT_GT(p[0], p[2] + 40) << x << "," << y;
+                ++darker;
+            }
+            if (d > 0.25f) {
+                EXPECT_GT(p[2], p[0] + 40) << x << "," << y;
+                ++lighter;
+            }
+            if (std::abs(d) < 0.01f) {
+                EXPECT_GT(std::min({p[0], p[1], p[2]}), 200) << x << "," << y;
+                ++agree;
+            }
+        }
+    EXPECT_GT(darker + lighter, 5) << "a 5x5 PCF edge against a 2-degree sun differs somewhere";
+    EXPECT_GT(agree, 1000);
+    const CommandResult point = run("render --backend osmesa --scene plane --size 32x32 --truth --views soft --out " +
+                                    freshDir("soft_point").string());
+    EXPECT_EQ(point.exitCode, 2) << point.output;
+    EXPECT_NE(point.output.find("light.angular_diameter_deg"), std::string::npos) << point.output;
+}

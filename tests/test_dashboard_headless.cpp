@@ -143,6 +143,30 @@ TEST_F(HeadlessDashboardTest, CompareShowsBothSidesAndTheirDifference) {
     EXPECT_GT(stats(img, d.dashboard().rects().eye).variance, 40.0);
 }
 
+// The soft heatmap: with truth and a sun of non-zero size it shows s − v (PCF's fixed kernel against a
+// 2° sun differs somewhere: not uniform); with a point sun it stays a placeholder and the soft truth absent.
+TEST_F(HeadlessDashboardTest, SoftHeatmapShowsTheRenderAgainstTheSunsDisk) {
+    const auto heatmapVariance = [&](float sunDeg) {
+        app::RenderOptions o = options_;
+        ui::LoadedScene scene = app::loadDashboardScene(o);
+        ui::DashboardState state = app::initialDashboardState(scene, o);
+        state.settings[0].filter.type = geometry::shadow::FilterType::Pcf;
+        state.settings[0].filter.kernel = 5;
+        state.settings[0].light.angularDiameterDeg = sunDeg;
+        state.views.truth = true;
+        state.views.heatmap = ui::HeatmapKind::Soft;
+        ui::HeadlessDashboard d(std::move(scene), state, app::dashboardOptions(o), kW, kH);
+        (void)d.render(3);
+        const geometry::analysis::Inspection* in = d.dashboard().inspection(0);
+        EXPECT_NE(in, nullptr);
+        EXPECT_EQ(in && in->softTruth.has_value(), sunDeg > 0.f);
+        const geometry::analysis::Image h = d.dashboard().heatmapImage();
+        return stats(h, {0, 0, float(h.width), float(h.height)}).variance;
+    };
+    EXPECT_GT(heatmapVariance(2.f), 20.0);
+    EXPECT_LT(heatmapVariance(0.f), 1.0) << "a placeholder";
+}
+
 TEST(HeadlessDashboard, RefusesAbsurdSizes) {
     auto context = renderer::createOSMesaContext();
     app::RenderOptions o;

@@ -22,6 +22,7 @@ std::string_view heatmapName(HeatmapKind k) noexcept {
     case HeatmapKind::Splits: return "splits";
     case HeatmapKind::Texels: return "texels";
     case HeatmapKind::Difference: return "difference";
+    case HeatmapKind::Soft: return "soft";
     case HeatmapKind::Count: break;
     }
     return "?";

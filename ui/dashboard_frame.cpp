@@ -287,6 +287,10 @@ void Dashboard::updateHeatmap() {
                           ? geometry::analysis::differenceView(*sides_[0].inspection, *sides_[1].inspection)
                           : placeholder(in.width, in.height);
                 break;
+            case HeatmapKind::Soft:
+                img = in.softTruth ? geometry::analysis::softView(in, side.eye, v.heatmapBlend)
+                                   : placeholder(in.width, in.height);
+                break;
             case HeatmapKind::Count: img = placeholder(in.width, in.height); break;
             }
         }

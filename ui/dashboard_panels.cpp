@@ -264,17 +264,23 @@ void Dashboard::drawHeatmapPanel() {
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("aliasing: log2 m; truth: interior false shadow red, false lit blue, edge errors amber, "
                               "ambiguous teal; splits; texels: the map's "
-                              "texel grid; difference: m_A / m_B (A/B compare)");
+                              "texel grid; difference: m_A / m_B (A/B compare); soft: s - v against the sun's disk "
+                              "(truth with light.angular_diameter_deg > 0)");
         zoomButtons(state_.imageViews[int(ViewPanel::Heatmap)], "heatmap");
         const int side = shownSide();
         const auto px = imageArea(ViewPanel::Heatmap, heatmap_.id(), heatmap_.width(), heatmap_.height(), heatmapArea_,
                                   false, "heatmap_image");
-        const bool needsTruth = state_.views.heatmap == HeatmapKind::Truth && !state_.views.truth;
-        const bool needsCompare = state_.views.heatmap == HeatmapKind::Difference && !comparing();
-        if (needsTruth || needsCompare)
-            ImGui::GetWindowDrawList()->AddText(
-                ImVec2(heatmapArea_.x + 8, heatmapArea_.y + 8), IM_COL32(255, 255, 255, 255),
-                needsTruth ? "turn on ground truth (Views)" : "turn on A/B compare (Views)");
+        const HeatmapKind kind = state_.views.heatmap;
+        const bool needsTruth = (kind == HeatmapKind::Truth || kind == HeatmapKind::Soft) && !state_.views.truth;
+        const bool needsSun =
+            kind == HeatmapKind::Soft && !(state_.settings[size_t(side)].light.angularDiameterDeg > 0.f);
+        const bool needsCompare = kind == HeatmapKind::Difference && !comparing();
+        if (needsTruth || needsSun || needsCompare)
+            ImGui::GetWindowDrawList()->AddText(ImVec2(heatmapArea_.x + 8, heatmapArea_.y + 8),
+                                                IM_COL32(255, 255, 255, 255),
+                                                needsTruth ? "turn on ground truth (Views)"
+                                                : needsSun ? "give the sun a size (light.angular_diameter_deg)"
+                                                           : "turn on A/B compare (Views)");
         if (px) {
             probeEye(side, *px, ViewPanel::Heatmap);
             if (clickedWithoutDrag()) pinned_ = hovered_;

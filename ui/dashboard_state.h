@@ -12,7 +12,7 @@
 
 namespace ui {
 
-enum class HeatmapKind { Aliasing, Truth, Splits, Texels, Difference, Count };
+enum class HeatmapKind { Aliasing, Truth, Splits, Texels, Difference, Soft, Count };
 enum class CompareMode { Off, SideBySide, Split, Count };
 enum class ViewPanel { Eye, Light, Heatmap, Count };
 

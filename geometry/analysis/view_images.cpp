@@ -89,6 +89,23 @@ Image differenceView(const Inspection& a, const Inspection& b) {
     return img;
 }
 
+Image softView(const Inspection& in, const Image& eye, float blend) {
+    if (!in.softTruth || in.sunVisibility.size() != in.shadow.size())
+        throw std::invalid_argument("the soft view needs --truth and light.angular_diameter_deg > 0");
+    // s − v on the aliasing scale: d = −0.5 (too dark) ↦ m = 16 (red), +0.5 ↦ 1/16 (blue).
+    constexpr float kStops = 8.f; // log2 stops per unit of s − v
+    std::vector<float> m(in.shadow.size(), 1.f);
+    for (size_t i = 0; i < m.size(); ++i)
+        if (in.receiver[i]) m[i] = std::exp2(-kStops * (in.shadow[i] - in.sunVisibility[i]));
+    Image img = blendOver(aliasingHeatmap(m, in.receiver, in.width, in.height), eye, blend);
+    Legend legend = aliasingLegend();
+    legend.title = "s - v (red: too dark, blue: too light)";
+    legend.bar = [](float t) { return divergingLog2(std::exp2(kStops * (0.5f - t))); }; // t = 0: s − v = −0.5
+    legend.ticks = {{0.f, "-0.5"}, {0.25f, "-0.25"}, {0.5f, "0"}, {0.75f, "+0.25"}, {1.f, "+0.5"}};
+    drawLegend(img, legend);
+    return img;
+}
+
 Image truthView(const Inspection& in, const Image& eye, float blend) {
     if (!in.occluded) throw std::invalid_argument("the truth view needs --truth");
     if (in.classes.size() == in.shadow.size()) { // the truth classes: each its own colour

@@ -19,6 +19,12 @@ namespace geometry::analysis {
 /// in.occluded (falls back to false shadow / false lit alone without in.classes).
 [[nodiscard]] Image truthView(const Inspection& in, const Image& eye, float blend = 0.f);
 
+/// The soft truth (inspection with a sun of non-zero size): s − v per receiver, the rendered lit
+/// fraction against the fraction of the sun's disk the pixel sees, on the diverging scale over
+/// [−0.5, 0.5] (red: rendered darker than the sun allows, blue: lighter, white: equal), with a legend.
+/// Throws std::invalid_argument without a soft truth.
+[[nodiscard]] Image softView(const Inspection& in, const Image& eye, float blend = 0.f);
+
 /// A/B comparison (Barroso Fig 8): log2(m_A / m_B) on the diverging scale where both frames see a
 /// receiver (red: A undersamples more than B; blue: A is finer), grey elsewhere, with a legend.
 /// Throws std::invalid_argument when the two inspections differ in size.
