@@ -44,6 +44,20 @@ Samples groundSamples(const Camera& cam, const Viewport& vp, const Aabb& S, int 
     return out;
 }
 
+/// The plane scene's camera out to 1000 m over a 4 km ground: a long view whose pixels crowd near
+/// the camera.
+struct WideGround {
+    Scene scene = makePlaneScene();
+    Camera cam = scene.camera;
+    Viewport vp{320, 240};
+    Aabb S = scene.bounds();
+    WideGround() {
+        cam.far = 1000.f;
+        S.add({-2000, 0, -2000});
+        S.add({2000, 5, 2000});
+    }
+};
+
 const WarpMethod kMethods[] = {WarpMethod::Uniform, WarpMethod::Psm,   WarpMethod::Lispsm,
                                WarpMethod::Glispsm, WarpMethod::Gmnpr, WarpMethod::Manual};
 
@@ -164,13 +178,8 @@ TEST(SampleFocus, SamplesAndTheirCastersStayInTheirSplitsMap) {
 // Samples in two clusters, near and far, with three uniform splits over them: the middle split
 // has none and is skipped (no body, so no pass); the others are not.
 TEST(SampleFocus, ASplitWithoutSamplesIsSkipped) {
-    const Scene scene = makePlaneScene();
-    Camera cam = scene.camera;
-    cam.far = 1000.f;
-    const Viewport vp{320, 240};
-    Aabb S = scene.bounds();
-    S.add({-2000, 0, -2000});
-    S.add({2000, 5, 2000});
+    const WideGround g;
+    const auto& [scene, cam, vp, S] = g;
     std::mt19937 rng(3);
     Samples all = groundSamples(cam, vp, S, 20000, rng), clustered;
     for (size_t i = 0; i < all.world.size(); ++i)
@@ -213,4 +222,62 @@ TEST(SampleFocus, GeometryModeIgnoresSamples) {
     const ShadowPlan c = planShadows(settings, scene.bounds(), scene.camera, scene.light, vp, &bounds);
     EXPECT_TRUE(c.fittedToSamples);
     EXPECT_GT(c.splits.front().near, a.splits.front().near); // the nearest ground point is beyond n
+}
+
+// The samples' depth quantiles: with the samples spread evenly over the bins of [a, b] in log depth,
+// the i/k quantile is the log-spaced point a·(b/a)^(i/k) (to a bin's width); all samples in one bin
+// put every quantile inside it; no samples, none.
+TEST(SampleFocus, QuantilesSplitTheSamplesEvenly) {
+    std::vector<glm::vec3> world;
+    std::vector<float> depth;
+    const float n = 1.f, f = 1000.f;
+    for (int i = 0; i < 10000; ++i) {
+        depth.push_back(n * std::pow(f / n, (float(i) + 0.5f) / 10000.f));
+        world.emplace_back(0.f, 0.f, -depth.back());
+    }
+    const SampleBounds even = reduceSamples(world, depth, n, f, {0.f, -1.f, 0.f});
+    const auto q = sampleQuantiles(even, n, f, 4);
+    ASSERT_EQ(q.size(), 3u);
+    for (int i = 1; i <= 3; ++i)
+        EXPECT_NEAR(std::log(q[size_t(i - 1)]), std::log(n * std::pow(f / n, i / 4.0)), std::log(f / n) / kSampleBins)
+            << i;
+    const std::vector<float> one(100, 50.f);
+    const SampleBounds clustered =
+        reduceSamples(std::vector<glm::vec3>(100, glm::vec3(0.f, 0.f, -50.f)), one, n, f, {0.f, -1.f, 0.f});
+    for (const double v : sampleQuantiles(clustered, n, f, 3)) {
+        EXPECT_GE(v, sampleBinStart(sampleBin(50.0, n, f), n, f));
+        EXPECT_LE(v, sampleBinStart(sampleBin(50.0, n, f) + 1, n, f));
+    }
+    EXPECT_TRUE(sampleQuantiles(SampleBounds{}, n, f, 3).empty());
+}
+
+// With samples, the practical scheme blends the log boundaries over the samples' depth range with
+// the boundaries that give each split an equal share of the samples (instead of equal depth): most of
+// a view's pixels near the camera put the splits near the camera.
+TEST(SampleFocus, PracticalSplitsFollowTheSamples) {
+    const WideGround g;
+    const auto& [scene, cam, vp, S] = g;
+    std::mt19937 rng(5);
+    const Samples s = groundSamples(cam, vp, S, 20000, rng);
+    const SampleBounds bounds = reduceSamples(s.world, s.depth, cam.near, cam.far, scene.light.l());
+    ShadowSettings settings;
+    settings.focus = FocusMode::Samples;
+    settings.splits.count = 3;
+    settings.splits.lambda = 0.5;
+    const ShadowPlan plan = planShadows(settings, S, cam, scene.light, vp, &bounds);
+    ASSERT_EQ(plan.splits.size(), 3u);
+    const double zLo = plan.splits.front().near, zHi = plan.splits.back().far;
+    const auto q = sampleQuantiles(bounds, zLo, zHi, 3);
+    ASSERT_EQ(q.size(), 2u);
+    for (int i = 1; i < 3; ++i) {
+        const double log = zLo * std::pow(zHi / zLo, i / 3.0);
+        EXPECT_NEAR(plan.splits[size_t(i)].near, 0.5 * log + 0.5 * q[size_t(i - 1)], 1e-3 * zHi) << i;
+    }
+    // λ = 0: the boundaries are the quantiles alone, so each split holds about a third of the samples.
+    settings.splits.lambda = 0.0;
+    const ShadowPlan even = planShadows(settings, S, cam, scene.light, vp, &bounds);
+    for (const auto& split : even.splits) {
+        EXPECT_GT(double(split.samples), 0.25 * double(s.world.size())) << split.near;
+        EXPECT_LT(double(split.samples), 0.42 * double(s.world.size())) << split.near;
+    }
 }

@@ -21,6 +21,29 @@ int sampleBin(double z, double n, double f) noexcept {
 
 double sampleBinStart(int i, double n, double f) noexcept { return n * std::pow(f / n, double(i) / kSampleBins); }
 
+std::vector<double> sampleQuantiles(const SampleBounds& bounds, double a, double b, int k) {
+    std::vector<double> out;
+    if (bounds.empty() || k < 2 || !(b > a)) return out;
+    const int first = sampleBin(a, bounds.n, bounds.f), last = sampleBin(b, bounds.n, bounds.f);
+    uint64_t total = 0;
+    for (int i = first; i <= last; ++i) total += bounds.bins[size_t(i)].count;
+    if (total == 0) return out;
+    uint64_t below = 0;
+    int bin = first;
+    for (int q = 1; q < k; ++q) {
+        const double want = double(total) * q / k;
+        while (bin < last && double(below + bounds.bins[size_t(bin)].count) < want)
+            below += bounds.bins[size_t(bin++)].count;
+        const double count = std::max<double>(bounds.bins[size_t(bin)].count, 1.0);
+        const double t = std::clamp((want - double(below)) / count, 0.0, 1.0);
+        const double lo = std::max(a, sampleBinStart(bin, bounds.n, bounds.f));
+        const double hi = std::min(b, sampleBinStart(bin + 1, bounds.n, bounds.f));
+        out.push_back(std::clamp(lo * std::pow(hi / lo, t), a, b));
+    }
+    for (size_t i = 1; i < out.size(); ++i) out[i] = std::max(out[i], out[i - 1]);
+    return out;
+}
+
 SampleSlab samplesWithin(const SampleBounds& bounds, double a, double b, double margin) {
     SampleSlab out;
     if (bounds.empty() || !(b >= a)) return out;

@@ -50,6 +50,11 @@ struct SampleSlab {
 /// `margin` widens every plane by that fraction of the prism's extent along its direction.
 [[nodiscard]] SampleSlab samplesWithin(const SampleBounds& bounds, double a, double b, double margin);
 
+/// The view depths where the samples' cumulative count reaches i/k of those in [a, b], i = 1..k−1
+/// (k − 1 values, ascending, within [a, b]), from the log-spaced bins (log-linear within a bin):
+/// each split of these holds the same share of the visible pixels. Empty without samples.
+[[nodiscard]] std::vector<double> sampleQuantiles(const SampleBounds& bounds, double a, double b, int k);
+
 /// The reference reduction on the CPU, for tests: samples are world points with their view depths.
 [[nodiscard]] SampleBounds reduceSamples(std::span<const glm::vec3> world, std::span<const float> viewDepth, float n,
                                          float f, const glm::vec3& l);

@@ -289,6 +289,15 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         const double zLo = std::max(double(camera.near), samples->zMin * (1.0 - 1e-3));
         const double zHi = std::min(double(camera.far), std::max(samples->zMax * (1.0 + 1e-3), zLo * (1.0 + 1e-3)));
         if (!samples->empty()) c = splitDistances(settings.splits, zLo, zHi, gamma);
+        if (!samples->empty() && settings.splits.scheme == SplitScheme::Practical && c.size() > 2) {
+            SplitParams log = settings.splits;
+            log.scheme = SplitScheme::Log;
+            const std::vector<double> cLog = splitDistances(log, zLo, zHi, gamma);
+            const std::vector<double> q = sampleQuantiles(*samples, zLo, zHi, int(c.size()) - 1);
+            if (q.size() + 2 == c.size())
+                for (size_t i = 1; i + 1 < c.size(); ++i)
+                    c[i] = settings.splits.lambda * cLog[i] + (1.0 - settings.splits.lambda) * q[i - 1];
+        }
     }
     // Lookups reach past the sample they are for: filter taps, normal offset; a margin of that many
     // texels (as a fraction of the map) keeps them on the map.
