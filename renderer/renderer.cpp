@@ -244,7 +244,7 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
     // Depth arrays (one, or three when peeling) and the moments (map and blur target, 32-bit float
     // each): halve until they fit the budget.
     const int moments = geometry::shadow::momentCount(plan.filter.type);
-    const double bytesPerTexel = needsPeeling(plan) ? 12.0 : 4.0 + 2.0 * 4.0 * moments;
+    const double bytesPerTexel = moments > 0 ? 4.0 + 2.0 * 4.0 * moments : (needsPeeling(plan) ? 12.0 : 4.0);
     const int requested = resolution;
     while (resolution > 16 && double(resolution) * resolution * layers * bytesPerTexel > limits_.shadowMemoryBytes)
         resolution /= 2;
@@ -261,6 +261,10 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+    if (moments > 0) { // the moment filters read only their moments pass: no depth layers, no peeling
+        momentsPass(plan);
+        return;
+    }
     const bool slope = plan.polygonOffset != glm::vec2(0.f);
     const bool linear = plan.linearDepth; // bias.linear_z, and PCSS (blocker distances in scene units)
     if (slope && !linear) {
@@ -273,14 +277,13 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
         const auto& split = plan.splits[i];
         firstDepth_.bindLayer(i, splitResolution(split));
         glClear(GL_DEPTH_BUFFER_BIT);
-        if (split.empty() || moments > 0) continue; // the moment filters read only their moments pass
+        if (split.empty()) continue;
         drawCasters(plan, i, program, plan.bias.type == BiasType::SecondDepth);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     sampledDepth_ = firstDepth_.depthTexture();
     if (needsPeeling(plan)) peelAndCombine(plan);
-    if (moments > 0) momentsPass(plan);
 }
 
 void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {

@@ -73,6 +73,14 @@ vec2 vogel(int k, int n, float angle) {
 /// Interleaved gradient noise (Jimenez 2014): a per-pixel rotation that trades banding for noise.
 float pixelAngle() { return 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715)))); }
 
+/// A PCSS tap: the point `offset` (⊥ l) away on the receiver's plane (normal n, nl = n·l < 0), as
+/// (its depth in this split's map − eps, the depth the map stores there).
+vec2 pcssTap(vec3 receiver, vec3 n, float nl, vec3 offset, int split, float res, vec2 shift, float eps) {
+    vec3 q = mapCoords(receiver + offset - shadow.lightDir * (dot(n, offset) / nl), split);
+    ivec2 t = clamp(ivec2(floor(q.xy * res + shift)), ivec2(0), ivec2(int(res) - 1));
+    return vec2(q.z - eps, texelFetch(uShadowMap, ivec3(t, split), 0).r);
+}
+
 /// PCSS (Fernando 2005) for a sun of angular radius atan(sunTanHalfAngle), with taps on the receiver's
 /// plane in world space, so the kernel keeps its size and shape in scene units under any warp:
 /// 1. blocker search over the disk a blocker at the map's near end could shade from;
@@ -93,13 +101,10 @@ float pcss(vec3 receiver, vec3 n, float z, int split, float res) {
     float blockers = 0.0, blockerDepth = 0.0;
     for (int k = 0; k < shadow.taps; ++k) {
         vec2 o = vogel(k, shadow.taps, angle) * searchRadius;
-        vec3 offset = e1 * o.x + e2 * o.y;
-        vec3 q = mapCoords(receiver + offset - shadow.lightDir * (dot(n, offset) / nl), split);
-        ivec2 t = clamp(ivec2(floor(q.xy * res + shift)), ivec2(0), ivec2(int(res) - 1));
-        float d = texelFetch(uShadowMap, ivec3(t, split), 0).r;
-        if (d < q.z - eps) {
+        vec2 tap = pcssTap(receiver, n, nl, e1 * o.x + e2 * o.y, split, res, shift, eps);
+        if (tap.y < tap.x) {
             blockers += 1.0;
-            blockerDepth += d;
+            blockerDepth += tap.y;
         }
     }
     if (blockers == 0.0) return 1.0;
@@ -108,10 +113,8 @@ float pcss(vec3 receiver, vec3 n, float z, int split, float res) {
     float lit = 0.0;
     for (int k = 0; k < shadow.taps; ++k) {
         vec2 o = vogel(k, shadow.taps, angle + 1.0) * radius;
-        vec3 offset = e1 * o.x + e2 * o.y;
-        vec3 q = mapCoords(receiver + offset - shadow.lightDir * (dot(n, offset) / nl), split);
-        ivec2 t = clamp(ivec2(floor(q.xy * res + shift)), ivec2(0), ivec2(int(res) - 1));
-        lit += q.z - eps > texelFetch(uShadowMap, ivec3(t, split), 0).r ? 0.0 : 1.0;
+        vec2 tap = pcssTap(receiver, n, nl, e1 * o.x + e2 * o.y, split, res, shift, eps);
+        lit += tap.x > tap.y ? 0.0 : 1.0;
     }
     return lit / float(shadow.taps);
 }
