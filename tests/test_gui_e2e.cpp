@@ -564,10 +564,16 @@ TEST_F(GuiE2E, DrawsOnlyWhatChanged) {
     EXPECT_EQ(passes(afterHover), passes(beforeHover)) << "hovering must draw no pass";
 
     // A slider dragged in one gesture: at most coarse frames while it moves, then one full frame.
+    // One step per frame: ImGui 1.86 keeps only the latest mouse state of a frame, so a press, moves
+    // and release that all arrive while the app sleeps or lags would be no drag at all.
     const Rect az = scrollIntoView("sun.azimuth");
-    xdo({"mousemove", screenX(az.x + az.w * 0.5), screenY(az.cy()), "mousedown", "1", "mousemove",
-         screenX(az.x + az.w * 0.55), screenY(az.cy()), "mousemove", screenX(az.x + az.w * 0.6), screenY(az.cy()),
-         "mousemove", screenX(az.x + az.w * 0.65), screenY(az.cy()), "mouseup", "1"});
+    xdo({"mousemove", screenX(az.x + az.w * 0.5), screenY(az.cy()), "mousedown", "1"});
+    waitFrames(1);
+    for (const double t : {0.55, 0.6, 0.65}) {
+        xdo({"mousemove", screenX(az.x + az.w * t), screenY(az.cy())});
+        waitFrames(1);
+    }
+    xdo({"mouseup", "1"});
     const WidgetMap beforeSlider = afterHover;
     const WidgetMap afterSlider = settle("after the slider");
     std::cout << "[ e2e ] slider drag: " << describePasses(beforeSlider) << " -> " << describePasses(afterSlider)
