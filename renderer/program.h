@@ -30,6 +30,8 @@ public:
     void set(const char* name, const glm::vec3& v) { glUniform3f(location(name), v.x, v.y, v.z); }
     void set(const char* name, const glm::mat4& m) { glUniformMatrix4fv(location(name), 1, GL_FALSE, &m[0][0]); }
     void set(const char* name, const glm::vec3* v, int count) { glUniform3fv(location(name), count, &v[0][0]); }
+    void set(const char* name, const glm::vec4& v) { glUniform4f(location(name), v.x, v.y, v.z, v.w); }
+    void set(const char* name, const glm::vec4* v, int count) { glUniform4fv(location(name), count, &v[0][0]); }
 
 private:
     void link(std::string_view what);

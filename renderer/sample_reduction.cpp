@@ -1,5 +1,6 @@
 #include "sample_reduction.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -54,10 +55,20 @@ geometry::shadow::SampleBounds SampleReduction::reduce(GLuint depthTexture, int 
     glBindTexture(GL_TEXTURE_2D, depthTexture);
     glBindSampler(0, 0);
     program_.set("uDepth", 0);
-    program_.set("uInvViewProj", glm::inverse(view.proj * view.view));
-    program_.set("uView", view.view);
+    // sample_reduce.comp's rows: with M = inverse(P V), h = M q for a pixel's NDC q, d·x = (D·q)/(W·q)
+    // for D = Σ_i d_i row_i(M), W = row_3(M); view depth z = −(row_2(V)·(x, 1)) = (Z·q)/(W·q).
+    const glm::dmat4 M = glm::inverse(glm::dmat4(view.proj) * glm::dmat4(view.view));
+    const auto row = [&](int i) { return glm::dvec4(M[0][i], M[1][i], M[2][i], M[3][i]); };
+    const glm::dvec4 W = row(3);
+    const auto along = [&](const glm::dvec3& d) { return d.x * row(0) + d.y * row(1) + d.z * row(2); };
+    const glm::dvec3 viewZ(view.view[0][2], view.view[1][2], view.view[2][2]);
+    program_.set("uZRow", glm::vec4(-(along(viewZ) + double(view.view[3][2]) * W)));
+    program_.set("uWRow", glm::vec4(W));
     const auto directions = geometry::shadow::sampleDirections(view.l);
-    program_.set("uDirections", directions.data(), kSampleDirections);
+    std::array<glm::vec4, kSampleDirections> dirRows{};
+    for (int k = 0; k < kSampleDirections; ++k)
+        dirRows[size_t(k)] = glm::vec4(along(glm::dvec3(directions[size_t(k)])));
+    program_.set("uDirRows", dirRows.data(), kSampleDirections);
     program_.set("uLogNear", std::log(view.n));
     program_.set("uBinScale", float(kSampleBins / std::log(double(view.f) / double(view.n))));
     program_.set("uSize", glm::ivec2(width, height));

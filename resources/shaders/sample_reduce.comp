@@ -9,9 +9,12 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 const int ROWS = 8; // pixels per invocation, down a column: a group covers 16 × 128 pixels
 layout(binding = 0) uniform sampler2D uDepth;
-uniform mat4 uInvViewProj;
-uniform mat4 uView;
-uniform vec3 uDirections[SAMPLE_DIRECTIONS];
+// A pixel's NDC q = (x, y, depth, 1) maps to world h.xyz / h.w with h = inverse(P V) q, so every
+// quantity linear in the world point is a ratio of two dot products with q: d_k·x = (D_k·q)/(W·q),
+// view depth z = (Z·q)/(W·q). The rows come from the CPU (renderer/sample_reduction.cpp).
+uniform vec4 uDirRows[SAMPLE_DIRECTIONS];
+uniform vec4 uZRow;
+uniform vec4 uWRow;
 uniform float uLogNear;  // log(n)
 uniform float uBinScale; // SAMPLE_BINS / log(f / n)
 uniform ivec2 uSize;
@@ -33,52 +36,54 @@ void main() {
     }
     if (local == 0u) sZ[0] = 0xFFFFFFFFu, sZ[1] = 0u;
     barrier();
-    // Each invocation walks a column of ROWS pixels, keeping the bin it is filling in registers
-    // and flushing it to shared memory only when the bin changes: neighbouring pixels mostly share
-    // a bin, so the shared atomics drop several-fold.
+    // Each invocation walks a column of ROWS pixels in runs of one bin, keeping the run's bounds in
+    // registers and flushing them to shared memory once per run, outside the pixel loop: on
+    // llvmpipe, atomics inside the pixel loop cost every pixel (1280×720: 31.8 → 25.4 ms).
     const ivec2 first = ivec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y * ROWS);
-    int current = -1;
-    uint count = 0u;
-    float lo[SAMPLE_DIRECTIONS], hi[SAMPLE_DIRECTIONS];
+    // The column's x is fixed: fold it (and q.w = 1) into each row once; a pixel then costs two
+    // multiply-adds per row instead of two matrix products (25.4 → 14.0 ms).
+    const float x = (float(first.x) + 0.5) / float(uSize.x) * 2.0 - 1.0;
+    float dirBase[SAMPLE_DIRECTIONS];
+    for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) dirBase[k] = uDirRows[k].x * x + uDirRows[k].w;
+    const float zBase = uZRow.x * x + uZRow.w, wBase = uWRow.x * x + uWRow.w;
     float zLo = 3.4e38, zHi = 0.0;
-    for (int r = 0; r <= ROWS; ++r) {
-        int bin = -1;
-        vec3 world = vec3(0.0);
-        float z = 0.0;
-        const ivec2 p = first + ivec2(0, r);
-        if (r < ROWS && all(lessThan(p, uSize))) {
-            const float depth = texelFetch(uDepth, p, 0).r;
-            if (depth < 1.0) {
-                const vec4 ndc = vec4((vec2(p) + 0.5) / vec2(uSize) * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-                const vec4 w = uInvViewProj * ndc;
-                world = w.xyz / w.w;
-                z = -(uView * vec4(world, 1.0)).z;
-                bin = clamp(int(floor((log(max(z, 1e-30)) - uLogNear) * uBinScale)), 0, SAMPLE_BINS - 1);
+    int r = 0;
+    while (r < ROWS) {
+        int current = -1;
+        uint count = 0u;
+        float lo[SAMPLE_DIRECTIONS], hi[SAMPLE_DIRECTIONS];
+        for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) lo[k] = 3.4e38, hi[k] = -3.4e38;
+        for (; r < ROWS; ++r) {
+            const ivec2 p = first + ivec2(0, r);
+            if (any(greaterThanEqual(p, uSize))) {
+                r = ROWS;
+                break;
             }
+            const float depth = texelFetch(uDepth, p, 0).r;
+            if (depth >= 1.0) continue;
+            const vec2 yz = vec2((float(p.y) + 0.5) / float(uSize.y) * 2.0 - 1.0, depth * 2.0 - 1.0);
+            const float invW = 1.0 / (wBase + dot(uWRow.yz, yz));
+            const float z = (zBase + dot(uZRow.yz, yz)) * invW;
+            const int bin = clamp(int(floor((log(max(z, 1e-30)) - uLogNear) * uBinScale)), 0, SAMPLE_BINS - 1);
+            if (current >= 0 && bin != current) break; // this pixel starts the next run
+            current = bin;
+            ++count;
+            for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) {
+                const float t = (dirBase[k] + dot(uDirRows[k].yz, yz)) * invW;
+                lo[k] = min(lo[k], t);
+                hi[k] = max(hi[k], t);
+            }
+            zLo = min(zLo, z);
+            zHi = max(zHi, z);
         }
-        if (bin != current && current >= 0) { // flush the bin being filled
+        if (current >= 0) {
             const uint base = uint(current * STRIDE);
             atomicAdd(sBins[base], count);
             for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) {
                 atomicMin(sBins[base + 1u + uint(k)], orderedKey(lo[k]));
                 atomicMax(sBins[base + 1u + uint(SAMPLE_DIRECTIONS + k)], orderedKey(hi[k]));
             }
-            current = -1;
         }
-        if (bin < 0) continue;
-        if (current < 0) {
-            current = bin;
-            count = 0u;
-            for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) lo[k] = 3.4e38, hi[k] = -3.4e38;
-        }
-        ++count;
-        for (int k = 0; k < SAMPLE_DIRECTIONS; ++k) {
-            const float t = dot(world, uDirections[k]);
-            lo[k] = min(lo[k], t);
-            hi[k] = max(hi[k], t);
-        }
-        zLo = min(zLo, z);
-        zHi = max(zHi, z);
     }
     if (zHi > 0.0) {
         atomicMin(sZ[0], orderedKey(zLo));
