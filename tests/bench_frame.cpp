@@ -2,14 +2,19 @@
 // each iteration, so drift of the machine cancels in the ratio). Headless: EGL on a GPU when there
 // is one, else OSMesa (llvmpipe). Scene `platform`, Barroso's setup: 800×600, 2048² maps.
 //   Goals (issue 4): paper/ssm ≤ 1.3 on llvmpipe, ≤ 1.15 on a GPU; 5×5 PCF eye pass ≤ 1.1× hard test.
+//   Issue 16: focus.mode samples/geometry ≤ 1.1 per preset and canonical view (480×270, as
+//   docs/performance.md's accuracy figures).
 #include "geometry/io/preset.h"
+#include "geometry/io/scene_file.h"
 #include "geometry/scene/builtin_scenes.h"
 #include "renderer/context.h"
+#include "renderer/plan_frame.h"
 #include "renderer/renderer.h"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <memory>
@@ -54,29 +59,62 @@ renderer::PassTimes frame(const ShadowSettings& s, const Viewport& vp) {
     return st.r->waitForTimings();
 }
 
-void compare(benchmark::State& state, const ShadowSettings& a, const ShadowSettings& b, renderer::Pass pass,
-             bool wholeFrame) {
-    const Viewport vp{800, 600};
-    frame(a, vp); // warm-up: shader compilation, allocation
-    frame(b, vp);
-    // Per-iteration ratios, reported as their median: one slow frame (the machine is shared) moves
-    // a mean of sums but not the median.
-    std::vector<double> ratios, as, bs;
+double median(std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+constexpr std::array kPasses{renderer::Pass::Prepass, renderer::Pass::Shadow, renderer::Pass::Eye};
+constexpr std::array kPassNames{"prepass", "shadow", "eye"};
+
+/// Runs A and B alternately, once each per iteration, and reports the medians of their times and
+/// of the per-iteration ratios: one slow frame (the machine is shared) moves a mean of sums but not
+/// the median. `measure(isB)` renders one frame and returns its pass times; `time` picks the ms
+/// compared (B_over_A). Also reported: the medians of the pre-pass, shadow and eye passes, and the
+/// wall-clock time of measure() (B_over_A_wall: on llvmpipe the timer queries of overlapping passes
+/// attribute time loosely, the wall clock does not).
+template <class Measure, class Time> void alternate(benchmark::State& state, Measure&& measure, Time&& time) {
+    measure(false); // warm-up: shader compilation, allocation
+    measure(true);
+    std::vector<double> ratios, as, bs, wallA, wallB, wallRatios;
+    std::array<std::vector<double>, 3> passA, passB; // pre-pass, shadow, eye
+    using Clock = std::chrono::steady_clock;
+    const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
     for (auto _ : state) {
-        const auto pa = frame(a, vp);
-        const auto pb = frame(b, vp);
-        as.push_back(wholeFrame ? pa.frame() : pa.of(pass));
-        bs.push_back(wholeFrame ? pb.frame() : pb.of(pass));
+        const auto t0 = Clock::now();
+        const renderer::PassTimes a = measure(false);
+        const auto t1 = Clock::now();
+        const renderer::PassTimes b = measure(true);
+        wallA.push_back(ms(t1 - t0));
+        wallB.push_back(ms(Clock::now() - t1));
+        wallRatios.push_back(wallB.back() / wallA.back());
+        as.push_back(time(a));
+        bs.push_back(time(b));
+        for (size_t k = 0; k < kPasses.size(); ++k) {
+            passA[k].push_back(a.of(kPasses[k]));
+            passB[k].push_back(b.of(kPasses[k]));
+        }
         ratios.push_back(bs.back() / as.back());
     }
-    const auto median = [](std::vector<double> v) {
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        return v[v.size() / 2];
-    };
     state.counters["A_ms"] = median(as);
     state.counters["B_ms"] = median(bs);
     state.counters["B_over_A"] = median(ratios);
+    state.counters["A_wall_ms"] = median(wallA);
+    state.counters["B_wall_ms"] = median(wallB);
+    state.counters["B_over_A_wall"] = median(wallRatios);
+    for (size_t k = 0; k < kPasses.size(); ++k) {
+        state.counters[std::string("A_") + kPassNames[k] + "_ms"] = median(passA[k]);
+        state.counters[std::string("B_") + kPassNames[k] + "_ms"] = median(passB[k]);
+    }
     state.SetLabel(setup().context->rendererString());
+}
+
+void compare(benchmark::State& state, const ShadowSettings& a, const ShadowSettings& b, renderer::Pass pass,
+             bool wholeFrame) {
+    const Viewport vp{800, 600};
+    alternate(
+        state, [&](bool isB) { return frame(isB ? b : a, vp); },
+        [&](const renderer::PassTimes& t) { return wholeFrame ? t.frame() : t.of(pass); });
 }
 
 void BM_PaperOverSsm(benchmark::State& state) {
@@ -100,6 +138,47 @@ void BM_PcfKernelEyeOverHard(benchmark::State& state) {
     pcf.filter.kernel = int(state.range(0));
     compare(state, hard, pcf, renderer::Pass::Eye, false);
 }
+
+/// focus.mode = samples over geometry for preset `name` on the platform's canonical view `view`:
+/// the whole frame as planFrame() and render() do it (the samples' pre-pass and reduction count).
+void samplesOverGeometry(benchmark::State& state, const std::string& name, const std::string& view) {
+    static const geometry::io::SceneFile file =
+        geometry::io::loadSceneFile(std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/platform.json");
+    const CanonicalView& v = file.views.at(view);
+    const Viewport vp{int(state.range(0)), int(state.range(1))};
+    ShadowSettings geometric = preset(name), fitted = geometric;
+    geometric.focus = FocusMode::Geometry;
+    fitted.focus = FocusMode::Samples;
+    if (const char* e = std::getenv("SS_RES")) geometric.resolution = fitted.resolution = std::atoi(e);
+    Setup& st = setup();
+    st.r->setScene(file.scene);
+    renderer::ViewOptions views;
+    views.lightViewSize = 64;
+    views.overlays = views.unwarped = false;
+    alternate(
+        state,
+        [&](bool isB) {
+            const ShadowSettings& s = isB ? fitted : geometric;
+            const ShadowPlan plan = renderer::planFrame(*st.r, s, file.scene.bounds(), v.camera, v.light, vp);
+            st.r->render(plan, vp, views);
+            return st.r->waitForTimings();
+        },
+        [](const renderer::PassTimes& t) { return t.frame(); });
+    st.r->setScene(st.scene);
+}
+
+// samplesOverGeometry/<preset>_<view>/<width>/<height> for the issue-16 targets' presets and views.
+const bool kSamplesOverGeometryRegistered = [] {
+    for (const char* p : {"pssm3", "paper"})
+        for (const char* v : {"deck", "overview", "grazing", "dueling"})
+            benchmark::RegisterBenchmark(("samplesOverGeometry/" + std::string(p) + "_" + v).c_str(),
+                                         samplesOverGeometry, std::string(p), std::string(v))
+                ->Args({480, 270})
+                ->Args({1280, 720})
+                ->Iterations(9)
+                ->UseRealTime();
+    return true;
+}();
 
 } // namespace
 
