@@ -49,10 +49,11 @@ GpuScene::GpuScene(const geometry::scene::Scene& scene) {
         g.transform = mesh.transform;
         g.color = mesh.color;
         g.chunks = mesh.chunks;
+        g.parts = mesh.parts;
         g.triangles = mesh.triangleCount();
         g.twoSided = mesh.twoSided;
         upload(g.vao, g.vbo, g.ebo, mesh.positions, mesh.normals, mesh.indices);
-        if (g.chunks.empty()) g.chunks.push_back({0, static_cast<uint32_t>(g.triangles), mesh.worldBounds()});
+        if (g.chunks.empty()) g.chunks.push_back({{0, static_cast<uint32_t>(g.triangles), mesh.worldBounds()}});
         meshes_.push_back(g);
     }
 }

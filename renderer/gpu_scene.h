@@ -2,6 +2,7 @@
 // The scene's meshes in GL buffers, drawn chunk by chunk.
 #include "geometry/lod/caster_lod.h"
 #include "geometry/scene/scene.h"
+#include "geometry/shadow/culling.h"
 #include "gl/gl_api.h"
 
 #include <cstdint>
@@ -21,6 +22,7 @@ struct GpuMesh {
     glm::mat4 transform{1.f};
     glm::vec3 color{0.7f};
     std::vector<geometry::scene::Chunk> chunks;
+    std::vector<geometry::scene::TriangleRun> parts; // as Mesh::parts
     uint64_t triangles = 0;
     bool twoSided = true; // casts from both faces (open surfaces)
     GpuLod lod;           // vao 0: none
@@ -44,24 +46,34 @@ public:
     void setCasterLod(const geometry::lod::SceneLod& lod);
     [[nodiscard]] bool hasCasterLod() const noexcept { return hasLod_; }
 
-    /// Draws the visible chunks of `m`, each at level `level(chunk index, bounds)` of its simplified
-    /// levels (−1: the original; runs of originals merged into one call as draw() does).
-    template <class Visible, class Level>
-    DrawCount drawLevels(const GpuMesh& m, Visible&& visible, Level&& level) const noexcept {
+    /// Draws the chunks of `m` that `overlap(bounds)` (a geometry::shadow::ClipOverlap) does not put
+    /// Outside, each at level `level(chunk index, bounds)` of its simplified levels (−1: the
+    /// original) when that level has fewer triangles than the chunk's original parts in view.
+    template <class Overlap, class Level>
+    DrawCount drawLevels(const GpuMesh& m, Overlap&& overlap, Level&& level) const noexcept {
         DrawCount count;
         const bool lod = m.lod.vao != 0 && m.lod.chunkLevels.size() == m.chunks.size();
         std::vector<const geometry::lod::LodRange*>& simplified = simplified_; // reused: no per-pass allocation
         simplified.clear();
-        count.drawn = draw(m, [&, index = size_t(0)](const geometry::scene::Aabb& bounds) mutable {
-            const size_t i = index++;
-            if (!visible(bounds)) return false;
-            count.full += m.chunks[i].triangleCount;
-            if (!lod || m.lod.chunkLevels[i].empty()) return true;
-            const int k = level(i, bounds);
-            if (k < 0 || k >= int(m.lod.chunkLevels[i].size())) return true;
-            simplified.push_back(&m.lod.chunkLevels[i][size_t(k)]);
-            return false;
-        });
+        glBindVertexArray(m.vao);
+        RunMerger runs;
+        for (size_t i = 0; i < m.chunks.size(); ++i) {
+            const geometry::scene::Chunk& c = m.chunks[i];
+            const geometry::shadow::ClipOverlap o = overlap(c.bounds);
+            if (o == geometry::shadow::ClipOverlap::Outside) continue;
+            const uint32_t original = visibleRuns(m, c, o, overlap);
+            count.full += original;
+            if (lod && !m.lod.chunkLevels[i].empty()) {
+                const int k = level(i, c.bounds);
+                if (k >= 0 && k < int(m.lod.chunkLevels[i].size()) &&
+                    m.lod.chunkLevels[i][size_t(k)].triangleCount < original) {
+                    simplified.push_back(&m.lod.chunkLevels[i][size_t(k)]);
+                    continue;
+                }
+            }
+            for (const geometry::scene::TriangleRun& r : visible_) runs.add(r.firstTriangle, r.triangleCount);
+        }
+        count.drawn = runs.finish();
         if (simplified.empty()) return count;
         glBindVertexArray(m.lod.vao);
         for (const auto* r : simplified) {
@@ -70,25 +82,19 @@ public:
         }
         return count;
     }
-    /// Draws the chunks of `m` whose bounds pass `visible(bounds)`, merging contiguous runs into
-    /// one call; returns the triangles submitted.
-    template <class Visible> uint64_t draw(const GpuMesh& m, Visible&& visible) const noexcept {
+    /// Draws the original triangles of `m` that `overlap(bounds)` does not put Outside: whole
+    /// chunks, and the parts in view of chunks only Partly inside; contiguous runs merge into one
+    /// call. Returns the triangles submitted.
+    template <class Overlap> uint64_t draw(const GpuMesh& m, Overlap&& overlap) const noexcept {
         glBindVertexArray(m.vao);
-        uint64_t drawn = 0;
-        uint32_t runStart = 0, runCount = 0;
+        RunMerger runs;
         for (const auto& c : m.chunks) {
-            if (!visible(c.bounds)) continue;
-            if (runCount > 0 && c.firstTriangle == runStart + runCount) {
-                runCount += c.triangleCount;
-                continue;
-            }
-            drawRun(runStart, runCount);
-            drawn += runCount;
-            runStart = c.firstTriangle;
-            runCount = c.triangleCount;
+            const geometry::shadow::ClipOverlap o = overlap(c.bounds);
+            if (o == geometry::shadow::ClipOverlap::Outside) continue;
+            visibleRuns(m, c, o, overlap);
+            for (const geometry::scene::TriangleRun& r : visible_) runs.add(r.firstTriangle, r.triangleCount);
         }
-        drawRun(runStart, runCount);
-        return drawn + runCount;
+        return runs.finish();
     }
 
 private:
@@ -97,9 +103,57 @@ private:
         glDrawElements(GL_TRIANGLES, GLsizei(triangles * 3), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(uintptr_t(firstTriangle) * 3 * sizeof(uint32_t)));
     }
+    /// Collects runs of consecutive triangles and draws each maximal run with one call.
+    class RunMerger {
+    public:
+        void add(uint32_t first, uint32_t count) noexcept {
+            if (count_ > 0 && first == first_ + count_) {
+                count_ += count;
+                return;
+            }
+            flush();
+            first_ = first;
+            count_ = count;
+        }
+        /// Draws what is pending; returns the triangles drawn in all.
+        uint64_t finish() noexcept {
+            flush();
+            return drawn_;
+        }
+
+    private:
+        void flush() noexcept {
+            drawRun(first_, count_);
+            drawn_ += count_;
+            count_ = 0;
+        }
+        uint32_t first_ = 0, count_ = 0;
+        uint64_t drawn_ = 0;
+    };
+    /// Fills visible_ with what of chunk `c` (overlap `o`, not Outside) to draw: the chunk, or,
+    /// when it is only Partly inside and has parts, its parts that are not Outside. Returns their
+    /// triangles.
+    template <class Overlap>
+    uint32_t visibleRuns(const GpuMesh& m, const geometry::scene::Chunk& c, geometry::shadow::ClipOverlap o,
+                         Overlap& overlap) const noexcept {
+        visible_.clear();
+        if (o == geometry::shadow::ClipOverlap::Inside || c.partCount == 0 ||
+            size_t(c.firstPart) + c.partCount > m.parts.size()) {
+            visible_.push_back(c);
+            return c.triangleCount;
+        }
+        uint32_t triangles = 0;
+        for (uint32_t k = c.firstPart; k < c.firstPart + c.partCount; ++k)
+            if (overlap(m.parts[k].bounds) != geometry::shadow::ClipOverlap::Outside) {
+                visible_.push_back(m.parts[k]);
+                triangles += m.parts[k].triangleCount;
+            }
+        return triangles;
+    }
     std::vector<GpuMesh> meshes_;
     bool hasLod_ = false;
     mutable std::vector<const geometry::lod::LodRange*> simplified_; // drawLevels' scratch list
+    mutable std::vector<geometry::scene::TriangleRun> visible_;      // visibleRuns' scratch list
 };
 
 } // namespace renderer

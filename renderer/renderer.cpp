@@ -218,7 +218,7 @@ void Renderer::drawCasters(const geometry::shadow::ShadowPlan& plan, int index, 
         }
         program.set("uModel", m.transform);
         const auto inMap = [&](const geometry::scene::Aabb& b) {
-            return geometry::shadow::intersectsClipVolume(b, split.lightViewProj);
+            return geometry::shadow::clipOverlap(b, split.lightViewProj);
         };
         // casters.lod = auto: per chunk, the coarsest level the map cannot tell from the original.
         const auto level = [&](size_t chunk, const geometry::scene::Aabb& b) {
@@ -393,8 +393,7 @@ void Renderer::depthPrePass(const geometry::shadow::ShadowPlan& plan, const geom
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     for (const auto& m : scene_->meshes()) {
         depthOnly.set("uModel", m.transform);
-        scene_->draw(
-            m, [&](const geometry::scene::Aabb& box) { return geometry::shadow::intersectsClipVolume(box, viewProj); });
+        scene_->draw(m, [&](const geometry::scene::Aabb& box) { return geometry::shadow::clipOverlap(box, viewProj); });
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
@@ -411,9 +410,7 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
     glEnable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
-    const auto inView = [&](const geometry::scene::Aabb& box) {
-        return geometry::shadow::intersectsClipVolume(box, viewProj);
-    };
+    const auto inView = [&](const geometry::scene::Aabb& box) { return geometry::shadow::clipOverlap(box, viewProj); };
     glDepthFunc(prepassDrawn_ ? GL_LEQUAL : GL_LESS);
     glDepthMask(prepassDrawn_ ? GL_FALSE : GL_TRUE);
     eyeProgram_.use();
@@ -502,9 +499,8 @@ void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const 
     for (const auto& m : scene_->meshes()) {
         unlitProgram_.set("uModel", m.transform);
         unlitProgram_.set("uColor", m.color);
-        scene_->draw(m, [&](const geometry::scene::Aabb& b) {
-            return geometry::shadow::intersectsClipVolume(b, plan.unwarpedViewProj);
-        });
+        scene_->draw(
+            m, [&](const geometry::scene::Aabb& b) { return geometry::shadow::clipOverlap(b, plan.unwarpedViewProj); });
     }
     if (views.overlays) lines_.draw(geometry::shadow::unwarpedViewOverlays(plan), plan.unwarpedViewProj);
 }

@@ -34,7 +34,7 @@ scene::Scene tubeScene(bool perTubeChunks) {
         }
         if (perTubeChunks) {
             for (uint32_t first = 0; first < mesh.triangleCount(); first += 4096) {
-                scene::Chunk c{first, 4096, {}};
+                scene::Chunk c{{first, 4096, {}}};
                 for (uint32_t i = 3 * first; i < 3 * (first + 4096); ++i) c.bounds.add(mesh.positions[mesh.indices[i]]);
                 mesh.chunks.push_back(c);
             }

@@ -388,7 +388,7 @@ TEST(CasterLod, DegenerateInputIsHarmless) {
     {
         scene::Mesh bad = sceneOf(tube()).meshes[0]; // an index out of range, a chunk past the index buffer
         bad.indices[7] = 1u << 30;
-        bad.chunks.push_back({bad.chunks[0].firstTriangle + 10, 1u << 20, bad.chunks[0].bounds});
+        bad.chunks.push_back({{bad.chunks[0].firstTriangle + 10, 1u << 20, bad.chunks[0].bounds}});
         s.meshes.push_back(bad);
     }
     {

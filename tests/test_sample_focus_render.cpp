@@ -155,3 +155,34 @@ TEST(SampleFocus, FittingToSamplesLowersP95M) {
         }
     }
 }
+
+// Chunk parts (geometry/scene/chunking.h) only drop triangles that fall outside a pass's clip
+// volume: on pssm3 fitted to the samples on `deck`, where the first split's small map cuts through
+// the platform's chunks, the same maps and the same eye image come from far fewer shadow triangles
+// than with whole chunks alone (measured: 389k → 298k at 480×270).
+TEST(SampleFocus, ChunkPartsDrawFewerTrianglesForTheSameMaps) {
+    Scene wholeChunks = makePlatformScene();
+    for (Mesh& m : wholeChunks.meshes) {
+        m.parts.clear();
+        for (Chunk& c : m.chunks) c.partCount = 0;
+    }
+    Bench& b = platform();
+    renderer::Renderer without(wholeChunks);
+    const renderer::MeasureView view = deck();
+    const Viewport vp{240, 136};
+    ShadowSettings settings = preset("pssm3");
+    settings.resolution = 512;
+    settings.focus = FocusMode::Samples;
+    const ShadowPlan geometric = planShadows(settings, b.scene.bounds(), view.camera, view.light, vp);
+    const SampleBounds samples = b.r->eyeSamples(geometric, vp);
+    const ShadowPlan plan = planShadows(settings, b.scene.bounds(), view.camera, view.light, vp, &samples);
+    ASSERT_EQ(plan.splits.size(), 3u);
+    b.r->render(plan, vp, 16);
+    without.render(plan, vp, 16);
+    const auto& with = b.r->stats();
+    EXPECT_LT(double(with.splitTriangles[0]), 0.75 * double(without.stats().splitTriangles[0]));
+    EXPECT_LT(with.shadowTriangles, without.stats().shadowTriangles);
+    EXPECT_LT(with.eyeTriangles, without.stats().eyeTriangles);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(b.r->readShadowMap(i, 512), without.readShadowMap(i, 512)) << "split " << i;
+    EXPECT_EQ(b.r->readEye().rgba, without.readEye().rgba);
+}

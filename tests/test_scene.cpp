@@ -2,6 +2,7 @@
 #include "geometry/scene/chunking.h"
 #include "geometry/scene/mesh_builder.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,6 +45,60 @@ TEST(Chunking, ChunksCoverEveryTriangleOnceWithinLimitAndBounds) {
     // Spatial coherence: chunks of a flat grid cover roughly 1/N of its area each.
     const float area = 100.f * 100.f;
     for (const auto& c : m.chunks) EXPECT_LT(c.bounds.extent().x * c.bounds.extent().z, area / 2.f);
+}
+
+// Each chunk's parts tile it in order, hold at most kMaxPartTriangles each, and their boxes hold
+// their triangles (and lie in the chunk's, which is their union); after a transform change
+// reboundRuns makes all boxes hold the moved triangles again.
+TEST(Chunking, PartsTileEachChunkInOrderWithinLimitAndBounds) {
+    MeshBuilder mb("grid", glm::vec3(1.f));
+    mb.addGroundGrid({0, 0, 0}, 100.f, 100); // 20000 triangles: chunks of ≤ 4096, parts of ≤ 256
+    Mesh m = mb.build();
+    const auto holdsItsTriangles = [&](const TriangleRun& r) {
+        for (uint32_t t = r.firstTriangle; t < r.firstTriangle + r.triangleCount; ++t)
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 p(m.transform * glm::vec4(m.positions[m.indices[3 * t + k]], 1.f));
+                if (!r.bounds.contains(p, 1e-3f)) return false;
+            }
+        return true;
+    };
+    const auto check = [&] {
+        size_t parts = 0;
+        for (const Chunk& c : m.chunks) {
+            ASSERT_GT(c.partCount, 1u) << "a chunk of " << c.triangleCount << " triangles is split further";
+            ASSERT_LE(size_t(c.firstPart) + c.partCount, m.parts.size());
+            uint32_t next = c.firstTriangle;
+            Aabb united;
+            for (uint32_t k = c.firstPart; k < c.firstPart + c.partCount; ++k) {
+                const TriangleRun& p = m.parts[k];
+                EXPECT_EQ(p.firstTriangle, next);
+                EXPECT_GT(p.triangleCount, 0u);
+                EXPECT_LE(p.triangleCount, kMaxPartTriangles);
+                EXPECT_TRUE(holdsItsTriangles(p));
+                EXPECT_LT(p.bounds.extent().x * p.bounds.extent().z, c.bounds.extent().x * c.bounds.extent().z / 8.f)
+                    << "parts are spatially coherent";
+                united.add(p.bounds);
+                next += p.triangleCount;
+            }
+            EXPECT_EQ(next, c.firstTriangle + c.triangleCount);
+            EXPECT_EQ(united.lo, c.bounds.lo);
+            EXPECT_EQ(united.hi, c.bounds.hi);
+            EXPECT_TRUE(holdsItsTriangles(c));
+            parts += c.partCount;
+        }
+        EXPECT_EQ(parts, m.parts.size());
+    };
+    check();
+    m.transform = glm::rotate(glm::translate(glm::mat4(1.f), {5.f, 2.f, -3.f}), 0.7f, glm::vec3(0, 1, 0));
+    reboundRuns(m);
+    check();
+    // A chunk that is one part keeps none.
+    MeshBuilder small("small", glm::vec3(1.f));
+    small.addGroundGrid({0, 0, 0}, 10.f, 10); // 200 triangles
+    const Mesh one = small.build();
+    ASSERT_EQ(one.chunks.size(), 1u);
+    EXPECT_EQ(one.chunks[0].partCount, 0u);
+    EXPECT_TRUE(one.parts.empty());
 }
 
 TEST(Gamma, AngleBetweenLightAndView) {

@@ -417,6 +417,7 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options) {
     if (options.fixOrientation) fixOrientation(pos.size(), tris, r);
     computeNormals(mesh, pos, tris, options.creaseAngleDeg);
     mesh.chunks.clear(); // indices changed: chunk again (loadModel does)
+    mesh.parts.clear();
     r.outputVertices = mesh.positions.size();
     r.outputFaces = mesh.triangleCount();
     return r;

@@ -49,7 +49,7 @@ bool isModelFile(std::string_view path) noexcept {
 namespace {
 
 /// Turns every mesh so that `axis` points up (+Y): the rotation goes in front of each transform, and
-/// the chunks' world boxes turn with it (a quarter turn maps a box onto a box exactly).
+/// the chunks' and parts' world boxes turn with it (a quarter turn maps a box onto a box exactly).
 void turnUp(LoadedModel& model, UpAxis axis) {
     model.up = axis;
     if (axis == UpAxis::Y) return;
@@ -57,6 +57,7 @@ void turnUp(LoadedModel& model, UpAxis axis) {
     for (scene::Mesh& mesh : model.meshes) {
         mesh.transform = r * mesh.transform;
         for (scene::Chunk& chunk : mesh.chunks) chunk.bounds = chunk.bounds.transformed(r);
+        for (scene::TriangleRun& part : mesh.parts) part.bounds = part.bounds.transformed(r);
     }
 }
 

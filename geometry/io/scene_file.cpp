@@ -207,16 +207,8 @@ Placement readPlacement(const Reader& r, const json& e, const std::string& key) 
 /// Chunk bounds are world space: recompute them for the mesh's (new) transform from the chunk's
 /// own triangles, which is exact and keeps the triangle order chunkMesh chose.
 void reboundChunks(scene::Mesh& mesh) {
-    if (mesh.chunks.empty()) {
-        scene::chunkMesh(mesh);
-        return;
-    }
-    for (scene::Chunk& c : mesh.chunks) {
-        scene::Aabb local;
-        for (size_t i = 3 * size_t(c.firstTriangle); i < 3 * (size_t(c.firstTriangle) + c.triangleCount); ++i)
-            local.add(mesh.positions[mesh.indices[i]]);
-        c.bounds = local.transformed(mesh.transform);
-    }
+    if (mesh.chunks.empty()) scene::chunkMesh(mesh);
+    else scene::reboundRuns(mesh);
 }
 
 void place(scene::Mesh& mesh, const Placement& p) {

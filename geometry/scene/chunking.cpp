@@ -7,14 +7,20 @@ namespace geometry::scene {
 
 namespace {
 
+using Range = std::pair<uint32_t, uint32_t>; // [begin, end) into the triangle order
+
 struct Splitter {
     const std::vector<glm::vec3>& centroids;
-    uint32_t maxTriangles;
-    std::vector<std::pair<uint32_t, uint32_t>> ranges; // [begin, end) into order
+    uint32_t maxTriangles, maxPartTriangles;
+    std::vector<Range> chunks, parts; // each in order of begin
 
-    void split(std::vector<uint32_t>& order, uint32_t begin, uint32_t end) {
-        if (end - begin <= maxTriangles) {
-            ranges.emplace_back(begin, end);
+    void split(std::vector<uint32_t>& order, uint32_t begin, uint32_t end, bool inChunk) {
+        if (!inChunk && end - begin <= maxTriangles) {
+            chunks.emplace_back(begin, end);
+            inChunk = true;
+        }
+        if (inChunk && end - begin <= maxPartTriangles) {
+            parts.emplace_back(begin, end);
             return;
         }
         Aabb box;
@@ -24,17 +30,30 @@ struct Splitter {
         const uint32_t mid = begin + (end - begin) / 2;
         std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
                          [&](uint32_t a, uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
-        split(order, begin, mid);
-        split(order, mid, end);
+        split(order, begin, mid, inChunk);
+        split(order, mid, end, inChunk);
     }
 };
 
+/// World bounds of a run's triangles: the box of the transformed vertices (a transformed local box
+/// is loose under rotation).
+Aabb runBounds(const Mesh& mesh, const TriangleRun& run) {
+    Aabb world;
+    const size_t end = std::min(3 * (size_t(run.firstTriangle) + run.triangleCount), mesh.indices.size());
+    for (size_t i = 3 * size_t(run.firstTriangle); i < end; ++i)
+        if (mesh.indices[i] < mesh.positions.size())
+            world.add(glm::vec3(mesh.transform * glm::vec4(mesh.positions[mesh.indices[i]], 1.f)));
+    return world;
+}
+
 } // namespace
 
-void chunkMesh(Mesh& mesh, uint32_t maxTriangles) {
+void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
     maxTriangles = std::max<uint32_t>(maxTriangles, 1);
+    maxPartTriangles = std::clamp<uint32_t>(maxPartTriangles, 1, maxTriangles);
     const uint32_t triCount = static_cast<uint32_t>(mesh.triangleCount());
     mesh.chunks.clear();
+    mesh.parts.clear();
     if (triCount == 0) return;
 
     std::vector<glm::vec3> centroids(triCount);
@@ -44,22 +63,43 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles) {
                        3.f;
     std::vector<uint32_t> order(triCount);
     std::iota(order.begin(), order.end(), 0u);
-    Splitter splitter{centroids, maxTriangles, {}};
-    splitter.split(order, 0, triCount);
+    Splitter splitter{centroids, maxTriangles, maxPartTriangles, {}, {}};
+    splitter.split(order, 0, triCount, false);
 
     std::vector<uint32_t> indices(mesh.indices.size());
     for (uint32_t i = 0; i < triCount; ++i)
         for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.indices[3 * order[i] + k];
     mesh.indices = std::move(indices);
 
-    for (const auto& [b, e] : splitter.ranges) {
+    // Parts come in order of begin and tile the chunks, which come in the same order. A chunk of one
+    // part keeps none (the part would be the chunk again).
+    size_t part = 0;
+    for (const auto& [b, e] : splitter.chunks) {
         Chunk c;
         c.firstTriangle = b;
         c.triangleCount = e - b;
-        // The box of the transformed vertices: a transformed local box is loose under rotation.
-        for (uint32_t i = 3 * b; i < 3 * e; ++i)
-            c.bounds.add(glm::vec3(mesh.transform * glm::vec4(mesh.positions[mesh.indices[i]], 1.f)));
+        const size_t first = part;
+        while (part < splitter.parts.size() && splitter.parts[part].second <= e) ++part;
+        if (part - first > 1) {
+            c.firstPart = uint32_t(mesh.parts.size());
+            c.partCount = uint32_t(part - first);
+            for (size_t k = first; k < part; ++k)
+                mesh.parts.push_back({splitter.parts[k].first, splitter.parts[k].second - splitter.parts[k].first, {}});
+        }
         mesh.chunks.push_back(c);
+    }
+    reboundRuns(mesh);
+}
+
+void reboundRuns(Mesh& mesh) {
+    for (TriangleRun& p : mesh.parts) p.bounds = runBounds(mesh, p);
+    for (Chunk& c : mesh.chunks) {
+        if (c.partCount == 0 || size_t(c.firstPart) + c.partCount > mesh.parts.size()) {
+            c.bounds = runBounds(mesh, c);
+            continue;
+        }
+        c.bounds = {}; // the union of its parts' boxes is exact: they tile it
+        for (uint32_t k = c.firstPart; k < c.firstPart + c.partCount; ++k) c.bounds.add(mesh.parts[k].bounds);
     }
 }
 

@@ -13,10 +13,18 @@ namespace geometry::scene {
 
 /// A contiguous run of triangles in a mesh's index buffer, with world-space bounds, so that
 /// shadow and eye passes can cull casters per split (docs/design.md §3.4).
-struct Chunk {
+struct TriangleRun {
     uint32_t firstTriangle = 0;
     uint32_t triangleCount = 0;
     Aabb bounds; // world space
+};
+
+/// The unit of culling and of caster level of detail (geometry/lod): a spatially coherent run.
+/// Its parts, finer runs that tile it in order, let a pass that draws its original triangles
+/// cull again where the chunk straddles the clip volume.
+struct Chunk : TriangleRun {
+    uint32_t firstPart = 0; // in Mesh::parts
+    uint32_t partCount = 0; // 0: not subdivided
 };
 
 struct Mesh {
@@ -25,8 +33,9 @@ struct Mesh {
     std::vector<glm::vec3> normals;   // object space, one per position
     std::vector<uint32_t> indices;    // triangles
     glm::vec3 color{0.7f};
-    glm::mat4 transform{1.f};  // object → world
-    std::vector<Chunk> chunks; // filled by chunkMesh()
+    glm::mat4 transform{1.f};       // object → world
+    std::vector<Chunk> chunks;      // filled by chunkMesh()
+    std::vector<TriangleRun> parts; // the chunks' parts, chunk by chunk (chunkMesh())
     /// Holds open surfaces (quads, grids) that must cast from both faces. Solids cast from their
     /// faces towards the light alone, which halves shadow-pass rasterization.
     bool twoSided = true;

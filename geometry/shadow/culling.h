@@ -4,8 +4,11 @@
 
 namespace geometry::shadow {
 
-/// False only when the box lies entirely outside one of the six clip planes of `viewProj`
-/// (conservative: a box straddling a corner may be kept). Empty boxes are outside.
-[[nodiscard]] bool intersectsClipVolume(const scene::Aabb& box, const glm::mat4& viewProj) noexcept;
+enum class ClipOverlap { Outside, Partly, Inside };
+
+/// Outside only when the box lies entirely outside one of the six clip planes of `viewProj`
+/// (conservative: a box straddling a corner may be Partly); Inside when all its corners are
+/// inside all six. Empty boxes are Outside.
+[[nodiscard]] ClipOverlap clipOverlap(const scene::Aabb& box, const glm::mat4& viewProj) noexcept;
 
 } // namespace geometry::shadow
