@@ -578,8 +578,16 @@ TEST_F(GuiE2E, DrawsOnlyWhatChanged) {
     const WidgetMap afterSlider = settle("after the slider");
     std::cout << "[ e2e ] slider drag: " << describePasses(beforeSlider) << " -> " << describePasses(afterSlider)
               << '\n';
-    EXPECT_EQ(afterSlider.counter("passes.eye_full"), beforeSlider.counter("passes.eye_full") + 1)
-        << "exactly one full-resolution frame after the slider stops";
+    // Exactly one full frame when the drag's steps come in consecutive frames; a slow frame (the
+    // sanitizer build on a loaded machine) can make a step arrive after kRefinePause, and the pause
+    // is refined as designed. What must hold either way: the last value is drawn at full resolution,
+    // and every full frame refines coarse ones (a dashboard redrawing every frame draws no coarse
+    // frames). tests/test_dashboard_interaction.cpp checks the exact sequence, driving the frames.
+    const double fullAdded = afterSlider.counter("passes.eye_full") - beforeSlider.counter("passes.eye_full");
+    const double coarseAdded = afterSlider.counter("passes.eye_coarse") - beforeSlider.counter("passes.eye_coarse");
+    EXPECT_GE(fullAdded, 1.0) << "the slider's last value drawn at full resolution";
+    EXPECT_GE(coarseAdded, 1.0) << "the drag drew coarse frames";
+    EXPECT_LE(fullAdded, coarseAdded) << "each full frame refines coarse ones";
     EXPECT_GT(afterSlider.counter("passes.shadow"), beforeSlider.counter("passes.shadow")) << "the sun moved";
 
     xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
