@@ -38,6 +38,14 @@ void reportRays(benchmark::State& state, size_t rays) {
     state.counters["rays"] = static_cast<double>(rays);
 }
 
+/// Every benchmark here: wall-clock milliseconds, and the fastest repetition as "min".
+void timed(benchmark::internal::Benchmark* b) {
+    b->Unit(benchmark::kMillisecond)->UseRealTime()->ComputeStatistics("min", fastest);
+}
+
+/// The same with 1 and 2 threads.
+void timedOnThreads(benchmark::internal::Benchmark* b) { timed(b->Arg(1)->Arg(2)->ArgName("threads")); }
+
 } // namespace
 
 /// occluded() over the image in row-major order: packets are 1×16 strips of pixels.
@@ -50,13 +58,7 @@ static void BM_Occluded(benchmark::State& state) {
     }
     reportRays(state, f.hits.hitCount());
 }
-BENCHMARK(BM_Occluded)
-    ->Arg(1)
-    ->Arg(2)
-    ->ArgName("threads")
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->ComputeStatistics("min", fastest);
+BENCHMARK(BM_Occluded)->Apply(timedOnThreads);
 
 /// The untimed setup above, for reference: primary rays for 1280×720.
 static void BM_PrimaryHits(benchmark::State& state) {
@@ -67,7 +69,7 @@ static void BM_PrimaryHits(benchmark::State& state) {
     }
     reportRays(state, static_cast<size_t>(kWidth) * kHeight);
 }
-BENCHMARK(BM_PrimaryHits)->Unit(benchmark::kMillisecond)->UseRealTime()->ComputeStatistics("min", fastest);
+BENCHMARK(BM_PrimaryHits)->Apply(timed);
 
 /// sunVisibility() with the soft truth's 8 × 8 rays per receiver and a 0.53° sun, over the receivers
 /// (facing the light) of a 320 × 180 view: 64 rays each, in packets of 16 per receiver.
@@ -89,13 +91,7 @@ static void BM_SunVisibility(benchmark::State& state) {
     }
     reportRays(state, receivers * kSamples * kSamples);
 }
-BENCHMARK(BM_SunVisibility)
-    ->Arg(1)
-    ->Arg(2)
-    ->ArgName("threads")
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->ComputeStatistics("min", fastest);
+BENCHMARK(BM_SunVisibility)->Apply(timedOnThreads);
 
 /// BVH build over the 250k triangles (once per scene).
 static void BM_Build(benchmark::State& state) {
@@ -105,6 +101,6 @@ static void BM_Build(benchmark::State& state) {
         benchmark::DoNotOptimize(truth.triangleCount());
     }
 }
-BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->UseRealTime()->ComputeStatistics("min", fastest);
+BENCHMARK(BM_Build)->Apply(timed);
 
 BENCHMARK_MAIN();
