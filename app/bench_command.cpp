@@ -264,7 +264,9 @@ int runBench(const BenchOptions& o) {
         csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
                "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
                "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam,shadow_ms_median,"
-               "shadow_triangles,shadow_triangles_without_lod,soft_mean_abs,umbra_light\n";
+               "shadow_triangles,shadow_triangles_without_lod,soft_mean_abs,umbra_light,contact_false_lit,contact_gap_"
+               "p95,"
+               "interior_mean_abs,edge_width_px,edge_width_texels,truth_singular\n";
         for (const Row& w : rows) {
             csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
                 << w.cpuMs << ',' << w.p95 << ',';
@@ -285,7 +287,10 @@ int runBench(const BenchOptions& o) {
             csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << ',';
             if (std::isfinite(w.soft)) csv << w.soft;
             csv << ',';
-            if (w.truth) csv << c.umbraLight;
+            if (w.truth)
+                csv << c.umbraLight << ',' << c.contactFalseLit << ',' << c.contactGapP95 << ',' << c.interiorMeanAbs
+                    << ',' << c.edgeWidthPx << ',' << c.edgeWidthTexels << ',' << c.singular;
+            else csv << ",,,,,,";
             csv << '\n';
         }
         if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());

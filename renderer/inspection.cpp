@@ -1,6 +1,7 @@
 #include "renderer/inspection.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace renderer {
 
@@ -16,9 +17,14 @@ geometry::analysis::FrameReadback readBack(const Renderer& r, const geometry::sh
     return frame;
 }
 
-geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow::ShadowPlan& plan,
+geometry::analysis::Inspection inspect(Renderer& r, const geometry::shadow::ShadowPlan& plan,
                                        const geometry::analysis::GroundTruth* truth, int truthSamples) {
-    return geometry::analysis::makeInspection(readBack(r, plan), plan, truth, truthSamples);
+    geometry::analysis::FrameReadback frame = readBack(r, plan);
+    if (truth && truthSamples > 1) {
+        frame.samplesPerAxis = truthSamples;
+        frame.sampleShadow = r.readShadowSamples(plan, truthSamples);
+    }
+    return geometry::analysis::makeInspection(std::move(frame), plan, truth, truthSamples);
 }
 
 } // namespace renderer

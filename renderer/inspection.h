@@ -10,8 +10,9 @@ namespace renderer {
 [[nodiscard]] geometry::analysis::FrameReadback readBack(const Renderer& r, const geometry::shadow::ShadowPlan& plan);
 
 /// Reads back the last frame and computes the statistics; `truth` adds the ground-truth pass with
-/// truthSamples² samples per pixel (addTruth).
-[[nodiscard]] geometry::analysis::Inspection inspect(const Renderer& r, const geometry::shadow::ShadowPlan& plan,
+/// truthSamples² samples per pixel (addTruth), each compared with the eye pass drawn again at those
+/// samples (Renderer::readShadowSamples) when truthSamples > 1.
+[[nodiscard]] geometry::analysis::Inspection inspect(Renderer& r, const geometry::shadow::ShadowPlan& plan,
                                                      const geometry::analysis::GroundTruth* truth,
                                                      int truthSamples = 1);
 

@@ -5,8 +5,8 @@
 //   [SECTION] Shadow maps ............... drawCasters, shadowPass, peelAndCombine, momentsPass
 //   [SECTION] Eye view .................. depthPrePass, eyePass, eyeBlurAndCompose
 //   [SECTION] Light views ............... lightViewPass, unwarpedViewPass
-//   [SECTION] Reading back .............. readShadowMask, readShadowDepth, readShadowMap, readAux, readPositions,
-//                                         readNormals
+//   [SECTION] Reading back .............. readShadowMask, readShadowDepth, readShadowMap, readShadowSamples,
+//                                         readAux, readPositions, readNormals
 
 #include "renderer.h"
 
@@ -553,6 +553,28 @@ std::vector<float> Renderer::readShadowMap(int split, int resolution) const {
         std::copy_n(bottomUp.begin() + std::ptrdiff_t((side - 1 - row) * side), side,
                     out.begin() + std::ptrdiff_t(row * side));
     return out;
+}
+
+std::vector<float> Renderer::readShadowSamples(const geometry::shadow::ShadowPlan& plan, int n) {
+    const int width = int(stats_.eyeWidth), height = int(stats_.eyeHeight);
+    if (n < 1 || width < 1 || height < 1 || !drawnMaps_)
+        throw std::invalid_argument("readShadowSamples: needs a drawn frame and n >= 1");
+    const int slot = eyeSlot_;
+    const FrameStats kept = stats_;
+    // The pre-pass then the eye pass alone, into the other slot's targets: the maps are the frame's.
+    depthPrePass(plan, {width * n, height * n}, true);
+    uploadShadowBlock(plan);
+    eyePass(plan);
+    std::vector<float> s = readShadowMask();
+    const std::vector<glm::vec4> normals = readNormals(), aux = readAux();
+    for (size_t i = 0; i < s.size(); ++i)
+        if (!(normals[i].w > 0.f) || aux[i].z < 0.f) s[i] = std::numeric_limits<float>::quiet_NaN();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    for (int unit = 0; unit < 4; ++unit) glBindSampler(unit, 0);
+    eyeSlot_ = slot;
+    stats_ = kept;
+    prepassReady_ = false;
+    return s;
 }
 
 std::vector<glm::vec4> Renderer::readAux() const { return readFloat4(EyeBuffers::Aux); }

@@ -112,6 +112,13 @@ public:
     /// split's drawn resolution, at most the array's), top row (v = 1) first. Empty for a split or
     /// resolution the last frame did not draw.
     [[nodiscard]] std::vector<float> readShadowMap(int split, int resolution) const;
+    /// The eye pass's s at the truth's sample positions (docs/design.md §4 "Like for like"): for the
+    /// plan last drawn, the eye pass alone again at (width·n) × (height·n) with the maps already
+    /// drawn, so sub-pixel (x, y) of pixel (X, Y) lies where GroundTruth::coverage traces sample
+    /// (x, y). NaN where that sample sees no receiver. The frame drawn before stays readable (it keeps
+    /// its own eye targets); stats() keep describing it. Throws std::runtime_error as render() for a
+    /// size beyond the view memory limit, std::invalid_argument for n < 1 or no frame drawn.
+    [[nodiscard]] std::vector<float> readShadowSamples(const geometry::shadow::ShadowPlan& plan, int n);
     [[nodiscard]] const FrameStats& stats() const noexcept { return stats_; }
     /// Blocks until the GPU times of every rendered frame are in; for one-shot exports.
     const PassTimes& waitForTimings() noexcept;

@@ -1,6 +1,5 @@
 // The full shadow plan: splits, focus bodies and warps together.
 #include "geometry/scene/builtin_scenes.h"
-#include "geometry/shadow/contact_distance.h"
 #include "geometry/shadow/focus.h"
 #include "geometry/shadow/shadow_plan.h"
 
@@ -181,18 +180,6 @@ TEST(Plan, BiasTypesBecomeTheOffsetsTheRendererApplies) {
     EXPECT_EQ(both.polygonOffset, glm::vec2(2.f, 3.f));
     EXPECT_EQ(both.normalOffsetTexels, 1.5f);
     EXPECT_EQ(both.receiverOffset, 0.f);
-
-    // Contact distance: at least a texel, or the bias's own reach when that is longer.
-    const glm::vec3 p{2.f, 0.f, 1.f};
-    const float texel = texelWorldSize(both, 0, p, 1024);
-    ASSERT_TRUE(std::isfinite(texel));
-    EXPECT_GT(texel, 0.f);
-    EXPECT_NEAR(texelWorldSize(both, 0, p, 2048), texel / 2.f, texel * 1e-3f);
-    EXPECT_NEAR(contactDistance(both, 0, p, 1024), 3.5f * texel, texel * 1e-3f);
-    EXPECT_NEAR(contactDistance(normal, 0, p, 1024), 1.5f * texel, texel * 1e-3f);
-    EXPECT_NEAR(contactDistance(constant, 0, p, 1024), std::max(0.07f, texel), 1e-6f);
-    EXPECT_TRUE(std::isnan(contactDistance(both, 5, p, 1024)));
-    EXPECT_TRUE(std::isnan(texelWorldSize(both, 0, p, 0)));
 }
 
 namespace {
@@ -276,3 +263,4 @@ TEST(Plan, QuantizeHoldsAWarpedFrameForSmallMoves) {
     EXPECT_TRUE(same(StabilizeMode::Quantize));
     EXPECT_FALSE(same(StabilizeMode::Off));
 }
+

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -16,7 +17,14 @@ struct Image {
     std::vector<float> s = std::vector<float>(W * H, 1.f), c = std::vector<float>(W * H, 1.f);
     std::vector<uint8_t> receiver = std::vector<uint8_t>(W * H, 1), ambiguity;
     std::vector<float> texelsPerPixel = std::vector<float>(W * H, 1.f);
-    [[nodiscard]] TruthClassInput input() const { return {W, s, c, receiver, ambiguity, texelsPerPixel}; }
+    [[nodiscard]] TruthClassInput input() const {
+        return {.width = W,
+                .s = s,
+                .coverage = c,
+                .receiver = receiver,
+                .ambiguity = ambiguity,
+                .texelsPerPixel = texelsPerPixel};
+    }
     float& at(std::vector<float>& v, int x, int y) { return v[size_t(y) * W + size_t(x)]; }
 };
 
@@ -82,7 +90,8 @@ TEST(TruthClasses, ByGroupMatchesEachGroupAlone) {
 }
 
 // Ambiguous pixels are counted apart; a leak in a shadow is interior false lit; fractional
-// coverage marks an edge; |s − c| is the penumbra error.
+// coverage marks an edge, where a pixel adds the share of its samples on the wrong side; |s − c| is
+// the penumbra error.
 TEST(TruthClasses, AmbiguousLeaksAndPenumbra) {
     Image img;
     img.c.assign(W * H, 0.f);
@@ -92,14 +101,14 @@ TEST(TruthClasses, AmbiguousLeaksAndPenumbra) {
     img.ambiguity[size_t(15) * W + 15] = 1; // terminator
     img.at(img.s, 15, 15) = 1.f;            // misclassified, but ambiguous
     img.at(img.c, 10, 3) = 0.5f;            // a penumbra pixel…
-    img.at(img.s, 10, 3) = 0.75f;           // …rendered lit (c ≥ 0.5: agrees)
+    img.at(img.s, 10, 3) = 0.75f;           // …rendered lit: its shadowed half is wrong (a tie decides nothing)
     img.at(img.s, 10, 4) = 1.f;             // lit beside the penumbra: an edge error
     img.receiver[size_t(19) * W + 19] = 0;  // not a receiver
     const TruthClasses t = truthClasses(img.input());
     EXPECT_EQ(t.count, size_t(W * H - 1));
     EXPECT_DOUBLE_EQ(t.interiorFalseLit, 1.0 / double(t.count));
     EXPECT_DOUBLE_EQ(t.ambiguous, 1.0 / double(t.count));
-    EXPECT_DOUBLE_EQ(t.edgeError, 1.0 / double(t.count));
+    EXPECT_DOUBLE_EQ(t.edgeError, 1.5 / double(t.count));
     EXPECT_NEAR(t.penumbraMeanAbs, (1.0 + 0.25 + 1.0) / double(t.count - 1), 1e-12);
     // The umbra: all but the ambiguous pixel and the 3×3 block about the penumbra pixel; its only
     // light is the leak.
@@ -112,5 +121,95 @@ TEST(TruthClasses, BadInputsThrow) {
     img.c.pop_back();
     EXPECT_THROW((void)truthClasses(img.input()), std::invalid_argument);
     Image odd;
-    EXPECT_THROW((void)truthClasses({7, odd.s, odd.c, odd.receiver, {}, {}}), std::invalid_argument);
+    EXPECT_THROW((void)truthClasses({.width = 7, .s = odd.s, .coverage = odd.c, .receiver = odd.receiver}),
+                 std::invalid_argument);
+}
+
+// Like for like: with the render sampled where the truth is, an edge through the middle of pixels
+// drawn exactly is no error at all, however fractional its pixels; drawn one sample too far, it
+// is a band 1/N pixel wide: the edge width says so in pixels and, through 1/m, in texels.
+TEST(TruthClasses, SamplesComparedWithSamplesHaveNoFloor) {
+    constexpr int N = 4;
+    Image img;
+    std::vector<float> sampleS(W * H * N * N), sampleT(sampleS.size());
+    const auto fill = [&](int renderedEdge) {
+        for (int y = 0; y < H * N; ++y)
+            for (int x = 0; x < W * N; ++x) {
+                sampleT[size_t(y) * W * N + size_t(x)] = x < 10 * N + 1 ? 0.f : 1.f; // a quarter into column 10
+                sampleS[size_t(y) * W * N + size_t(x)] = x < renderedEdge ? 0.f : 1.f;
+            }
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                img.at(img.c, x, y) = x < 10 ? 0.f : x == 10 ? 0.75f : 1.f;
+                img.at(img.s, x, y) = x < 10 ? 0.f : 1.f; // one sample per pixel would be wrong by a quarter
+                img.at(img.texelsPerPixel, x, y) = 0.5f;
+            }
+    };
+    fill(10 * N + 1);
+    TruthClassInput in = img.input();
+    const TruthClasses pixelOnly = truthClasses(in);
+    EXPECT_NEAR(pixelOnly.edgeError, 0.25 * H / (W * H), 1e-12) << "the centre sample against the area";
+    in.samplesPerAxis = N;
+    in.sampleS = sampleS;
+    in.sampleTruth = sampleT;
+    const TruthClasses exact = truthClasses(in);
+    EXPECT_EQ(exact.edgeError, 0.0);
+    EXPECT_EQ(exact.edgeWidthPx, 0.0);
+    EXPECT_DOUBLE_EQ(exact.edgeLengthPx, double(H)) << "one fractional pixel per row";
+    fill(10 * N + 2); // one sample too far: a quarter of a pixel per row
+    const TruthClasses off = truthClasses(in);
+    EXPECT_NEAR(off.edgeError, 0.25 * H / (W * H), 1e-12);
+    EXPECT_NEAR(off.edgeWidthPx, 0.25, 1e-12);
+    EXPECT_NEAR(off.edgeWidthTexels, 0.125, 1e-12);
+    EXPECT_EQ(off.interiorFalseShadow + off.interiorFalseLit, 0.0);
+}
+
+// The tie rule: a rendered s of exactly 0.5 is half wrong whatever the truth; c = 0.5 counts its
+// shadowed half wrong when rendered lit and its lit half when rendered shadowed.
+TEST(TruthClasses, ATieIsHalfWrongEitherWay) {
+    Image img;
+    img.at(img.s, 5, 5) = 0.5f; // in a lit interior
+    Image tie;
+    tie.at(tie.c, 5, 5) = 0.5f;
+    const TruthClasses t = truthClasses(img.input());
+    EXPECT_DOUBLE_EQ(t.interiorFalseShadow, 0.5 / (W * H));
+    EXPECT_DOUBLE_EQ(truthClasses(tie.input()).edgeError, 0.5 / (W * H)) << "rendered lit: the shadowed half";
+    tie.at(tie.s, 5, 5) = 0.f;
+    EXPECT_DOUBLE_EQ(truthClasses(tie.input()).edgeError, 0.5 / (W * H)) << "rendered shadowed: the lit half";
+}
+
+// Singular pixels are their own class, as in the aliasing figures; a soft sun's umbra is where its
+// disk is hidden; peter-panning is the light within the contact reach, with its gap; the interior's
+// mean |s − c| counts a darkened lit region that no threshold calls wrong.
+TEST(TruthClasses, SingularUmbraContactAndInteriorDarkening) {
+    Image img;
+    std::vector<uint8_t> singular(W * H, 0);
+    singular[size_t(2) * W + 2] = 1;
+    img.at(img.s, 2, 2) = 0.f; // wrong, but singular
+    for (float& s : img.s) s = s == 1.f ? 0.9f : s;
+    TruthClassInput in = img.input();
+    in.singular = singular;
+    const TruthClasses t = truthClasses(in);
+    EXPECT_DOUBLE_EQ(t.singular, 1.0 / (W * H));
+    EXPECT_EQ(t.interiorFalseShadow, 0.0);
+    EXPECT_NEAR(t.interiorMeanAbs, 0.1, 1e-6) << "lit ground at s = 0.9";
+    EXPECT_EQ(t.interiorFalseShadow + t.interiorFalseLit + t.edgeError, 0.0);
+
+    Image dark;
+    dark.c.assign(W * H, 0.f);
+    dark.s.assign(W * H, 0.f);
+    dark.at(dark.s, 5, 5) = 1.f; // a leak 0.3 from its occluder
+    dark.at(dark.s, 15, 15) = 0.8f;
+    std::vector<float> gap(W * H, std::numeric_limits<float>::infinity()), v(W * H, 0.f);
+    gap[size_t(5) * W + 5] = 0.3f;
+    v[size_t(15) * W + 15] = 0.5f; // the sun's disk half seen: not umbra
+    TruthClassInput soft = dark.input();
+    soft.contactGap = gap;
+    soft.visibility = v;
+    const TruthClasses u = truthClasses(soft);
+    EXPECT_DOUBLE_EQ(u.contactFalseLit, 1.0 / (W * H));
+    EXPECT_FLOAT_EQ(float(u.contactGapMedian), 0.3f);
+    EXPECT_EQ(u.umbraPixels, size_t(W * H - 1));
+    EXPECT_DOUBLE_EQ(u.umbraLight, 1.0 / double(W * H - 1));
+    EXPECT_DOUBLE_EQ(u.interiorFalseLit, 2.0 / (W * H));
 }

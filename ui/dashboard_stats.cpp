@@ -219,8 +219,21 @@ void Dashboard::drawStatsTable() {
                     return fmt("%.2f texels", t.edgeDisplacementTexelsMedian) + " / " +
                            fmt("%.2f %%", 100.0 * t.ambiguous);
                 },
-                "Median distance from a misplaced shadow edge to the true one, in texels; receivers whose truth is "
-                "ambiguous (terminator, shading and geometric normals disagree), left out of the classes");
+                "Median distance from a misplaced shadow edge to the true one, in texels; receivers no map can be "
+                "judged on (terminator, shading and geometric normals disagree, an occluder within a pixel's "
+                "footprint), left out of the classes");
+            row(
+                "peter-panning / interior |s − c|",
+                [&](int i) {
+                    const auto* in = insp(i);
+                    if (!in || !in->truthClasses) return std::string(state_.views.truth ? "–" : "truth off");
+                    const auto& t = *in->truthClasses;
+                    return fmt("%.2f %%", 100.0 * t.contactFalseLit) + fmt(" (gap p95 %.3g)", t.contactGapP95) + " / " +
+                           fmt("%.4f", t.interiorMeanAbs);
+                },
+                "contact_false_lit: shadow lost near a contact (occluder within 32 pixel footprints), with the "
+                "occluder's distance; interior_mean_abs: mean |s - c| inside fully lit or shadowed regions (a wide "
+                "kernel's darkening, light in the umbra)");
             bool soft = false; // the soft truth's row only where a side has one (light.angular_diameter_deg > 0)
             for (int i = 0; i < sides; ++i) soft = soft || (insp(i) && insp(i)->softTruth);
             if (soft)

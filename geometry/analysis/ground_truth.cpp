@@ -395,6 +395,49 @@ std::vector<uint8_t> GroundTruth::occludedWithin(const std::vector<glm::vec3>& p
     return result;
 }
 
+std::vector<float> GroundTruth::occluderDistance(const std::vector<glm::vec3>& points,
+                                                 const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                 const std::vector<float>& maxDistance, int threads,
+                                                 std::stop_token stop) const {
+    checkInputs(points, normals, l);
+    if (maxDistance.size() != points.size())
+        throw std::invalid_argument("GroundTruth::occluderDistance: " + std::to_string(points.size()) + " points but " +
+                                    std::to_string(maxDistance.size()) + " distances");
+    if (!impl_) throw std::logic_error("GroundTruth::occluderDistance on a moved-from object");
+    std::vector<float> out(points.size(), kInf);
+    const glm::vec3 toLight = -glm::normalize(l);
+    // The rays of traceOccluded (same origin, same ignored distance), intersected for their hit.
+    forEachPacket(RunLayout{points.size()}, threads, stop, [&](const Lanes& lanes) {
+        RTCRayHit16 rh;
+        alignas(64) std::array<int, kLanes> valid{};
+        bool any = false;
+        for (int i = 0; i < kLanes; ++i) {
+            const size_t idx = lanes[i];
+            const glm::vec3 p = idx != kNoPoint ? points[idx] : glm::vec3(0.f);
+            const glm::vec3 n = idx != kNoPoint ? normals[idx] : glm::vec3(0.f);
+            const float len = glm::length(n);
+            const float eps = epsilon(p);
+            const float reach = idx != kNoPoint ? maxDistance[idx] : 0.f;
+            if (!finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len) || !(reach > eps)) {
+                setIdleLane(rh.ray, i);
+                continue;
+            }
+            const glm::vec3 side = glm::dot(n, toLight) > 0.f ? n : -n;
+            setLane(rh.ray, i, p + side * (eps / len), toLight, eps, reach);
+            rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+            valid[i] = -1;
+            any = true;
+        }
+        if (!any) return;
+        RTCIntersectContext ctx = coherentContext();
+        rtcIntersect16(valid.data(), impl_->scene, &ctx, &rh);
+        for (int i = 0; i < kLanes; ++i)
+            if (valid[i] && rh.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID) out[lanes[i]] = rh.ray.tfar[i];
+    });
+    impl_->throwIfError("tracing occluder distances");
+    return out;
+}
+
 std::vector<glm::vec3> GroundTruth::surfaceNormals(const glm::vec3& eye, const std::vector<glm::vec3>& points,
                                                    const std::vector<glm::vec3>& fallback, int threads,
                                                    std::vector<int>* meshes, std::stop_token stop) const {
@@ -468,6 +511,11 @@ void tracePrimary(RTCScene scene, size_t width, size_t rows, int threads, const 
                 continue;
             }
             const PrimaryRay r = rayAt(lanes[i] % width, lanes[i] / width);
+            // A camera of extreme depth range can unproject its far plane to infinity: no sample.
+            if (!(maxAbs(r.org) < 1e18f) || !(maxAbs(r.dir) < 1e18f)) { // NaN fails too
+                setIdleLane(rh.ray, i);
+                continue;
+            }
             setLane(rh.ray, i, r.org, r.dir, r.tnear, r.tfar);
             rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID; // as Embree requires
             valid[i] = -1;

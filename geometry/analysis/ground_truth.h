@@ -80,6 +80,14 @@ public:
                                                       const std::vector<float>& maxDistance, int threads = 0,
                                                       std::stop_token stop = {}) const;
 
+    /// The distance along the light from each point to the first triangle between it and
+    /// maxDistance[i] (the rays of occludedWithin); +∞ where nothing lies that close, and where the
+    /// input is not traced (as occludedWithin). Throws as occludedWithin.
+    [[nodiscard]] std::vector<float> occluderDistance(const std::vector<glm::vec3>& points,
+                                                      const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                      const std::vector<float>& maxDistance, int threads = 0,
+                                                      std::stop_token stop = {}) const;
+
     /// Casts one ray per pixel centre of a width × height image from `camera` (aspect
     /// width/height, as Camera::projection) and returns the nearest hits between the near and far
     /// planes (view depth, as GL clips). Throws std::invalid_argument for a non-positive size.

@@ -327,7 +327,8 @@ glm::vec3 classColour(TruthClass c, float s) {
     case TruthClass::InteriorFalseShadow: return kFalseShadowColour;
     case TruthClass::InteriorFalseLit: return kFalseLitColour;
     case TruthClass::EdgeError: return kEdgeErrorColour;
-    case TruthClass::Ambiguous: return kAmbiguousColour;
+    case TruthClass::Ambiguous:
+    case TruthClass::Singular: return kAmbiguousColour;
     case TruthClass::Agrees: return glm::vec3(0.3f + 0.6f * std::clamp(s, 0.f, 1.f));
     case TruthClass::NotCounted: break;
     }
@@ -380,7 +381,7 @@ Legend truthClassLegend(std::span<const TruthClass> classes, std::span<const flo
                         std::span<const uint8_t> receiver) {
     if (classes.size() != s.size() || classes.size() != receiver.size())
         throw std::invalid_argument("truthClassLegend: per-pixel inputs differ in size");
-    std::array<bool, size_t(TruthClass::Ambiguous) + 1> shown{};
+    std::array<bool, size_t(TruthClass::Singular) + 1> shown{};
     bool invalid = false, agreesLit = false, agreesShadowed = false;
     for (size_t i = 0; i < classes.size(); ++i) {
         if (invalidAt(classes, s, receiver, i)) {
@@ -398,7 +399,8 @@ Legend truthClassLegend(std::span<const TruthClass> classes, std::span<const flo
     add(shown[int(TruthClass::InteriorFalseShadow)], kFalseShadowColour, "false shadow (interior)");
     add(shown[int(TruthClass::InteriorFalseLit)], kFalseLitColour, "false lit (interior)");
     add(shown[int(TruthClass::EdgeError)], kEdgeErrorColour, "edge misplaced (within 1 px)");
-    add(shown[int(TruthClass::Ambiguous)], kAmbiguousColour, "ambiguous (terminator, normals, contact)");
+    add(shown[int(TruthClass::Ambiguous)] || shown[int(TruthClass::Singular)], kAmbiguousColour,
+        "undecidable (terminator, normals, contact, singular J)");
     add(agreesLit, classColour(TruthClass::Agrees, 1.f), "agrees, lit (grey = s)");
     add(agreesShadowed, classColour(TruthClass::Agrees, 0.f), "agrees, shadowed");
     add(shown[int(TruthClass::NotCounted)], kNonReceiverColour, "not a receiver");

@@ -2,7 +2,6 @@
 
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/analysis/penumbra_width.h"
-#include "geometry/shadow/contact_distance.h"
 
 #include <nlohmann/json.hpp>
 
@@ -71,12 +70,22 @@ Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, c
     throwIfStopped(stop);
     in.aliasing = aliasingStats(in.m, in.receiver);
     in.resolutions = std::move(frame.resolutions);
+    if (frame.samplesPerAxis > 1 &&
+        frame.sampleShadow.size() == n * size_t(frame.samplesPerAxis * frame.samplesPerAxis))
+        in.sampleShadow = std::move(frame.sampleShadow);
     for (int s = 0; s < int(in.resolutions.size()); ++s) {
         throwIfStopped(stop);
         in.utilization.push_back(texelUtilization(in.aux, in.receiver, s, in.resolutions[s]));
     }
     if (truth) addTruth(in, plan, *truth, truthSamples, stop);
     return in;
+}
+
+float pixelFootprint(const shadow::ShadowPlan& plan, const glm::vec3& p, int height) noexcept {
+    // eyeProj[1][1] = 1 / tan(fovy / 2): one pixel spans 2·d·tan(fovy / 2) / height at view depth d.
+    const float depth = glm::dot(p - plan.eye, plan.v);
+    const float size = 2.f * depth / (float(std::max(height, 1)) * plan.eyeProj[1][1]);
+    return std::isfinite(size) && size > 0.f ? size : std::numeric_limits<float>::quiet_NaN();
 }
 
 std::vector<uint8_t> truthOcclusion(const Inspection& in, const std::vector<glm::vec3>& geometricNormals,
@@ -105,11 +114,35 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
     const size_t n = in.positions.size();
     const glm::vec3 toLight = -glm::normalize(l);
     in.coverage.assign(n, 1.f);
-    if (samplesPerAxis > 1)
-        in.coverage = truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, l, samplesPerAxis, 0, stop);
+    // The truth at every sample: GroundTruth::coverage over a samplesPerAxis-times finer image traces
+    // exactly its samples of this one (sub-pixel centres), so each can meet the rendered s there.
+    const int N = samplesPerAxis;
+    std::vector<float> sampleTruth;
+    if (N > 1) {
+        sampleTruth = truth.coverage(plan.eyeProj * plan.eyeView, in.width * N, in.height * N, l, 1, 0, stop);
+        for (int y = 0; y < in.height; ++y)
+            for (int x = 0; x < in.width; ++x) {
+                double sum = 0;
+                int hits = 0;
+                for (int sy = 0; sy < N; ++sy)
+                    for (int sx = 0; sx < N; ++sx) {
+                        const float t = sampleTruth[(size_t(y) * N + sy) * size_t(in.width) * N + size_t(x) * N + sx];
+                        if (std::isfinite(t)) sum += t, ++hits;
+                    }
+                in.coverage[size_t(y) * size_t(in.width) + size_t(x)] =
+                    hits ? float(sum / hits) : std::numeric_limits<float>::quiet_NaN();
+            }
+    }
+    if (in.sampleShadow.size() != sampleTruth.size()) in.sampleShadow.clear(); // not drawn: s against c
+    // Where the edges lie, from kEdgeSamplesPerAxis² samples whatever N (truth_classes.h, edgeCoverage).
+    std::vector<float> edgeCoverage;
+    if (N < kEdgeSamplesPerAxis)
+        edgeCoverage =
+            truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, l, kEdgeSamplesPerAxis, 0, stop);
     in.ambiguity.assign(n, uint8_t(Ambiguity::None));
     std::vector<float> texelsPerPixel(n, std::numeric_limits<float>::quiet_NaN());
-    std::vector<float> contact(n, std::numeric_limits<float>::quiet_NaN());
+    std::vector<float> reach(n, std::numeric_limits<float>::quiet_NaN()), footprint(n, 0.f);
+    std::vector<uint8_t> singular(n, 0);
     std::vector<int> split(n, -1);
     for (size_t i = 0; i < n; ++i) {
         if (i % kPixelsPerStopCheck == 0) throwIfStopped(stop);
@@ -117,19 +150,40 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
         if (samplesPerAxis == 1 || !std::isfinite(in.coverage[i])) in.coverage[i] = centre; // no sample saw it
         if (in.m[i] > 0.f && in.m[i] < kSingularM) texelsPerPixel[i] = 1.f / in.m[i];
         if (!in.receiver[i]) continue;
+        singular[i] = std::isfinite(in.m[i]) && !(in.m[i] < kSingularM);
         split[i] = int(std::lround(in.aux[i].z));
         const float geometric = glm::dot(in.geometricNormals[i], toLight);
         const float shading = glm::dot(in.normals[i], toLight);
         if (std::abs(geometric) < 0.1f) in.ambiguity[i] = uint8_t(Ambiguity::Terminator);
         else if ((geometric > 0.f) != (shading > 0.f)) in.ambiguity[i] = uint8_t(Ambiguity::NormalFlip);
-        else if ((*in.occluded)[i] && split[i] < int(in.resolutions.size()))
-            contact[i] = shadow::contactDistance(plan, split[i], in.positions[i], in.resolutions[size_t(split[i])]);
+        else if ((*in.occluded)[i]) {
+            footprint[i] = pixelFootprint(plan, in.positions[i], in.height);
+            reach[i] = kPeterPanningReach * footprint[i];
+        }
     }
-    const std::vector<uint8_t> touching = truth.occludedWithin(in.positions, in.geometricNormals, l, contact, 0, stop);
+    // The occluder's distance where it lies within the peter-panning reach; within one footprint,
+    // a contact no map can be judged on.
+    std::vector<float> gap = truth.occluderDistance(in.positions, in.geometricNormals, l, reach, 0, stop);
     for (size_t i = 0; i < n; ++i)
-        if (touching[i]) in.ambiguity[i] = uint8_t(Ambiguity::Contact);
+        if (gap[i] <= footprint[i]) in.ambiguity[i] = uint8_t(Ambiguity::Contact);
     in.truth = truthStats(in.shadow, *in.occluded, in.receiver);
-    const TruthClassInput input{in.width, in.shadow, in.coverage, in.receiver, in.ambiguity, texelsPerPixel};
+    addSoftTruth(in, plan, truth, stop);
+    TruthClassInput input;
+    input.width = in.width;
+    input.s = in.shadow;
+    input.coverage = in.coverage;
+    input.receiver = in.receiver;
+    input.ambiguity = in.ambiguity;
+    input.texelsPerPixel = texelsPerPixel;
+    input.samplesPerAxis = N;
+    if (!in.sampleShadow.empty()) {
+        input.sampleS = in.sampleShadow;
+        input.sampleTruth = sampleTruth;
+    }
+    input.singular = singular;
+    input.visibility = in.sunVisibility;
+    input.contactGap = gap;
+    input.edgeCoverage = edgeCoverage;
     throwIfStopped(stop);
     in.truthClasses = truthClasses(input, &in.classes);
     throwIfStopped(stop);
@@ -137,7 +191,6 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
     throwIfStopped(stop);
     in.meshNames = truth.meshNames();
     in.meshTruthClasses = truthClassesByGroup(input, in.mesh, int(in.meshNames.size()));
-    addSoftTruth(in, plan, truth, stop);
 }
 
 std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
@@ -158,7 +211,7 @@ std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, 
         {"coverage", "truth's lit fraction c over the pixel's samples", {}},
         {"class",
          "TruthClass: 0 not counted, 1 agrees, 2 interior false shadow, 3 interior false lit, "
-         "4 edge error, 5 ambiguous",
+         "4 edge error, 5 ambiguous (undecidable), 6 singular J",
          {}},
         {"visibility", "soft truth: fraction of the sun's disk visible (NaN: point sun or not a receiver)", {}}};
     for (auto& layer : layers) layer.values.assign(n, nan);
@@ -193,7 +246,12 @@ nlohmann::json classesJson(const TruthClasses& c) {
             {"edge_displacement_px", {{"median", c.edgeDisplacementPxMedian}, {"p95", c.edgeDisplacementPxP95}}},
             {"edge_displacement_texels",
              {{"median", c.edgeDisplacementTexelsMedian}, {"p95", c.edgeDisplacementTexelsP95}}},
+            {"edge_width", {{"px", c.edgeWidthPx}, {"texels", c.edgeWidthTexels}, {"edge_length_px", c.edgeLengthPx}}},
             {"ambiguous", c.ambiguous},
+            {"singular", c.singular},
+            {"contact_false_lit", c.contactFalseLit},
+            {"contact_gap", {{"median", c.contactGapMedian}, {"p95", c.contactGapP95}}},
+            {"interior_mean_abs", c.interiorMeanAbs},
             {"penumbra_mean_abs", c.penumbraMeanAbs},
             {"umbra_light", c.umbraLight},
             {"umbra_pixels", c.umbraPixels},

@@ -49,6 +49,9 @@ struct Inspection {
     std::vector<float> coverage;
     std::vector<uint8_t> ambiguity;
     std::vector<TruthClass> classes;
+    // With truth at N > 1 samples per axis and the samples drawn (FrameReadback::sampleShadow): the
+    // rendered s at the truth's N × N positions per pixel, (width·N) wide; NaN off the receivers.
+    std::vector<float> sampleShadow;
     // With truth and a sun of non-zero size (plan.light.angularDiameterDeg > 0): the fraction v of
     // the sun's disk each receiver sees (GroundTruth::sunVisibility; NaN for non-receivers), and
     // the figures over it. Empty and nullopt for a point sun.
@@ -72,6 +75,10 @@ struct FrameReadback {
     std::vector<glm::vec4> positions; // world position, m
     std::vector<glm::vec4> normals;   // facing normal, N·L
     std::vector<int> resolutions;     // per split, the map resolution actually drawn
+    // Like for like (docs/design.md §4): the eye pass again at samplesPerAxis² samples per pixel
+    // (Renderer::readShadowSamples), s at the truth's sample positions; empty: not drawn.
+    int samplesPerAxis = 1;
+    std::vector<float> sampleShadow;
 };
 
 /// Splits the read-back of a frame drawn with `plan` into per-pixel fields and computes the
@@ -82,11 +89,13 @@ struct FrameReadback {
 
 /// Adds ground truth to `in` (a frame drawn with `plan`; docs/design.md §4 "Truth classes"):
 /// - occlusion at each pixel's centre, traced with geometric normals (truthOcclusion), for TruthStats;
-/// - the lit fraction c: 1 − that verdict at one sample per axis, else GroundTruth::coverage over
-///   samplesPerAxis² samples of the pixel's footprint;
-/// - the ambiguity of each receiver: the terminator (|N·L| < 0.1 by the geometric normal), a normal
-///   flip (shading and geometric normal on different sides of the light), or a contact (an occluder
-///   within contactDistance() of the receiver along the light);
+/// - the lit fraction c: 1 − that verdict at one sample per axis, else the mean of GroundTruth::coverage
+///   at samplesPerAxis² samples of the pixel's footprint, each compared with the rendered s at the
+///   same position when `in.sampleShadow` holds them (like for like);
+/// - the ambiguity of each receiver, from the scene and the view alone: the terminator (|N·L| < 0.1 by
+///   the geometric normal), a normal flip (shading and geometric normal on different sides of the
+///   light), or a contact (an occluder within one eye-pixel footprint, pixelFootprint(), along the light);
+/// - the peter-panning reach: the occluder distance where it is under kPeterPanningReach footprints;
 /// - the TruthClasses overall, per split and per scene mesh;
 /// - with plan.light.angularDiameterDeg > 0, the soft truth: sunVisibility over
 ///   GroundTruth::kSunSamplesPerAxis² rays per receiver (geometric normals), softTruth's
@@ -95,6 +104,18 @@ struct FrameReadback {
 /// Cancelled once `stop` is requested, leaving `in` partly updated (discard it).
 void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis = 1,
               std::stop_token stop = {});
+
+/// Within this many eye-pixel footprints of the receiver along the light, a shadow lost to the bias
+/// counts as peter-panning (contact_false_lit); further, as a leak. Scene and view only.
+inline constexpr float kPeterPanningReach = 32.f;
+
+/// The truth samples per axis that place the edges (TruthClassInput::edgeCoverage) when
+/// --truth-samples is lower: fine enough that N = 2 and N = 3 find the same thin slivers.
+inline constexpr int kEdgeSamplesPerAxis = 4;
+
+/// The world-space side of one eye pixel at `p` (at its view depth) for an image `height` pixels
+/// high seen through `plan`'s camera: the contact band, from the view alone.
+[[nodiscard]] float pixelFootprint(const shadow::ShadowPlan& plan, const glm::vec3& p, int height) noexcept;
 
 /// Ground truth for the receiver pixels of `in` (1 = shadowed; 0 for non-receivers): each traced
 /// with the geometric normal of the surface under it (GroundTruth::surfaceNormals), as

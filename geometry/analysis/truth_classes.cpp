@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace geometry::analysis {
 namespace {
@@ -14,36 +16,69 @@ constexpr int kSearchRadius = 8; // pixels; a displacement beyond it counts as t
 
 void check(const TruthClassInput& in) {
     const size_t n = in.s.size();
-    const auto same = [&](size_t m, const char* what, bool optional) {
-        if ((optional && m == 0) || m == n) return;
+    const auto same = [&](size_t m, size_t want, const char* what, bool optional) {
+        if ((optional && m == 0) || m == want) return;
         throw std::invalid_argument(std::string("truthClasses: ") + what + " holds " + std::to_string(m) +
-                                    " values, s holds " + std::to_string(n));
+                                    " values, not " + std::to_string(want));
     };
-    same(in.coverage.size(), "coverage", false);
-    same(in.receiver.size(), "receiver", false);
-    same(in.ambiguity.size(), "ambiguity", true);
-    same(in.texelsPerPixel.size(), "texelsPerPixel", true);
+    same(in.coverage.size(), n, "coverage", false);
+    same(in.receiver.size(), n, "receiver", false);
+    same(in.ambiguity.size(), n, "ambiguity", true);
+    same(in.texelsPerPixel.size(), n, "texelsPerPixel", true);
+    same(in.singular.size(), n, "singular", true);
+    same(in.visibility.size(), n, "visibility", true);
+    same(in.contactGap.size(), n, "contactGap", true);
+    same(in.edgeCoverage.size(), n, "edgeCoverage", true);
+    if (in.samplesPerAxis < 1) throw std::invalid_argument("truthClasses: samplesPerAxis must be at least 1");
+    const size_t samples = n * size_t(in.samplesPerAxis) * size_t(in.samplesPerAxis);
+    same(in.sampleS.size(), samples, "sampleS", true);
+    same(in.sampleTruth.size(), in.sampleS.empty() ? 0 : samples, "sampleTruth", true);
     if (in.width <= 0 || n % size_t(in.width) != 0)
         throw std::invalid_argument("truthClasses: width " + std::to_string(in.width) + " does not divide " +
                                     std::to_string(n) + " pixels");
 }
 
+/// How wrong one rendered s is against a truth lit fraction t ∈ [0, 1] (t = 0 or 1 for one sample):
+/// the share of t's samples on the other side of 0.5; s exactly 0.5 is half wrong whatever t is.
+[[nodiscard]] double wrongShare(float s, double t) noexcept {
+    if (s > 0.5f) return 1.0 - t;
+    if (s < 0.5f) return t;
+    return 0.5;
+}
+
+/// One pixel's samples: the mean rendered s, and the shares of its samples wrongly shadowed and
+/// wrongly lit (over the samples where both the render and the truth see a receiver; the pixel's own
+/// s against its c where there are none).
+struct PixelVerdict {
+    double s = 0, wrongShadow = 0, wrongLit = 0;
+    [[nodiscard]] double wrong() const noexcept { return wrongShadow + wrongLit; }
+};
+
 /// Running sums of one group's classes.
 struct Tally {
     TruthClasses out;
-    size_t interiorShadow = 0, interiorLit = 0, edge = 0, amb = 0, penumbra = 0;
-    double absSum = 0, umbraSum = 0;
-    std::vector<double> px, texels;
+    double interiorShadow = 0, interiorLit = 0, edge = 0, contactLit = 0;
+    size_t amb = 0, singular = 0, penumbra = 0, interiorPixels = 0;
+    double absSum = 0, interiorAbsSum = 0, umbraSum = 0, edgeLength = 0, edgeTexels = 0;
+    std::vector<double> px, texels, gaps;
 
     [[nodiscard]] TruthClasses finish() {
         if (out.count == 0) return out;
         const double total = double(out.count);
-        out.interiorFalseShadow = double(interiorShadow) / total;
-        out.interiorFalseLit = double(interiorLit) / total;
-        out.edgeError = double(edge) / total;
+        out.interiorFalseShadow = interiorShadow / total;
+        out.interiorFalseLit = interiorLit / total;
+        out.edgeError = edge / total;
         out.ambiguous = double(amb) / total;
+        out.singular = double(singular) / total;
+        out.contactFalseLit = contactLit / total;
         out.penumbraMeanAbs = penumbra ? absSum / double(penumbra) : 0.0;
+        out.interiorMeanAbs = interiorPixels ? interiorAbsSum / double(interiorPixels) : 0.0;
         out.umbraLight = out.umbraPixels ? umbraSum / double(out.umbraPixels) : 0.0;
+        out.edgeLengthPx = edgeLength;
+        if (edgeLength > 0) {
+            out.edgeWidthPx = edge / edgeLength;
+            out.edgeWidthTexels = edgeTexels / edgeLength;
+        }
         if (!px.empty()) {
             out.edgeDisplacementPxMedian = median(std::span(px));
             out.edgeDisplacementPxP95 = percentile(std::span(px), 95);
@@ -51,6 +86,10 @@ struct Tally {
         if (!texels.empty()) {
             out.edgeDisplacementTexelsMedian = median(std::span(texels));
             out.edgeDisplacementTexelsP95 = percentile(std::span(texels), 95);
+        }
+        if (!gaps.empty()) {
+            out.contactGapMedian = median(std::span(gaps));
+            out.contactGapP95 = percentile(std::span(gaps), 95);
         }
         return out;
     }
@@ -65,26 +104,78 @@ std::vector<TruthClasses> classify(const TruthClassInput& in, std::span<const in
         throw std::invalid_argument("truthClasses: the groups do not match the pixels");
     const size_t n = in.s.size();
     const int w = in.width, h = int(n / size_t(w));
+    const int N = in.samplesPerAxis;
+    const bool perSample = !in.sampleS.empty();
     const auto counted = [&](size_t i) {
         return in.receiver[i] && std::isfinite(in.s[i]) && std::isfinite(in.coverage[i]) && in.coverage[i] >= 0.f &&
                in.coverage[i] <= 1.f;
     };
-    const auto truthLit = [&](size_t i) { return in.coverage[i] >= 0.5f; };
-    const auto renderedLit = [&](size_t i) { return in.s[i] >= 0.5f; };
-    const auto ambiguous = [&](size_t i) { return !in.ambiguity.empty() && in.ambiguity[i] != 0; };
+    const auto fractional = [&](size_t i) { return in.coverage[i] > 0.f && in.coverage[i] < 1.f; };
+    const auto undecidable = [&](size_t i) {
+        return (!in.ambiguity.empty() && in.ambiguity[i] != 0) || (!in.singular.empty() && in.singular[i] != 0);
+    };
+    const auto verdict = [&](int x, int y) {
+        const size_t i = size_t(y) * size_t(w) + size_t(x);
+        PixelVerdict v;
+        size_t k = 0;
+        double sSum = 0;
+        if (perSample)
+            for (int sy = 0; sy < N; ++sy)
+                for (int sx = 0; sx < N; ++sx) {
+                    const size_t j = (size_t(y) * size_t(N) + size_t(sy)) * size_t(w) * size_t(N) +
+                                     size_t(x) * size_t(N) + size_t(sx);
+                    const float sj = in.sampleS[j], tj = in.sampleTruth[j];
+                    if (!std::isfinite(sj) || !std::isfinite(tj)) continue;
+                    ++k;
+                    sSum += sj;
+                    const double wrong = wrongShare(sj, tj > 0.5f ? 1.0 : 0.0);
+                    (tj > 0.5f ? v.wrongShadow : v.wrongLit) += wrong;
+                }
+        if (k > 0) {
+            v.s = sSum / double(k);
+            v.wrongShadow /= double(k);
+            v.wrongLit /= double(k);
+            return v;
+        }
+        const double c = in.coverage[i];
+        v.s = in.s[i];
+        // Against c: its lit samples wrongly shadowed, its shadowed samples wrongly lit.
+        if (in.s[i] == 0.5f) {
+            v.wrongShadow = 0.5 * c;
+            v.wrongLit = 0.5 * (1.0 - c);
+        } else if (in.s[i] < 0.5f) {
+            v.wrongShadow = c;
+        } else {
+            v.wrongLit = 1.0 - c;
+        }
+        return v;
+    };
+    const std::span<const float> edgeC = in.edgeCoverage.empty() ? in.coverage : in.edgeCoverage;
+    const auto fine = [&](size_t i) { return std::isfinite(edgeC[i]) ? edgeC[i] : in.coverage[i]; };
     const auto nearEdge = [&](int x, int y) {
         const size_t i = size_t(y) * size_t(w) + size_t(x);
-        if (in.coverage[i] > 0.f && in.coverage[i] < 1.f) return true;
+        if (fractional(i) || (fine(i) > 0.f && fine(i) < 1.f)) return true;
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
                 const int nx = x + dx, ny = y + dy;
                 if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
                 const size_t j = size_t(ny) * size_t(w) + size_t(nx);
-                if (counted(j) && (truthLit(j) != truthLit(i) || (in.coverage[j] > 0.f && in.coverage[j] < 1.f)))
-                    return true;
+                if (counted(j) && (in.coverage[j] != in.coverage[i] || fine(j) != fine(i))) return true;
             }
         return false;
     };
+    // Per pixel, the mean rendered s (for the displacement search: a pixel's rendered state).
+    std::vector<float> meanS(n, std::numeric_limits<float>::quiet_NaN());
+    std::vector<PixelVerdict> verdicts(n);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * size_t(w) + size_t(x);
+            if (!counted(i)) continue;
+            verdicts[i] = verdict(x, y);
+            meanS[i] = float(verdicts[i].s);
+        }
+    const auto truthLit = [&](size_t j) { return in.coverage[j] > 0.5f; };
+    const auto renderedLit = [&](size_t j) { return meanS[j] > 0.5f; };
     /// Distance from pixel (x, y) to the nearest counted pixel where `wanted(j)` holds, less half a
     /// pixel (an edge lies between pixel centres); kSearchRadius when none is that close.
     const auto distanceTo = [&](int x, int y, const auto& wanted) {
@@ -102,29 +193,55 @@ std::vector<TruthClasses> classify(const TruthClassInput& in, std::span<const in
 
     if (classes) classes->assign(n, TruthClass::NotCounted);
     std::vector<Tally> tallies(size_t(std::max(groups, 0)));
+    const auto groupOf = [&](size_t i) { return group.empty() ? 0 : group[i]; };
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const size_t i = size_t(y) * size_t(w) + size_t(x);
-            const int g = group.empty() ? 0 : group[i];
+            const int g = groupOf(i);
             if (g < 0 || g >= groups || !counted(i)) continue;
             Tally& t = tallies[size_t(g)];
             ++t.out.count;
             TruthClass c = TruthClass::Agrees;
-            if (ambiguous(i)) {
+            if (!in.ambiguity.empty() && in.ambiguity[i] != 0) {
                 ++t.amb;
                 c = TruthClass::Ambiguous;
+            } else if (!in.singular.empty() && in.singular[i] != 0) {
+                ++t.singular;
+                c = TruthClass::Singular;
             } else {
+                const PixelVerdict& v = verdicts[i];
+                const double cov = in.coverage[i];
                 ++t.penumbra;
-                t.absSum += std::abs(double(in.s[i]) - double(in.coverage[i]));
-                const bool rendered = renderedLit(i), truth = truthLit(i);
-                if (in.coverage[i] == 0.f && !nearEdge(x, y)) {
+                t.absSum += std::abs(v.s - cov);
+                const bool edge = nearEdge(x, y);
+                const bool umbra = in.visibility.empty() ? cov == 0.0 : in.visibility[i] == 0.f;
+                if (umbra && !edge) {
                     ++t.out.umbraPixels;
-                    t.umbraSum += double(in.s[i]);
+                    t.umbraSum += v.s;
                 }
-                if (rendered != truth) {
-                    if (nearEdge(x, y)) {
-                        ++t.edge;
-                        c = TruthClass::EdgeError;
+                // The truth edge's length here: a fractional pixel, or a step to the right or down.
+                if (fractional(i)) t.edgeLength += 1.0;
+                for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+                    if (x + dx >= w || y + dy >= h) continue;
+                    const size_t j = size_t(y + dy) * size_t(w) + size_t(x + dx);
+                    if (counted(j) && !undecidable(j) && !fractional(i) && !fractional(j) &&
+                        in.coverage[j] != in.coverage[i])
+                        t.edgeLength += 1.0;
+                }
+                if (!in.contactGap.empty() && std::isfinite(in.contactGap[i]) && v.wrongLit > 0) {
+                    t.contactLit += v.wrongLit;
+                    t.gaps.push_back(in.contactGap[i]);
+                }
+                const double tpp =
+                    in.texelsPerPixel.empty() ? std::numeric_limits<double>::quiet_NaN() : double(in.texelsPerPixel[i]);
+                if (edge) {
+                    t.edge += v.wrong();
+                    if (std::isfinite(tpp)) t.edgeTexels += v.wrong() * tpp;
+                    if (v.wrong() > 0) c = TruthClass::EdgeError;
+                    // Where the pixel's mean truth and mean render fall on different sides of 0.5
+                    // (a tie at 0.5 on either side measures nothing).
+                    const bool truth = truthLit(i), rendered = renderedLit(i);
+                    if (cov != 0.5 && v.s != 0.5 && rendered != truth) {
                         // The width of the wrong band this pixel lies in, across the edge: from the
                         // true edge (the nearest pixel whose truth is what was rendered here) to the
                         // rendered one (the nearest pixel rendered the other way). Every pixel of a
@@ -132,15 +249,14 @@ std::vector<TruthClasses> classify(const TruthClassInput& in, std::span<const in
                         const double d = distanceTo(x, y, [&](size_t j) { return truthLit(j) == rendered; }) +
                                          distanceTo(x, y, [&](size_t j) { return renderedLit(j) != rendered; });
                         t.px.push_back(d);
-                        if (!in.texelsPerPixel.empty() && std::isfinite(in.texelsPerPixel[i]))
-                            t.texels.push_back(d * double(in.texelsPerPixel[i]));
-                    } else if (truth) {
-                        ++t.interiorShadow;
-                        c = TruthClass::InteriorFalseShadow;
-                    } else {
-                        ++t.interiorLit;
-                        c = TruthClass::InteriorFalseLit;
+                        if (std::isfinite(tpp)) t.texels.push_back(d * tpp);
                     }
+                } else {
+                    ++t.interiorPixels;
+                    t.interiorAbsSum += std::abs(v.s - cov);
+                    t.interiorShadow += v.wrongShadow;
+                    t.interiorLit += v.wrongLit;
+                    if (v.wrong() > 0) c = cov > 0.5 ? TruthClass::InteriorFalseShadow : TruthClass::InteriorFalseLit;
                 }
             }
             if (classes) (*classes)[i] = c;

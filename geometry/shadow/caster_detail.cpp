@@ -9,7 +9,7 @@ namespace geometry::shadow {
 namespace {
 
 /// The smaller world-space side of one texel of `split`'s map at p: a small step across the light
-/// in two directions, measured in the map (as contact_distance.cpp, but the finer side).
+/// in two directions, measured in the map.
 float finestTexelAt(const ShadowPlan& plan, const SplitPlan& split, const glm::vec3& p) noexcept {
     const auto uv = [&](const glm::vec3& x, bool& ok) {
         const glm::vec4 c = split.lightViewProj * glm::vec4(x, 1.f);
