@@ -65,7 +65,10 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     }
     j["splits"] = splits;
     j["shadow_map_resolution_used"] = stats.shadowResolution;
-    j["warnings"] = stats.warnings;
+    // The plan's (budget, settings without effect) then the renderer's (GL limits, caster LOD).
+    std::vector<std::string> warnings = f.plan.warnings;
+    warnings.insert(warnings.end(), stats.warnings.begin(), stats.warnings.end());
+    j["warnings"] = warnings;
     j["triangles"] = f.scene.triangleCount();
     j["gamma_deg"] = f.plan.gammaDeg;
     j["light_view_angle_deg"] = f.plan.lightViewAngleDeg;
@@ -222,7 +225,9 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
     w.written.push_back(metrics);
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
-    return {std::move(j), std::move(w.written), std::move(eye), f.renderer->stats().warnings};
+    std::vector<std::string> warnings = f.plan.warnings;
+    for (const auto& warning : f.renderer->stats().warnings) warnings.push_back(warning);
+    return {std::move(j), std::move(w.written), std::move(eye), std::move(warnings)};
 }
 
 } // namespace app

@@ -44,7 +44,7 @@ struct RenderOutput {
     nlohmann::json metrics;            // the content of metrics.json
     std::vector<std::string> written;  // every file's path, metrics.json last
     geometry::analysis::Image eye;     // the eye view (written as eye.png when exports ask for it)
-    std::vector<std::string> warnings; // the renderer's, not printed
+    std::vector<std::string> warnings; // the plan's and the renderer's, not printed
 };
 
 /// The work of runRender on a scene already loaded and viewed (loadScene(options)), printing

@@ -1,6 +1,7 @@
 // The full shadow plan: splits, focus bodies and warps together.
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/shadow/focus.h"
+#include "geometry/shadow/memory_budget.h"
 #include "geometry/shadow/shadow_plan.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -264,3 +265,47 @@ TEST(Plan, QuantizeHoldsAWarpedFrameForSmallMoves) {
     EXPECT_FALSE(same(StabilizeMode::Off));
 }
 
+// The memory budget is the plan's: beyond it the maps are planned smaller, splits[i].resolution
+// says what is drawn and a warning says why; half the resolution (tune's screening) follows the
+// same rule. Settings without effect and snap with warped splits are warned about.
+TEST(Plan, MapsBeyondTheMemoryBudgetArePlannedSmallerWithAWarning) {
+    const Scene scene = makePlaneScene();
+    ShadowSettings s;
+    s.splits.count = 8;
+    s.splits.scheme = SplitScheme::Log;
+    s.resolution = 8192; // 8 × 8192² × 4 B = 2 GiB
+    const auto plan = [&](const ShadowSettings& x) {
+        return planShadows(x, scene.bounds(), scene.camera, scene.light, {320, 240});
+    };
+    const ShadowPlan big = plan(s);
+    ASSERT_EQ(big.splits.size(), 8u);
+    for (const SplitPlan& sp : big.splits) EXPECT_EQ(sp.resolution, 4096);
+    ASSERT_FALSE(big.warnings.empty());
+    EXPECT_NE(big.warnings.front().find("1536 MiB"), std::string::npos) << big.warnings.front();
+    EXPECT_NE(big.warnings.front().find("drawn at 4096"), std::string::npos) << big.warnings.front();
+    EXPECT_EQ(budgetedResolution(s), 4096);
+    ShadowSettings moments = s;
+    moments.splits.count = 4;
+    moments.resolution = 4096;
+    moments.filter.type = FilterType::Evsm4; // 36 B per texel: 2.25 GiB
+    EXPECT_EQ(budgetedResolution(moments), 2048);
+    moments.resolution = 2048; // the screening size of 4096 fits as it is
+    EXPECT_EQ(budgetedResolution(moments), 2048);
+    s.resolution = 2048;
+    EXPECT_TRUE(plan(s).warnings.empty());
+
+    ShadowSettings inert;
+    inert.bias.type = BiasType::Slope;
+    inert.bias.constant = 0.3f;
+    const ShadowPlan p = plan(inert);
+    ASSERT_EQ(p.warnings.size(), 1u);
+    EXPECT_EQ(p.warnings[0], "bias.constant = 0.3 has no effect (bias.type = slope)");
+    ShadowSettings snap;
+    snap.warp.method = WarpMethod::Lispsm;
+    snap.stabilize = StabilizeMode::Snap;
+    const ShadowPlan snapped = plan(snap);
+    ASSERT_EQ(snapped.warnings.size(), 1u);
+    EXPECT_NE(snapped.warnings[0].find("stabilize.mode = snap has no effect"), std::string::npos);
+    snap.warp.method = WarpMethod::Uniform;
+    EXPECT_TRUE(plan(snap).warnings.empty());
+}

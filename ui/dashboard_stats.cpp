@@ -267,6 +267,7 @@ void Dashboard::drawStatsTable() {
             row("warnings", [&](int i) {
                 const auto* s = stat(i);
                 std::string out;
+                for (const auto& w : sides_[i].plan.warnings) out += (out.empty() ? "" : "; ") + w;
                 if (s)
                     for (const auto& w : s->warnings) out += (out.empty() ? "" : "; ") + w;
                 return out.empty() ? std::string("none") : out;

@@ -56,36 +56,4 @@ double tuneSpaceSize(const std::vector<TuneAxis>& space) noexcept {
     return n;
 }
 
-bool settingMatters(const ShadowSettings& s, std::string_view key) noexcept {
-    const BiasType bias = s.bias.type;
-    const FilterType filter = s.filter.type;
-    const bool split = s.splits.count > 1;
-    const bool warped = s.warp.method != WarpMethod::Uniform;
-    if (key == "bias.constant") return bias == BiasType::Constant;
-    if (key == "bias.slope" || key == "bias.units")
-        return bias == BiasType::Slope || bias == BiasType::SlopeNormalOffset;
-    if (key == "bias.z_max") return bias == BiasType::DualDepth;
-    if (key == "bias.normal_offset") return bias == BiasType::NormalOffset || bias == BiasType::SlopeNormalOffset;
-    if (key == "bias.tangent_plane") return filter == FilterType::Pcf || filter == FilterType::Disk;
-    if (key == "filter.kernel") return filter == FilterType::Pcf || shadow::isMomentFilter(filter);
-    if (key == "filter.taps") return filter == FilterType::Disk || filter == FilterType::Pcss;
-    if (key == "filter.radius") return filter == FilterType::Disk;
-    if (key == "filter.pcss.max_radius") return filter == FilterType::Pcss;
-    if (key == "filter.bleed_reduction") return shadow::isMomentFilter(filter) && filter != FilterType::Esm;
-    if (key == "filter.esm.exponent") return filter == FilterType::Esm;
-    if (key == "filter.evsm.positive_exponent") return filter == FilterType::Evsm2 || filter == FilterType::Evsm4;
-    if (key == "filter.evsm.negative_exponent") return filter == FilterType::Evsm4;
-    if (key == "filter.msm.moment_bias") return filter == FilterType::Msm;
-    if (key == "filter.eye_blur.falloff") return s.filter.eyeBlurIterations > 0;
-    if (key == "warp.direction" || key == "warp.multiplier") return warped;
-    if (key == "warp.falloff") return s.warp.method == WarpMethod::Glispsm;
-    if (key == "warp.n_prime") return s.warp.method == WarpMethod::Manual;
-    if (key == "warp.visible_far") return s.warp.method == WarpMethod::Lispsm;
-    if (key == "splits.scheme" || key == "splits.resolution_falloff" || key == "splits.blend") return split;
-    if (key == "splits.lambda") return split && s.splits.scheme == SplitScheme::Practical;
-    if (key == "splits.ratio") return split && s.splits.scheme == SplitScheme::Pssm;
-    if (key == "splits.alpha") return split && s.splits.scheme == SplitScheme::Adaptive;
-    return true;
-}
-
 } // namespace geometry::analysis

@@ -1,6 +1,7 @@
 #pragma once
 // The settings `tune` searches (docs/design.md §4 "Tuning"): the default candidates per key,
 // overrides from --space, and which settings matter under the others. Pure.
+#include "geometry/shadow/setting_relevance.h"
 #include "geometry/shadow/settings.h"
 
 #include <string>
@@ -24,8 +25,7 @@ void overrideTuneAxis(std::vector<TuneAxis>& space, std::string_view spec);
 /// The number of configurations the space spans (the product of its axes' sizes).
 [[nodiscard]] double tuneSpaceSize(const std::vector<TuneAxis>& space) noexcept;
 
-/// Whether `key` changes anything under the other settings of `s` (bias.slope only for the slope
-/// biases, splits.alpha only for adaptive splits with more than one split, …).
-[[nodiscard]] bool settingMatters(const shadow::ShadowSettings& s, std::string_view key) noexcept;
+/// Whether a setting matters under the others (geometry/shadow/setting_relevance.h).
+using shadow::settingMatters;
 
 } // namespace geometry::analysis

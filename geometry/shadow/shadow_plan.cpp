@@ -1,6 +1,14 @@
+// Index
+//   helpers ........... perpendicular, fitUnitCube, depthRangeInMap, linearDepthRange, unwarpedView
+//   one split's map ... SplitFrame, frameForSplit (warped or uniform), stableFrame (stabilize.mode = snap)
+//   warpDirection ..... V_P: standard or Scherzer's middle vector
+//   planShadows ....... the plan: budget and warnings, splits, each split's focus body and frame
+
 #include "geometry/shadow/shadow_plan.h"
 
 #include "geometry/shadow/focus.h"
+#include "geometry/shadow/memory_budget.h"
+#include "geometry/shadow/setting_relevance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -280,6 +288,15 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
     plan.cameraFar = camera.far;
     const bool fit = settings.focus == FocusMode::Samples && samples != nullptr;
     plan.fittedToSamples = fit;
+    // Beyond the memory budget the maps are drawn smaller, and the plan says so (splits[i].resolution).
+    const int resolution = budgetedResolution(settings);
+    if (resolution < settings.resolution)
+        plan.warnings.push_back("shadow_map.resolution " + std::to_string(settings.resolution) + " x " +
+                                std::to_string(settings.splits.count) + " splits needs " +
+                                std::to_string(int(shadowMapBytes(settings, settings.resolution) / (1 << 20))) +
+                                " MiB, over the " + std::to_string(int(kShadowMemoryBudgetBytes / (1 << 20))) +
+                                " MiB shadow-memory budget: drawn at " + std::to_string(resolution));
+    for (std::string& w : inertSettingWarnings(settings)) plan.warnings.push_back(std::move(w));
     // The splits partition [n, f]; with samples, the samples' depth range instead (a sliver beyond
     // it, so float noise cannot leave the nearest or farthest pixel out).
     std::vector<double> c = splitDistances(settings.splits, camera.near, camera.far, gamma);
@@ -307,7 +324,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         SplitPlan split;
         split.near = float(c[i]);
         split.far = float(c[i + 1]);
-        split.resolution = splitResolution(settings.splits, settings.resolution, i);
+        split.resolution = splitResolution(settings.splits, resolution, i);
         split.frustum = frustumCorners(camera, viewport.aspect(), split.near, split.far);
         // splits.blend: the last `blend` of this split's depth range fades into the next split, so
         // the next split's map must also cover that band: its focus starts the band's width early.
@@ -390,6 +407,12 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         split.dualDepthCap = settings.bias.zMax * (settings.bias.linearZ ? split.linearDepthScale : split.depthPerUnit);
     }
     plan.unwarpedViewProj = unwarpedView(plan);
+    // Snap holds unwarped maps only (quantize holds warped ones): with every split warped it does nothing.
+    const bool anyUniform = std::any_of(plan.splits.begin(), plan.splits.end(),
+                                        [](const SplitPlan& sp) { return !sp.empty() && !sp.warped(); });
+    if (settings.stabilize == StabilizeMode::Snap && !anyUniform && !plan.splits.empty())
+        plan.warnings.push_back("stabilize.mode = snap has no effect: every split is warped (snap moves unwarped "
+                                "maps in whole texels; quantize holds warped ones)");
     return plan;
 }
 

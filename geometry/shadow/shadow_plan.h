@@ -6,6 +6,7 @@
 #include "geometry/shadow/settings.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace geometry::shadow {
@@ -82,6 +83,10 @@ struct ShadowPlan {
     /// moments are of linear depth) and PCSS (its penumbra needs blocker distances in scene units).
     bool linearDepth = false;
     std::vector<SplitPlan> splits;
+    /// What the settings asked for but this plan does not do: maps drawn smaller to fit the memory
+    /// budget (memory_budget.h), settings without effect (setting_relevance.h). For metrics.json
+    /// and the dashboard.
+    std::vector<std::string> warnings;
 };
 
 /// Plans the shadow maps for one frame. Pure; never returns NaN matrices (an empty focus body
