@@ -1,3 +1,10 @@
+// Index
+//   addTuneCommand ....... the options
+//   writeCsv, describe ... tune.csv and the figures as printed (modelled cost; measured time apart)
+//   fewestReceivers ...... what decides the screening size
+//   calibrateCost ........ --calibrate-cost: the cost model's fit on this backend
+//   runTune .............. the search, its files and exit code
+
 #include "tune_command.h"
 
 #include "app/caster_lod_setup.h"
@@ -16,6 +23,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -34,9 +42,14 @@ void addTuneCommand(CLI::App& cmd, TuneCommandOptions& o) {
     cmd.add_option("--target", o.target,
                    "KEY=VALUE[,KEY=VALUE...]: the figures to reach, each at or below its value. Keys: p95 (aliasing "
                    "m), interior (interior false shadow + false lit), edge (edge error), misclassified (false shadow "
-                   "+ false lit); fractions of the receiver pixels; soft (mean |s - v| against the sun's disk: set "
-                   "light.angular_diameter_deg > 0), umbra (mean s in the truth's umbra: light bleeding)")
-        ->required();
+                   "+ false lit), contact (shadow lost near contacts: peter-panning); fractions of the receiver "
+                   "pixels; interior_abs (mean |s - c| inside lit and shadowed regions), edge_width (the wrong band "
+                   "across edges, texels), soft (mean |s - v| against the sun's disk: set "
+                   "light.angular_diameter_deg > 0), umbra (mean s in the truth's umbra: light bleeding)");
+    cmd.add_flag("--calibrate-cost", o.calibrateCost,
+                 "Fit the cost model tune ranks by (ns per triangle, texel, tap, pixel) to this backend: measures a "
+                 "fixed set of configurations on the views and writes cost_model.json (docs/design.md \"Cost "
+                 "model\")");
     cmd.add_option("--space", o.spaces,
                    "KEY=v1,v2,...: search these values of a setting (replaces its default candidates, or adds the "
                    "key; repeatable)");
@@ -62,43 +75,125 @@ std::string spaceSettings(const geometry::analysis::Tuner& tuner, const geometry
     return out;
 }
 
-std::string describe(const TuneEvaluation& e) {
+/// The figures that decide, and the modelled cost: the same on every run (no measured time).
+std::string describe(const geometry::analysis::TuneFigures& f) {
     std::ostringstream os;
-    const auto& f = e.figures;
-    os << "p95 " << f.p95 << ", interior " << f.interior << ", edge " << f.edge << ", misclassified " << f.misclassified
-       << ", frame " << f.frameMs << " ms, " << double(f.memoryBytes) / (1024.0 * 1024.0) << " MiB";
+    os << "p95 " << f.p95 << ", interior " << f.interior << ", edge " << f.edge << ", edge width " << f.edgeWidth
+       << " texels, contact " << f.contact << ", interior |s-c| " << f.interiorAbs << ", misclassified "
+       << f.misclassified << ", cost " << f.costMs << " ms, " << double(f.memoryBytes) / (1024.0 * 1024.0) << " MiB";
     return os.str();
 }
 
 void writeCsv(const std::filesystem::path& path, const geometry::analysis::Tuner& tuner, std::optional<size_t> chosen) {
     std::ofstream csv(path);
-    csv << "index,stage,width,height,label,p95,interior,edge,misclassified,frame_ms,memory_mib,cost_ms,"
-           "violation,meets,chosen,settings\n";
+    // frame_ms, measured, comes last: the one column that differs between two runs.
+    csv << "index,stage,width,height,label,p95,interior,edge,edge_width,contact,interior_abs,misclassified,cost_ms,"
+           "memory_mib,violation,meets,chosen,settings,frame_ms\n";
     const auto& evals = tuner.evaluations();
     for (size_t i = 0; i < evals.size(); ++i) {
         const TuneEvaluation& e = evals[i];
         const auto& f = e.figures;
         csv << i << ',' << stageName(e.request.stage) << ',' << e.request.size.width << ',' << e.request.size.height
-            << ",\"" << e.request.label << "\"," << f.p95 << ',' << f.interior << ',' << f.edge << ','
-            << f.misclassified << ',' << f.frameMs << ',' << double(f.memoryBytes) / (1024.0 * 1024.0) << ','
-            << f.frameMs << ',' << e.violation << ',' << (e.meets() ? 1 : 0) << ',' << (chosen == i ? 1 : 0) << ",\""
-            << spaceSettings(tuner, e.candidate) << "\"\n";
+            << ",\"" << e.request.label << "\"," << f.p95 << ',' << f.interior << ',' << f.edge << ',' << f.edgeWidth
+            << ',' << f.contact << ',' << f.interiorAbs << ',' << f.misclassified << ',' << f.costMs << ','
+            << double(f.memoryBytes) / (1024.0 * 1024.0) << ',' << e.violation << ',' << (e.meets() ? 1 : 0) << ','
+            << (chosen == i ? 1 : 0) << ",\"" << spaceSettings(tuner, e.candidate) << "\"," << f.frameMs << '\n';
     }
     if (!csv) throw std::runtime_error("cannot write " + path.string());
+}
+
+/// Receiver pixels of the fewest-receiver view at full size: a property of the scene and the views,
+/// measured once with the start settings (tuner.h decides the screening size from it).
+double fewestReceivers(renderer::Renderer& r, const geometry::shadow::ShadowSettings& start,
+                       const geometry::scene::Aabb& S, const std::vector<renderer::MeasureView>& views,
+                       geometry::shadow::Viewport size) {
+    double fewest = 0;
+    for (size_t v = 0; v < views.size(); ++v) {
+        const renderer::Measurement m = renderer::measure(r, start, S, views[v].camera, views[v].light, size,
+                                                          {.warmup = 0, .frames = 1, .timed = false});
+        const double n = double(std::count(m.inspection.receiver.begin(), m.inspection.receiver.end(), uint8_t(1)));
+        fewest = v == 0 ? n : std::min(fewest, n);
+    }
+    return fewest;
+}
+
+/// --calibrate-cost: a fixed set of configurations spanning the kinds of work (resolution, splits,
+/// filter taps, peeling, moments, sizes), each measured on every view; the least-squares fit.
+int calibrateCost(renderer::Renderer& r, const geometry::shadow::ShadowSettings& start,
+                  const geometry::scene::Scene& scene, const std::vector<renderer::MeasureView>& views,
+                  const TuneCommandOptions& o, const std::string& rendererString, const std::filesystem::path& dir) {
+    using namespace geometry::analysis;
+    const std::vector<std::vector<std::string>> configs{
+        {"shadow_map.resolution=512"},
+        {"shadow_map.resolution=4096"},
+        {"splits.count=4", "splits.scheme=pssm", "shadow_map.resolution=2048"},
+        {"splits.count=8", "splits.scheme=pssm", "shadow_map.resolution=1024"},
+        {"filter.type=pcf", "filter.kernel=7"},
+        {"filter.type=pcf", "filter.kernel=3", "shadow_map.resolution=1024"},
+        {"filter.type=disk", "filter.taps=32"},
+        {"filter.type=pcss", "filter.taps=16", "light.angular_diameter_deg=0.5"},
+        {"filter.type=vsm", "filter.kernel=5"},
+        {"filter.type=evsm4", "filter.kernel=9", "shadow_map.resolution=1024"},
+        {"bias.type=midpoint"},
+        {"bias.type=dual_depth", "splits.count=3", "splits.scheme=pssm"}};
+    std::vector<CostSample> samples;
+    std::ofstream csv(dir / "cost_calibration.csv");
+    csv << "config,view,width,height," << [] {
+        std::string h;
+        for (const auto name : workKindNames()) h += std::string(name) + ",";
+        return h;
+    }() << "ms\n";
+    for (const auto& config : configs) {
+        geometry::shadow::ShadowSettings s = start;
+        std::string label;
+        for (const auto& a : config) {
+            geometry::shadow::applyAssignment(s, a);
+            label += (label.empty() ? "" : " ") + a;
+        }
+        for (const geometry::shadow::Viewport size :
+             {o.common.size, geometry::shadow::Viewport{o.common.size.width / 2, o.common.size.height / 2}})
+            for (size_t v = 0; v < views.size(); ++v) {
+                ensureCasterLod(r, scene, s);
+                const renderer::Measurement m = renderer::measure(r, s, scene.bounds(), views[v].camera, views[v].light,
+                                                                  size, {.warmup = 1, .frames = o.frames});
+                const double ms = std::isfinite(m.gpuMs) ? m.gpuMs : m.cpuMs;
+                const WorkCounts w = countWork(s, m.plan, m.shadowTriangles, m.eyeTriangles, size);
+                samples.push_back({w, ms});
+                csv << '"' << label << "\"," << v << ',' << size.width << ',' << size.height << ',';
+                for (const double x : w.values()) csv << x << ',';
+                csv << ms << '\n';
+                std::cerr << "calibrate: " << label << " view " << v << " " << size.width << 'x' << size.height << ": "
+                          << ms << " ms\n";
+            }
+    }
+    const CostModel model = fitCostModel(samples, rendererString);
+    const std::filesystem::path path = dir / "cost_model.json";
+    std::ofstream out(path);
+    out << costModelJson(model) << '\n';
+    if (!out || !csv) throw std::runtime_error("cannot write " + path.string());
+    double worst = 0;
+    for (const CostSample& c : samples) worst = std::max(worst, std::abs(model.costMs(c.work) - c.ms) / c.ms);
+    std::cout << path.string() << '\n'
+              << (dir / "cost_calibration.csv").string() << '\n'
+              << "cost model fitted to " << samples.size() << " frames; the worst frame off by " << 100.0 * worst
+              << " %\n";
+    return 0;
 }
 
 } // namespace
 
 int runTune(const TuneCommandOptions& o) {
     using namespace geometry::analysis;
-    const TuneTarget target = parseTuneTarget(o.target);
+    if (o.target.empty() && !o.calibrateCost) throw std::invalid_argument("--target is required");
+    const TuneTarget target = o.calibrateCost && o.target.empty() ? TuneTarget{} : parseTuneTarget(o.target);
     std::vector<TuneAxis> space = defaultTuneSpace();
     for (const auto& spec : o.spaces) overrideTuneAxis(space, spec);
     if (o.common.presets.size() > 1) throw std::invalid_argument("--preset: tune starts from one preset");
     geometry::shadow::ShadowSettings start;
     if (!o.common.presets.empty()) start = geometry::io::loadPreset(findResource(o.common.presets.front()));
     for (const auto& a : o.common.assignments) geometry::shadow::applyAssignment(start, a);
-    Tuner tuner(start, space, target, {.size = o.common.size, .budgetEvals = o.budgetEvals});
+    // Checked before anything is loaded or measured: a bad target, space or start is a one-line error.
+    if (!o.calibrateCost) (void)Tuner(start, space, target, {.size = o.common.size, .budgetEvals = o.budgetEvals});
 
     geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene), {}, o.common.up);
     geometry::scene::Scene& scene = file.scene;
@@ -124,21 +219,41 @@ int runTune(const TuneCommandOptions& o) {
 
     auto context = renderer::createHeadlessContext(renderer::parseBackend(o.common.backend));
     renderer::Renderer r(scene);
+    if (o.calibrateCost)
+        return calibrateCost(r, start, scene, views, o,
+                             std::string(renderer::backendName(context->backend())) + ": " + context->rendererString(),
+                             dir);
+    bool calibrated = false;
+    const CostModel costModel = storedCostModel(context->rendererString(), &calibrated);
+    if (!calibrated)
+        std::cerr << "tune: no cost model calibrated for " << context->rendererString() << "; ranking with "
+                  << costModel.backend << "'s (tune --calibrate-cost fits one)\n";
+    ensureCasterLod(r, scene, start);
+    Tuner tuner(start, space, target,
+                {.size = o.common.size,
+                 .budgetEvals = o.budgetEvals,
+                 .receiverPixels = fewestReceivers(r, start, scene.bounds(), views, o.common.size)});
     const GroundTruth truth(scene);
     const double spaceSize = tuneSpaceSize(tuner.space());
     std::cerr << "tune: " << scene.name << " (" << viewNames << "), target " << formatTuneTarget(target)
               << ", a space of " << spaceSize << " configurations, at most " << o.budgetEvals << " evaluations on "
-              << context->rendererString() << '\n';
+              << context->rendererString() << ", screening at "
+              << (tuner.screensAtHalfSize() ? "half size" : "full size (half size could not resolve the target)")
+              << '\n';
     const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::vector<TuneFigures>> perView; // per evaluation, each view's figures
     while (const auto request = tuner.next()) {
         ensureCasterLod(r, scene, request->settings);
-        const TuneFigures f = renderer::measureTuneRequest(r, *request, scene.bounds(), views, truth, o.truth.samples,
-                                                           {.warmup = 1, .frames = o.frames});
+        perView.emplace_back();
+        const TuneFigures f =
+            renderer::measureTuneRequest(r, *request, scene.bounds(), views, truth, o.truth.samples, costModel,
+                                         {.warmup = 1, .frames = o.frames}, &perView.back());
         tuner.report(f);
         const TuneEvaluation& e = tuner.evaluations().back();
         std::cerr << "[" << tuner.evaluations().size() << "/" << o.budgetEvals << "] " << stageName(request->stage)
                   << ' ' << request->size.width << 'x' << request->size.height << ' ' << request->label << ": "
-                  << describe(e) << (e.meets() ? " - meets" : " - misses") << '\n';
+                  << describe(e.figures) << ", measured " << f.frameMs << " ms"
+                  << (e.meets() ? " - meets" : " - misses") << '\n';
     }
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
@@ -149,7 +264,7 @@ int runTune(const TuneCommandOptions& o) {
     std::vector<ui::charts::TunePoint> points;
     for (size_t i = 0; i < tuner.evaluations().size(); ++i) {
         const TuneEvaluation& e = tuner.evaluations()[i];
-        points.push_back({e.request.label, e.figures.frameMs, targetRatio(e.figures, target),
+        points.push_back({e.request.label, e.figures.costMs, targetRatio(e.figures, target),
                           e.request.stage == TuneStage::Full, chosen == i});
     }
     const ui::charts::Chart chart = ui::charts::tuneChart(points, formatTuneTarget(target));
@@ -159,6 +274,9 @@ int runTune(const TuneCommandOptions& o) {
     std::ostringstream summary;
     summary << tuner.evaluations().size() << " evaluations (" << tuner.fullEvaluations()
             << " at full size, of a space of " << spaceSize << " configurations) in " << minutes << " min";
+    std::vector<std::string> viewList;
+    for (const auto& name : names) viewList.push_back(name);
+    if (viewList.empty()) viewList.push_back("the scene's camera");
     for (const char* f : {"tune.csv", "tune.svg", "tune.png"}) std::cout << (dir / f).string() << '\n';
     if (chosen) {
         const TuneEvaluation& e = tuner.evaluations()[*chosen];
@@ -166,9 +284,10 @@ int runTune(const TuneCommandOptions& o) {
         geometry::io::savePreset(path, e.candidate, "recommended",
                                  "shadowscope tune on " + scene.name + " (" + viewNames + ") at " +
                                      std::to_string(o.common.size.width) + "x" + std::to_string(o.common.size.height) +
-                                     ": meets " + formatTuneTarget(target) + "; " + describe(e));
+                                     ": meets " + formatTuneTarget(target) + "; " + describe(e.figures));
         std::cout << path << '\n'
-                  << "recommended: " << e.request.label << " (" << describe(e) << ")\n"
+                  << "recommended: " << e.request.label << " (" << describe(e.figures) << ", measured "
+                  << e.figures.frameMs << " ms)\n"
                   << summary.str() << '\n';
         return 0;
     }
@@ -178,11 +297,18 @@ int runTune(const TuneCommandOptions& o) {
     const std::string path = (dir / "closest.json").string();
     geometry::io::savePreset(path, e.candidate, "closest",
                              "shadowscope tune on " + scene.name + ": closest to " + formatTuneTarget(target) +
-                                 ", misses " + describeMisses(e.figures, target));
+                                 ", misses " + describeMisses(e.figures, target) + "; " + describe(e.figures));
     std::cout << path << '\n'
               << "no configuration meets " << formatTuneTarget(target) << "; closest: " << e.request.label << " ("
-              << describe(e) << "), misses " << describeMisses(e.figures, target) << '\n'
-              << summary.str() << '\n';
+              << describe(e.figures) << "), misses " << describeMisses(e.figures, target) << '\n';
+    // Which view misses what, with its figures.
+    for (size_t v = 0; v < perView[*near].size() && v < viewList.size(); ++v) {
+        const TuneFigures& f = perView[*near][v];
+        const std::string misses = describeMisses(f, target);
+        std::cout << "  view " << viewList[v] << ": " << (misses.empty() ? "meets" : "misses " + misses) << " ("
+                  << describe(f) << ")\n";
+    }
+    std::cout << summary.str() << '\n';
     return 3;
 }
 

@@ -22,6 +22,7 @@ struct TuneCommandOptions {
     TruthOptions truth{true, 1};
     int budgetEvals = 120;
     int frames = 3;
+    bool calibrateCost = false; // --calibrate-cost: fit the cost model on this backend instead of searching
 
     [[nodiscard]] static RenderOptions defaults() {
         RenderOptions o;
@@ -35,8 +36,10 @@ struct TuneCommandOptions {
 void addTuneCommand(CLI::App& cmd, TuneCommandOptions& options);
 
 /// Runs the search. Writes DIR/tune.csv, DIR/tune.svg and .png, and DIR/recommended.json (exit 0)
-/// or, when nothing meets the target, DIR/closest.json (exit 3). Bad arguments throw
-/// std::invalid_argument (exit 2).
+/// or, when nothing meets the target, DIR/closest.json (exit 3, naming each view's misses). The same
+/// inputs write the same recommended.json and tune.csv (but its measured frame_ms column). With
+/// --calibrate-cost, measures the calibration set and writes DIR/cost_model.json instead (exit 0).
+/// Bad arguments throw std::invalid_argument (exit 2).
 int runTune(const TuneCommandOptions& options);
 
 } // namespace app

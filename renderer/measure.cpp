@@ -43,23 +43,27 @@ Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& 
     for (const uint64_t n : renderer.stats().splitTriangles) out.shadowTriangles += n;
     for (const uint64_t n : renderer.stats().splitTrianglesFull) out.shadowTrianglesWithoutLod += n;
     out.shadowMemoryBytes = renderer.stats().shadowMemoryBytes;
+    out.eyeTriangles = renderer.stats().eyeTriangles;
     out.inspection = inspect(renderer, out.plan, truth, options.truthSamples);
     return out;
 }
 
-geometry::analysis::TuneFigures measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& request,
-                                                   const geometry::scene::Aabb& S,
-                                                   const std::vector<MeasureView>& views,
-                                                   const geometry::analysis::GroundTruth& truth, int truthSamples,
-                                                   const MeasureOptions& options) {
+geometry::analysis::TuneFigures
+measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& request, const geometry::scene::Aabb& S,
+                   const std::vector<MeasureView>& views, const geometry::analysis::GroundTruth& truth,
+                   int truthSamples, const geometry::analysis::CostModel& costModel, const MeasureOptions& options,
+                   std::vector<geometry::analysis::TuneFigures>* perView) {
     std::vector<geometry::analysis::TuneFigures> figures;
     MeasureOptions o = options;
     o.truthSamples = truthSamples;
     for (const MeasureView& view : views) {
         const Measurement m = measure(renderer, request.settings, S, view.camera, view.light, request.size, o, &truth);
-        figures.push_back(geometry::analysis::tuneFigures(m.inspection, std::isfinite(m.gpuMs) ? m.gpuMs : m.cpuMs,
-                                                          m.shadowMemoryBytes));
+        const geometry::analysis::WorkCounts work =
+            geometry::analysis::countWork(request.settings, m.plan, m.shadowTriangles, m.eyeTriangles, request.size);
+        figures.push_back(geometry::analysis::tuneFigures(
+            m.inspection, costModel.costMs(work), std::isfinite(m.gpuMs) ? m.gpuMs : m.cpuMs, m.shadowMemoryBytes));
     }
+    if (perView) *perView = figures;
     return geometry::analysis::combineViews(figures);
 }
 

@@ -3,6 +3,7 @@
 // sweep share: plan and render warm-up frames, then timed frames (the GPU time of the shadow and
 // eye passes by timer queries, the CPU time of planning plus drawing up to glFinish), and read the
 // last frame back with its statistics. It decides nothing about shadows: the plan does.
+#include "geometry/analysis/cost_model.h"
 #include "geometry/analysis/inspection.h"
 #include "geometry/analysis/tuner.h"
 #include "geometry/scene/scene.h"
@@ -29,6 +30,7 @@ struct Measurement {
     double shadowGpuMs = 0;                    // the shadow passes' GPU median (part of gpuMs)
     uint64_t shadowTriangles = 0;              // drawn by the last frame's shadow passes
     uint64_t shadowTrianglesWithoutLod = 0;    // … as many as they would draw without caster LOD
+    uint64_t eyeTriangles = 0;                 // drawn by the last frame's eye pass
     int gpuFrames = 0;                         // timed frames with a valid GPU timer
     uint64_t shadowMemoryBytes = 0;
 };
@@ -48,12 +50,14 @@ struct MeasureView {
 };
 
 /// Measures a tune request (geometry/analysis/tuner.h) on every view with truth: the figures tune
-/// ranks, combined over the views (combineViews). Frame time: the GPU median, the CPU median where
-/// the timer gave nothing.
+/// ranks, combined over the views (combineViews). Cost: `costModel`'s for the work each frame
+/// counts; frame time: the GPU median, the CPU median where the timer gave nothing. `perView`, when
+/// given, receives each view's figures.
 [[nodiscard]] geometry::analysis::TuneFigures
 measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& request, const geometry::scene::Aabb& S,
                    const std::vector<MeasureView>& views, const geometry::analysis::GroundTruth& truth,
-                   int truthSamples, const MeasureOptions& options = {});
+                   int truthSamples, const geometry::analysis::CostModel& costModel, const MeasureOptions& options = {},
+                   std::vector<geometry::analysis::TuneFigures>* perView = nullptr);
 
 /// A camera/light path (keys as a scene file's "paths" hold them; empty: the start stays put).
 struct MeasurePath {

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <string>
 
@@ -81,6 +83,58 @@ TEST(TuneCli, NothingMeetsExitsThreeWithTheClosest) {
     EXPECT_NE(r.output.find("misses p95"), std::string::npos) << r.output;
 }
 
+namespace {
+
+/// tune.csv without its last column (frame_ms, measured: the one that may differ between runs).
+std::string withoutMeasuredTime(const fs::path& p) {
+    std::ifstream in(p);
+    std::string out;
+    for (std::string line; std::getline(in, line);) out += line.substr(0, line.rfind(',')) + '\n';
+    return out;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+} // namespace
+
+// A space holding absurd biases (10 m constant, a normal offset of 16 texels) on the deck: they
+// lose the grating's shadows, which count as errors, so they are never recommended; and two runs
+// of the same search write the same recommended.json and tune.csv (the measured time aside).
+TEST(TuneCli, AbsurdBiasesAreNeverRecommendedAndTwoRunsAgree) {
+    const std::string args =
+        "tune --backend osmesa --scene " + std::string(SHADOWSCOPE_SOURCE_DIR) +
+        "/resources/scenes/platform.json --view deck --size 160x90 --preset " + std::string(SHADOWSCOPE_SOURCE_DIR) +
+        "/resources/presets/paper.json --target interior=0.01,edge=0.02 --space bias.type=constant,normal_offset "
+        "--space filter.type=pcf --space shadow_map.resolution=1024 --space warp.method=glispsm --space "
+        "splits.count=2 --space splits.scheme=adaptive --space splits.alpha=2 --space bias.constant=0.02,1,10 "
+        "--space bias.normal_offset=1,16 --budget-evals 14 --frames 1 --out ";
+    const fs::path a = freshDir("tune_absurd_a"), b = freshDir("tune_absurd_b");
+    const auto ra = run(args + a.string());
+    ASSERT_EQ(ra.exitCode, 0) << ra.output;
+    const auto rec = readJson(a / "recommended.json");
+    EXPECT_LE(rec["bias"]["constant"].get<double>(), 0.1);
+    EXPECT_EQ(rec["bias"]["type"], "constant");
+    std::ifstream csv(a / "tune.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.substr(header.rfind(',') + 1), "frame_ms") << "the measured time last";
+    int absurd = 0;
+    while (std::getline(csv, line))
+        if (line.find("bias.constant=10\"") != std::string::npos ||
+            line.find("bias.normal_offset=16\"") != std::string::npos) {
+            ++absurd;
+            EXPECT_NE(line.find(",0,0,\""), std::string::npos) << "misses, not chosen: " << line;
+        }
+    EXPECT_EQ(absurd, 2) << "both absurd biases were measured";
+    const auto rb = run(args + b.string());
+    ASSERT_EQ(rb.exitCode, 0) << rb.output;
+    EXPECT_EQ(slurp(a / "recommended.json"), slurp(b / "recommended.json"));
+    EXPECT_EQ(withoutMeasuredTime(a / "tune.csv"), withoutMeasuredTime(b / "tune.csv"));
+}
+
 TEST(TuneCli, BadArgumentsExitTwo) {
     for (const std::string args :
          {"tune --backend osmesa --scene plane --out /tmp/x",
@@ -89,9 +143,14 @@ TEST(TuneCli, BadArgumentsExitTwo) {
           "tune --backend osmesa --scene plane --target p95=1 --space shadow_map.resolution=3 "
           "--out /tmp/x",
           "tune --backend osmesa --scene plane --target p95=1 --budget-evals 1 --out /tmp/x",
-          "tune --backend osmesa --scene plane --target p95=1 --view nowhere --out /tmp/x"}) {
+          "tune --backend osmesa --scene plane --target p95=1 --view nowhere --out /tmp/x",
+          "tune --backend osmesa --scene plane --target p95=1 --truth-samples 0 --out /tmp/x",
+          "tune --backend osmesa --scene plane --target p95=1 --truth-samples 65 --out /tmp/x",
+          "tune --backend osmesa --scene plane --target soft=0.1 --out /tmp/x",
+          "tune --backend osmesa --scene plane --target edge_width=-1 --out /tmp/x"}) {
         const auto r = run(args);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
         EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
+        EXPECT_LE(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line: " << r.output;
     }
 }

@@ -26,6 +26,7 @@ TuneFigures model(const ShadowSettings& s, Viewport size) {
     f.misclassified = f.interior + f.edge;
     f.frameMs = fullRes / 1024.0 * (s.filter.type == FilterType::Pcf ? 1.5 : 1.0) * (warped ? 1.1 : 1.0) *
                 (size.width < 640 ? 0.25 : 1.0);
+    f.costMs = f.frameMs; // the model's cost is its time: measured and modelled agree here
     f.memoryBytes = uint64_t(fullRes * fullRes * 4);
     return f;
 }
@@ -118,6 +119,69 @@ TEST(TuneTarget, SoftAndUmbraKeys) {
     EXPECT_THROW((void)parseTuneTarget("soft=1,soft=2"), std::invalid_argument);
 }
 
+// The keys of the verdicts no setting can game: contact (peter-panning), interior_abs (a filter's
+// darkening), edge_width (texels); the tightest fraction decides the screening size; the cost that
+// ranks is the modelled one, never the measured time.
+TEST(TuneTarget, ContactInteriorAbsEdgeWidthAndTheModelledCost) {
+    const TuneTarget t = parseTuneTarget("contact=0.002,interior_abs=0.01,edge_width=0.25,edge=0.004");
+    EXPECT_EQ(formatTuneTarget(t), "edge=0.004,contact=0.002,interior_abs=0.01,edge_width=0.25");
+    EXPECT_EQ(t.tightestFraction(), 0.002);
+    EXPECT_FALSE(parseTuneTarget("p95=2").tightestFraction());
+    TuneFigures f;
+    f.edge = 0.001;
+    f.contact = 0.003;
+    f.interiorAbs = 0.005;
+    f.edgeWidth = 0.5;
+    EXPECT_EQ(describeMisses(f, t), "contact 0.003 > 0.002, edge_width 0.5 > 0.25");
+    TuneFigures a, b;
+    a.costMs = 2, b.costMs = 3;
+    a.frameMs = 30, b.frameMs = 1; // a loaded machine measured a as slow: it is still the cheaper
+    EXPECT_EQ(compareTuneCost(a, b), -1);
+    b.costMs = 2;
+    b.memoryBytes = 1;
+    a.memoryBytes = 2;
+    EXPECT_EQ(compareTuneCost(a, b), 1) << "as costly: the smaller maps";
+    try {
+        (void)parseTuneTarget("speed=1");
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("edge_width"), std::string::npos) << e.what();
+    }
+}
+
+// Screening at half size only where one of its pixels is under a tenth of the tightest fraction;
+// a soft target needs a sun of size; a resolution beyond the memory budget is measured as drawn.
+TEST(Tuner, ScreeningSizeSoftTargetsAndTheBudget) {
+    TuneOptions o{.size = {640, 360}, .budgetEvals = 10};
+    o.receiverPixels = 100000; // a quarter of that at half size: 25000 pixels, one is 4e-5
+    EXPECT_TRUE(Tuner(startSettings(), smallSpace(), parseTuneTarget("interior=0.001"), o).screensAtHalfSize());
+    EXPECT_FALSE(Tuner(startSettings(), smallSpace(), parseTuneTarget("interior=0.0001"), o).screensAtHalfSize());
+    EXPECT_TRUE(Tuner(startSettings(), smallSpace(), parseTuneTarget("p95=1"), o).screensAtHalfSize());
+    o.receiverPixels = 0;
+    Tuner full(startSettings(), smallSpace(), parseTuneTarget("edge=0.01"), o);
+    EXPECT_FALSE(full.screensAtHalfSize());
+    const auto first = full.next();
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->size.width, 640);
+    EXPECT_EQ(first->settings.resolution, startSettings().resolution);
+    EXPECT_THROW(Tuner(startSettings(), smallSpace(), parseTuneTarget("soft=0.01"), o), std::invalid_argument);
+    std::vector<TuneAxis> sun = smallSpace();
+    sun.push_back({"light.angular_diameter_deg", {"0", "0.5"}});
+    EXPECT_NO_THROW(Tuner(startSettings(), sun, parseTuneTarget("soft=0.01"), o));
+    ShadowSettings huge = startSettings();
+    huge.splits.count = 8;
+    huge.resolution = 8192;
+    Tuner budget(huge, {{"shadow_map.resolution", {"8192", "4096"}}}, parseTuneTarget("p95=0.1"),
+                 {.size = {640, 360}, .budgetEvals = 10});
+    int measured = 0;
+    while (const auto r = budget.next()) {
+        EXPECT_LE(r->settings.resolution, 4096) << "8 × 8192² is over the budget";
+        budget.report(model(r->settings, r->size));
+        ++measured;
+    }
+    EXPECT_EQ(measured - budget.fullEvaluations(), 1) << "8192 and 4096 are drawn alike: screened once";
+}
+
 TEST(TuneFigures, CombiningViewsTakesTheWorstAccuracyAndTheSummedTime) {
     TuneFigures a, b;
     a.p95 = 1;
@@ -136,6 +200,15 @@ TEST(TuneFigures, CombiningViewsTakesTheWorstAccuracyAndTheSummedTime) {
     EXPECT_EQ(c.edge, 0.002);
     EXPECT_EQ(c.frameMs, 15);
     EXPECT_EQ(c.memoryBytes, 7u);
+    a.costMs = 4;
+    b.costMs = 6;
+    a.contact = 0.001;
+    b.contact = 0.003;
+    a.edgeWidth = 0.2;
+    b.edgeWidth = 0.1;
+    EXPECT_EQ(combineViews({a, b}).costMs, 10);
+    EXPECT_EQ(combineViews({a, b}).contact, 0.003);
+    EXPECT_EQ(combineViews({a, b}).edgeWidth, 0.2);
     b.interior = NAN;
     EXPECT_TRUE(std::isnan(combineViews({a, b}).interior));
 }
@@ -198,7 +271,7 @@ TEST(Tuner, FindsTheCheapestConfigurationThatMeetsTheTarget) {
     ASSERT_EQ(best->warp.method, WarpMethod::Lispsm);
     ASSERT_EQ(best->resolution, 2048);
 
-    Tuner t(startSettings(), space, target, {.size = {640, 360}, .budgetEvals = 40});
+    Tuner t(startSettings(), space, target, {.size = {640, 360}, .budgetEvals = 40, .receiverPixels = 640.0 * 360.0});
     const int measured = run(t);
     EXPECT_TRUE(t.done());
     EXPECT_EQ(t.progress(), 1.0);

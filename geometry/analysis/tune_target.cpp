@@ -10,10 +10,9 @@ namespace geometry::analysis {
 namespace {
 
 constexpr double kFractionEpsilon = 1e-4; // violation's ε for fractions (a hundredth of a percent)
-constexpr double kP95Epsilon = 1e-2;      // and for m
-// Frame times within 10 % are a tie, broken by memory: llvmpipe's medians of three frames on a
-// shared machine scatter by about that much.
-constexpr double kCostTie = 0.10;
+constexpr double kP95Epsilon = 1e-2;      // and for m (and texels of edge width)
+constexpr const char* kKeys =
+    "keys: p95, interior, edge, misclassified, soft, umbra, contact, interior_abs, edge_width";
 
 std::string number(double v) {
     std::ostringstream os;
@@ -52,22 +51,28 @@ std::vector<TargetTerm> terms(const TuneFigures& f, const TuneTarget& t) {
     if (t.misclassified) out.push_back({f.misclassified, *t.misclassified, kFractionEpsilon, "misclassified"});
     if (t.soft) out.push_back({f.soft, *t.soft, kFractionEpsilon, "soft"});
     if (t.umbra) out.push_back({f.umbra, *t.umbra, kFractionEpsilon, "umbra"});
+    if (t.contact) out.push_back({f.contact, *t.contact, kFractionEpsilon, "contact"});
+    if (t.interiorAbs) out.push_back({f.interiorAbs, *t.interiorAbs, kFractionEpsilon, "interior_abs"});
+    if (t.edgeWidth) out.push_back({f.edgeWidth, *t.edgeWidth, kP95Epsilon, "edge_width"});
     return out;
 }
 
 double costOf(const TuneFigures& f) noexcept {
-    return std::isfinite(f.frameMs) ? f.frameMs : std::numeric_limits<double>::infinity();
+    return std::isfinite(f.costMs) ? f.costMs : std::numeric_limits<double>::infinity();
 }
 
 } // namespace
 
+std::optional<double> TuneTarget::tightestFraction() const noexcept {
+    std::optional<double> out;
+    for (const auto& v : {interior, edge, misclassified, contact})
+        if (v && (!out || *v < *out)) out = *v;
+    return out;
+}
+
 int compareTuneCost(const TuneFigures& a, const TuneFigures& b) noexcept {
     const double ca = costOf(a), cb = costOf(b);
-    if (std::isfinite(ca) && std::isfinite(cb)) {
-        if (std::abs(ca - cb) > kCostTie * std::min(ca, cb)) return ca < cb ? -1 : 1;
-    } else if (std::isfinite(ca) != std::isfinite(cb)) {
-        return std::isfinite(ca) ? -1 : 1;
-    }
+    if (ca != cb) return ca < cb ? -1 : 1;
     if (a.memoryBytes != b.memoryBytes) return a.memoryBytes < b.memoryBytes ? -1 : 1;
     return 0;
 }
@@ -77,7 +82,7 @@ TuneTarget parseTuneTarget(std::string_view text) {
     const auto bad = [&](const std::string& why) {
         return std::invalid_argument("--target " + std::string(text) + ": " + why);
     };
-    if (text.empty()) throw bad("empty (keys: p95, interior, edge, misclassified, soft, umbra)");
+    if (text.empty()) throw bad(std::string("empty (") + kKeys + ")");
     for (std::string_view item : splitCommas(text)) {
         const size_t eq = item.find('=');
         if (eq == std::string_view::npos) throw bad("'" + std::string(item) + "' is not KEY=VALUE");
@@ -97,8 +102,11 @@ TuneTarget parseTuneTarget(std::string_view text) {
                                       : key == "misclassified" ? &t.misclassified
                                       : key == "soft"          ? &t.soft
                                       : key == "umbra"         ? &t.umbra
+                                      : key == "contact"       ? &t.contact
+                                      : key == "interior_abs"  ? &t.interiorAbs
+                                      : key == "edge_width"    ? &t.edgeWidth
                                                                : nullptr;
-        if (!slot) throw bad("unknown key '" + key + "' (keys: p95, interior, edge, misclassified, soft, umbra)");
+        if (!slot) throw bad("unknown key '" + key + "' (" + kKeys + ")");
         if (*slot) throw bad("'" + key + "' given twice");
         *slot = v;
     }
@@ -116,17 +124,24 @@ std::string formatTuneTarget(const TuneTarget& t) {
     add("misclassified", t.misclassified);
     add("soft", t.soft);
     add("umbra", t.umbra);
+    add("contact", t.contact);
+    add("interior_abs", t.interiorAbs);
+    add("edge_width", t.edgeWidth);
     return out;
 }
 
-TuneFigures tuneFigures(const Inspection& in, double frameMs, uint64_t memoryBytes) noexcept {
+TuneFigures tuneFigures(const Inspection& in, double costMs, double frameMs, uint64_t memoryBytes) noexcept {
     TuneFigures f;
     f.p95 = in.aliasing.count ? in.aliasing.p95 : TuneFigures::kNaN;
-    if (in.truthClasses && in.truthClasses->count) {
-        f.interior = in.truthClasses->interiorFalseShadow + in.truthClasses->interiorFalseLit;
-        f.edge = in.truthClasses->edgeError;
-        f.umbra = in.truthClasses->umbraLight;
+    if (const auto& c = in.truthClasses; c && c->count) {
+        f.interior = c->interiorFalseShadow + c->interiorFalseLit;
+        f.edge = c->edgeError;
+        f.umbra = c->umbraLight;
+        f.contact = c->contactFalseLit;
+        f.interiorAbs = c->interiorMeanAbs;
+        f.edgeWidth = c->edgeWidthTexels;
     }
+    f.costMs = costMs;
     if (in.softTruth) f.soft = in.softTruth->meanAbs;
     if (in.truth && in.truth->count) f.misclassified = in.truth->falseShadow + in.truth->falseLit;
     f.frameMs = frameMs;
@@ -149,6 +164,10 @@ TuneFigures combineViews(const std::vector<TuneFigures>& views) noexcept {
         out.misclassified = worst(out.misclassified, v.misclassified);
         out.soft = worst(out.soft, v.soft);
         out.umbra = worst(out.umbra, v.umbra);
+        out.contact = worst(out.contact, v.contact);
+        out.interiorAbs = worst(out.interiorAbs, v.interiorAbs);
+        out.edgeWidth = worst(out.edgeWidth, v.edgeWidth);
+        out.costMs += v.costMs;
         out.frameMs += v.frameMs;
         out.memoryBytes = std::max(out.memoryBytes, v.memoryBytes);
     }

@@ -1,5 +1,7 @@
 #include "geometry/analysis/tuner.h"
 
+#include "geometry/shadow/memory_budget.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -19,12 +21,30 @@ Tuner::Tuner(ShadowSettings start, std::vector<TuneAxis> space, TuneTarget targe
     options_.confirm = std::clamp(options_.confirm, 1, options_.budgetEvals - 1);
     options_.beam = std::max(options_.beam, 1);
     shadow::validateOrThrow(start_);
+    bool sunOfSize = start_.light.angularDiameterDeg > 0.f;
     for (const TuneAxis& a : space_)
         for (const std::string& v : a.values) {
             ShadowSettings probe = start_;
             shadow::applySetting(probe, a.key, v); // throws for a value the declaration rejects
+            sunOfSize = sunOfSize || probe.light.angularDiameterDeg > 0.f;
         }
+    if (target_.soft && !sunOfSize)
+        throw std::invalid_argument("--target soft: soft_mean_abs needs a sun of size; set "
+                                    "light.angular_diameter_deg > 0");
+    // Half-size screening only where one of its pixels (a quarter of the receivers) is under a
+    // tenth of the tightest fractional target: else a single pixel decides a verdict.
+    if (const auto tightest = target_.tightestFraction()) halfSize_ = options_.receiverPixels / 4.0 * *tightest >= 10.0;
 }
+
+namespace {
+
+/// The configuration as drawn: a resolution beyond the memory budget is the one the plan draws.
+ShadowSettings withinBudget(ShadowSettings s) noexcept {
+    s.resolution = shadow::budgetedResolution(s);
+    return s;
+}
+
+} // namespace
 
 std::string Tuner::canonical(const ShadowSettings& s) const {
     std::string out;
@@ -122,7 +142,7 @@ std::optional<TuneRequest> Tuner::next() {
         e.request.size = options_.size;
         e.request.stage = stage;
         e.request.label = label(candidate);
-        if (stage == TuneStage::Screen) {
+        if (stage == TuneStage::Screen && halfSize_) {
             // Half the width, height and map resolution: the same texels per pixel, a quarter of the work.
             e.request.settings.resolution = std::max(16, candidate.resolution / 2);
             e.request.size = {std::max(32, options_.size.width / 2), std::max(32, options_.size.height / 2)};
@@ -137,7 +157,7 @@ std::optional<TuneRequest> Tuner::next() {
     while (true) {
         if (phase_ == Phase::Done) return std::nullopt;
         if (phase_ == Phase::Screen) {
-            if (beam_.empty()) return request(start_, TuneStage::Screen);
+            if (beam_.empty()) return request(withinBudget(start_), TuneStage::Screen);
             if (axis_ >= space_.size()) { // the end of a pass
                 ++pass_;
                 if (!changed_ || pass_ >= options_.maxPasses) {
@@ -161,6 +181,7 @@ std::optional<TuneRequest> Tuner::next() {
             }
             ShadowSettings candidate = evaluations_[axisBeam_[member_]].candidate;
             shadow::applySetting(candidate, axis.key, axis.values[value_++]);
+            candidate = withinBudget(candidate);
             if (const auto seen = screened(canonical(candidate))) {
                 axisEvals_.push_back(*seen);
                 continue;
@@ -187,10 +208,14 @@ void Tuner::report(const TuneFigures& figures) {
     TuneEvaluation e = std::move(*pending_);
     pending_.reset();
     e.figures = figures;
-    // Edge error is a fraction of pixels along 1-D edges: at half the width the same edges, the
-    // same number of pixels wide, cover about twice the fraction. Compare it at full size.
-    if (e.request.stage == TuneStage::Screen)
-        e.figures.edge *= double(e.request.size.width) / double(options_.size.width);
+    // Edge error and peter-panning are fractions of pixels along 1-D edges: at half the width (and
+    // half the map) the same bands, as many pixels wide, cover about twice the fraction. Compare
+    // them at full size.
+    if (e.request.stage == TuneStage::Screen) {
+        const double ratio = double(e.request.size.width) / double(options_.size.width);
+        e.figures.edge *= ratio;
+        e.figures.contact *= ratio;
+    }
     e.violation = targetViolation(e.figures, target_);
     evaluations_.push_back(std::move(e));
     keys_.push_back(pendingKey_);

@@ -5,13 +5,16 @@
 // figures, so the command line loops and the GUI measures one configuration per frame. No GL.
 //
 // The search: a beam search by coordinate descent over the declared settings at a screening size
-// (half the width and height, half the map resolution, so texels per pixel stay the same): axis by
+// (half the width and height, half the map resolution, so texels per pixel stay the same, where one
+// pixel there is under a tenth of the tightest fractional target; else at full size): axis by
 // axis, every candidate value is tried on each of the best `beam` configurations so far, and the
 // best `beam` of them go on, no two of them differing only in amounts (a beam of two gets past the
 // commonest trap, where a warp pays off only together with a lower resolution). Then the best
 // screened candidates are confirmed at full size. Configurations that differ only in settings
 // their other settings make irrelevant (bias.constant under a slope bias, α with one split) are
-// measured once.
+// measured once, and so are resolutions the memory budget draws alike (memory_budget.h). Ranking
+// uses the modelled cost (cost_model.h), never the measured time: the same figures give the same
+// recommendation on every run.
 #include "geometry/analysis/tune_space.h"
 #include "geometry/analysis/tune_target.h"
 #include "geometry/shadow/shadow_plan.h"
@@ -45,12 +48,15 @@ struct TuneOptions {
     int confirm = 4;                 // screened candidates confirmed at full size (more while none meets)
     int maxPasses = 3;               // passes over the axes
     int beam = 2;                    // configurations carried from axis to axis
+    // The fewest receiver pixels any view has at full size (they do not depend on the settings);
+    // 0: unknown, so screening stays at full size.
+    double receiverPixels = 0;
 };
 
 class Tuner {
 public:
-    /// Throws std::invalid_argument for an empty target or space, a budget below 2 or a start
-    /// the declaration rejects.
+    /// Throws std::invalid_argument for an empty target or space, a budget below 2, a start the
+    /// declaration rejects, or a soft target without a sun of size to measure it against.
     Tuner(shadow::ShadowSettings start, std::vector<TuneAxis> space, TuneTarget target, TuneOptions options);
 
     /// The next configuration to measure; nullopt when the search is over.
@@ -71,6 +77,8 @@ public:
     [[nodiscard]] int fullEvaluations() const noexcept;
     [[nodiscard]] const TuneTarget& target() const noexcept { return target_; }
     [[nodiscard]] const std::vector<TuneAxis>& space() const noexcept { return space_; }
+    /// Whether screening runs at half size (one pixel there under a tenth of the tightest fraction).
+    [[nodiscard]] bool screensAtHalfSize() const noexcept { return halfSize_; }
 
 private:
     enum class Phase { Screen, Confirm, Done };
@@ -90,6 +98,7 @@ private:
     TuneTarget target_;
     TuneOptions options_;
 
+    bool halfSize_ = true;
     Phase phase_ = Phase::Screen;
     std::vector<TuneEvaluation> evaluations_;
     std::vector<std::string> keys_; // canonical() of each evaluation's candidate

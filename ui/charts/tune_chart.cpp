@@ -8,7 +8,7 @@ namespace ui::charts {
 Chart tuneChart(const std::vector<TunePoint>& points, const std::string& target) {
     Chart c;
     c.title = "tune: frame time against the target " + target + " (below 1 meets it)";
-    c.x.label = "frame time, median (ms; screened at a quarter of the pixels)";
+    c.x.label = "modelled cost (ms; screened at a quarter of the pixels where the target allows)";
     c.y.label = "worst figure / target";
     c.y.log = true;
     ChartSeries screened{"screened (half size)", Rgb{150, 150, 160}, {}, SeriesStyle::Markers, 3.f, {}};
@@ -19,7 +19,7 @@ Chart tuneChart(const std::vector<TunePoint>& points, const std::string& target)
     double xMin = INFINITY, xMax = -INFINITY;
     for (size_t i = 0; i < points.size(); ++i) {
         const TunePoint& p = points[i];
-        const ChartPoint xy{p.frameMs, std::max(p.ratio, 1e-3)};
+        const ChartPoint xy{p.costMs, std::max(p.ratio, 1e-3)};
         if (plottable(xy.x, false)) {
             xMin = std::min(xMin, xy.x);
             xMax = std::max(xMax, xy.x);
