@@ -11,6 +11,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -22,9 +23,13 @@ bool Dashboard::startRecommend(const std::string& target, int budgetEvals) {
         if (!scene_.truth) throw std::runtime_error("Recommend needs ray-traced truth for this scene");
         const geometry::analysis::TuneTarget t = geometry::analysis::parseTuneTarget(target);
         r.size = sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360};
+        // The receivers of the frame shown decide the screening size (they do not depend on the settings).
+        double receivers = 0;
+        if (const auto* in = inspection(shownSide()); in && in->width == r.size.width)
+            receivers = double(std::count(in->receiver.begin(), in->receiver.end(), uint8_t(1)));
         r.tuner = std::make_unique<geometry::analysis::Tuner>(
             state_.settings[size_t(shownSide())], geometry::analysis::defaultTuneSpace(), t,
-            geometry::analysis::TuneOptions{.size = r.size, .budgetEvals = budgetEvals});
+            geometry::analysis::TuneOptions{.size = r.size, .budgetEvals = budgetEvals, .receiverPixels = receivers});
     } catch (const std::exception& e) {
         status_ = std::string("Recommend: ") + e.what();
         return false;
@@ -101,8 +106,10 @@ void Dashboard::drawRecommendControls() {
         if (ImGui::SmallButton("Recommend")) (void)startRecommend(r.target, r.budget);
         widgetMapRecord("recommend.run");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("Searches for the cheapest settings that meet the target on this view (as `shadowscope "
-                              "tune`): screening at half size, then full size; one measurement per frame");
+            ImGui::SetTooltip(
+                "Searches for the cheapest settings that meet the target on this view (as `shadowscope "
+                "tune`): screening at half size where the target allows, then full size; one measurement per "
+                "frame");
     } else {
         const double done = r.tuner ? r.tuner->progress() : 0.0;
         ImGui::ProgressBar(float(done), ImVec2(ImGui::GetFontSize() * 8, 0));
