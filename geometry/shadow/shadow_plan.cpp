@@ -364,8 +364,8 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         // The warp's n' from the fitted range, except that the first split's n sits between the
         // camera's n and the nearest sample (n^(2/3)·z_min^(1/3)): the fitted z_min alone weakens
         // the warp too much where a few near samples see a long frustum (deck: p95 m 3.21 → 4.39),
-        // the camera's n keeps it too strong for a far-off focus (overview); docs/accuracy.md
-        // "Fitting to the samples" has the variants measured.
+        // the camera's n keeps it too strong for a far-off focus (overview); docs/performance.md
+        // "How n' is computed for fitted splits" has the variants measured.
         const double nI = fit && i == 0 ? std::cbrt(double(camera.near) * camera.near * c[0]) : c[i], fI = c[i + 1];
         double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, nI, fI, phi, gamma, hi - lo);
         const bool quantize = settings.stabilize == StabilizeMode::Quantize;
