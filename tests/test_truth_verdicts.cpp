@@ -167,3 +167,17 @@ TEST(Verdicts, TheRenderIsSampledWhereTheTruthIs) {
     EXPECT_EQ(deck().r->stats().eyeWidth, vp.width);
     EXPECT_EQ(deck().r->readShadowMask().size(), size_t(vp.width * vp.height));
 }
+
+// A wide kernel darkens lit ground without crossing 0.5 (pssm3 with a 7 × 7 PCF on plane renders it
+// at s ≈ 0.96): no sample is misclassified, but interior_mean_abs counts it.
+TEST(Verdicts, AWideKernelsDarkeningIsCounted) {
+    ViewRig plane(kResources + "scenes/plane.json", "default");
+    const Viewport vp{160, 120};
+    ShadowSettings s = preset("pssm3.json");
+    const TruthClasses narrow = *plane.inspect(s, vp, 2).truthClasses;
+    s.filter.kernel = 7;
+    const TruthClasses wide = *plane.inspect(s, vp, 2).truthClasses;
+    EXPECT_LT(narrow.interiorMeanAbs, 0.005);
+    EXPECT_GT(wide.interiorMeanAbs, 0.02) << "lit ground at s ≈ 0.96";
+    EXPECT_LT(wide.interiorFalseShadow, 0.001) << "no threshold calls it wrong";
+}
