@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,32 @@ TEST(Settings, EveryDeclaredKeyRoundTripsThroughText) {
         applySetting(t, info.key, info.format(s));
         EXPECT_EQ(info.get(t), info.get(s)) << info.key;
         EXPECT_FALSE(info.help.empty()) << info.key;
+    }
+}
+
+// Every setter reaches its field: a value other than the default, set through the declaration's
+// text, reads back through its getter and changes the settings (a no-op setter fails here).
+TEST(Settings, EveryDeclaredSetterChangesItsField) {
+    const ShadowSettings defaults;
+    for (const auto& info : settingsDeclaration()) {
+        const double was = info.get(defaults);
+        double other = was;
+        switch (info.kind) {
+        case SettingInfo::Kind::Bool: other = was != 0 ? 0 : 1; break;
+        case SettingInfo::Kind::Choice: other = double((int(was) + 1) % int(info.choices.size())); break;
+        case SettingInfo::Kind::Int: other = was != info.max ? info.max : info.min; break;
+        case SettingInfo::Kind::Float: other = was != info.max ? info.max : info.min; break;
+        }
+        ASSERT_NE(other, was) << info.key << ": no other value in its range";
+        ShadowSettings t;
+        info.set(t, other);
+        const std::string text = info.format(t);
+        ShadowSettings u;
+        applySetting(u, info.key, text);
+        EXPECT_EQ(info.get(u), info.get(t)) << info.key << " = " << text;
+        EXPECT_NEAR(info.get(u), other, 1e-6 * std::max(1.0, std::abs(other))) << info.key; // float fields
+        EXPECT_NE(info.format(u), info.format(defaults)) << info.key;
+        EXPECT_FALSE(u == defaults) << info.key << ": the setter changed nothing";
     }
 }
 
