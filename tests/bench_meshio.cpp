@@ -13,7 +13,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <string>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -101,7 +104,40 @@ void BM_CleanMeshAlone(benchmark::State& state) {
     }
 }
 
+/// Absurd files are refused before they cost anything: a binary STL claiming 2³²−1 triangles, an
+/// OBJ with a 3 MiB line, a 40 000-corner face and three 30 000-corner polygons (the unit tests check
+/// the messages; this, the time, goal ≤ 1 s for all of them).
+void BM_RejectAbsurdFiles(benchmark::State& state) {
+    const fs::path dir = fixture().dir;
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    std::string stl(80, ' ');
+    const uint32_t count = 0xFFFFFFFFu;
+    stl.append(reinterpret_cast<const char*>(&count), 4);
+    stl.append(50, '\0');
+    std::string face = triangle + "f", polygon = "f";
+    for (int i = 0; i < 40000; ++i) face += " 1";
+    for (int i = 0; i < 30000; ++i) polygon += " " + std::to_string(i % 3 + 1);
+    const std::vector<std::pair<std::string, std::string>> files{
+        {"huge.stl", stl},
+        {"longline.obj", triangle + "# " + std::string(3 << 20, 'x') + "\nf 1 2 3\n"},
+        {"bigface.obj", face + "\n"},
+        {"polygons.obj", triangle + polygon + "\n" + polygon + "\n" + polygon + "\n"}};
+    for (const auto& [name, text] : files) {
+        std::FILE* f = std::fopen((dir / name).string().c_str(), "wb");
+        std::fwrite(text.data(), 1, text.size(), f);
+        std::fclose(f);
+    }
+    for (auto _ : state)
+        for (const auto& [name, text] : files) {
+            try {
+                (void)geometry::io::loadModel((dir / name).string());
+                state.SkipWithError(("accepted " + name).c_str());
+            } catch (const std::exception&) {}
+        }
+}
+
 BENCHMARK(BM_OpenMeshReadMesh)->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_RejectAbsurdFiles)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK(BM_LoadModel)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK(BM_CleanMeshAlone)->Unit(benchmark::kMillisecond)->Iterations(5);
 

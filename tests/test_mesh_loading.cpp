@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -253,11 +252,10 @@ TEST_F(MeshLoading, BinaryStlCountDisagreesWithSize) {
     expectRejected(write("tiny.stl", std::string(40, '\x01')), "too small");
 }
 
+// How fast these are refused is bench_meshio's BM_RejectAbsurdFiles (no wall clock in unit tests).
 TEST_F(MeshLoading, AbsurdBinaryStlCountFailsAtOnce) {
     // The count field is 32 bits: 0xFFFFFFFF is the largest claim (4.3e9 triangles, 214 GB).
-    const auto start = std::chrono::steady_clock::now();
     expectRejected(write("huge.stl", binaryStl(tetra(), 0xFFFFFFFFu)), "4294967295 triangles");
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
 }
 
 TEST_F(MeshLoading, BinaryStlWithSolidHeaderAndWrongCount) {
@@ -380,11 +378,10 @@ TEST_F(MeshLoading, PlyAsciiStrayValue) {
 
 TEST_F(MeshLoading, CorruptedFixturesNeverCrashOrHang) {
     // Every prefix length (sampled) and single-byte corruptions of each good fixture either
-    // loads or throws std::runtime_error, and quickly.
+    // loads or throws std::runtime_error (a hang is ctest's timeout; speed is bench_meshio's).
     const std::vector<std::pair<std::string, std::string>> fixtures = {
         {"a.stl", asciiStl(tetra())}, {"b.stl", binaryStl(tetra())}, {"c.obj", kCubeObj},
         {"d.off", kCubeOff},          {"e.ply", kTetraPly},          {"f.ply", binaryTetraPly()}};
-    const auto start = std::chrono::steady_clock::now();
     int loaded = 0, rejected = 0;
     auto attempt = [&](const std::string& name, const std::string& bytes) {
         try {
@@ -407,7 +404,6 @@ TEST_F(MeshLoading, CorruptedFixturesNeverCrashOrHang) {
     }
     EXPECT_GT(loaded, 0);
     EXPECT_GT(rejected, 0);
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
 }
 
 TEST_F(MeshLoading, HeaderWithoutTrailingNewline) {
@@ -517,7 +513,6 @@ TEST_F(MeshLoading, ObjEmptyMaterialLibraryIsRejected) {
 }
 
 TEST_F(MeshLoading, ObjAbsurdSizesFailFast) {
-    const auto start = std::chrono::steady_clock::now();
     expectRejected(write("longline.obj", kObjTriangle + "# " + std::string(3 << 20, 'x') + "\nf 1 2 3\n"),
                    "line 4: line longer than 1048576 bytes");
     std::string bigFace = kObjTriangle + "f";
@@ -528,7 +523,6 @@ TEST_F(MeshLoading, ObjAbsurdSizesFailFast) {
     for (int i = 0; i < 30000; ++i) polygon += " " + std::to_string(i % 3 + 1);
     expectRejected(write("polygons.obj", kObjTriangle + polygon + "\n" + polygon + "\n" + polygon + "\n"),
                    "line 6: too many large polygons");
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
 }
 
 TEST_F(MeshLoading, ObjTypicalCadExportLoads) {
