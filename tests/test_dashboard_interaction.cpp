@@ -9,9 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstring>
-#include <thread>
 
 namespace {
 
@@ -40,7 +38,9 @@ protected:
         geometry::shadow::applyAssignment(o.settings, "shadow_map.resolution=512");
         ui::LoadedScene scene = app::loadDashboardScene(o);
         ui::DashboardState state = app::initialDashboardState(scene, o);
-        d_ = std::make_unique<ui::HeadlessDashboard>(std::move(scene), state, app::dashboardOptions(o), kW, kH);
+        ui::DashboardOptions options = app::dashboardOptions(o);
+        options.clock = [this] { return clock_; }; // the tests advance time themselves: no sleeps
+        d_ = std::make_unique<ui::HeadlessDashboard>(std::move(scene), state, std::move(options), kW, kH);
         (void)d_->render(1);
     }
     ui::Dashboard& dash() { return d_->dashboard(); }
@@ -60,6 +60,7 @@ protected:
     }
     std::unique_ptr<renderer::GlContext> context_;
     std::unique_ptr<ui::HeadlessDashboard> d_;
+    double clock_ = 0; // seconds, the dashboard's clock
 };
 
 TEST_F(DashboardInteraction, HoverAndIdleFramesDrawNoPass) {
@@ -107,7 +108,7 @@ TEST_F(DashboardInteraction, ADragDrawsCoarseFramesThenOneFullFrame) {
     const auto due = dash().nextFrameIn();
     ASSERT_TRUE(due);
     EXPECT_LE(*due, ui::kRefinePause);
-    std::this_thread::sleep_for(std::chrono::milliseconds(int(ui::kRefinePause * 1000) + 30));
+    clock_ += ui::kRefinePause + 0.03; // the input pauses
     for (int i = 0; i < 5; ++i) d_->step({});
     (void)d_->render(1);
     const ui::PassCounts c = dash().passCounts();
@@ -135,7 +136,7 @@ TEST_F(DashboardInteraction, ResetCameraRestoresTheView) {
     const geometry::analysis::Image home = d_->render(1);
     orbit(4, 25.f);
     ASSERT_TRUE(dash().setNearFar(2.f, 300.f));
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    clock_ += 0.2;
     const geometry::analysis::Image moved = d_->render(1);
     EXPECT_GT(differing(home, moved, dash().rects().eye), 1000u);
     dash().resetCamera();

@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -42,6 +43,9 @@ struct DashboardOptions {
     /// Draw both passes at full resolution every frame, as the dashboard did before it drew only what
     /// changed: the "before" of the dashboard benchmark (tests/bench_dashboard.cpp), not a user option.
     bool redrawEveryFrame = false;
+    /// Seconds on a monotonic clock, for the pause after which a coarse frame is refined; empty:
+    /// std::chrono::steady_clock. Tests inject their own and advance it instead of sleeping.
+    std::function<double()> clock;
 };
 
 /// What the window front end reads from its input system for a frame (the dashboard itself
@@ -243,7 +247,8 @@ private:
     geometry::shadow::Viewport eyeSize_{0, 0}; // this frame's full-resolution eye view size
     bool continuousInput_ = false;             // the last frame's input was a drag, the wheel or fly keys
     bool drewThisFrame_ = false;
-    std::chrono::steady_clock::time_point lastChange_{};
+    double lastChange_ = 0; // seconds on now()'s clock
+    [[nodiscard]] double now() const;
     uint64_t nextInspectionSerial_ = 1;
     std::vector<std::future<geometry::analysis::Inspection>> retiring_; // cancelled jobs winding down
     geometry::scene::Camera homeCamera_; // Reset camera: the scene's, or the canonical view last chosen

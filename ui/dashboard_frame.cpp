@@ -10,7 +10,7 @@
 //   [SECTION] Inspection ........... updateInspection, startInspection, pollInspections, abandonInspection,
 //                                    cancelInspections, finishBackgroundWork
 //   [SECTION] Heatmap .............. updateHeatmap
-//   [SECTION] Scheduling ........... backgroundBusy, nextFrameIn
+//   [SECTION] Scheduling ........... backgroundBusy, now, nextFrameIn
 #include "dashboard.h"
 
 #include "geometry/analysis/view_images.h"
@@ -92,7 +92,7 @@ void Dashboard::renderViews() {
     const bool sideBySide = state_.views.compare == CompareMode::SideBySide;
     eyeSize_ = {std::max(16, int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w)),
                 std::max(16, int(eyeArea_.h))};
-    const auto now = Clock::now();
+    const double t = now();
     const int sides = comparing() ? 2 : 1;
     std::array<PassInputs, 2> inputs;
     std::array<bool, 2> changed{};
@@ -105,8 +105,8 @@ void Dashboard::renderViews() {
         changed[i] = !side.drawn || *side.drawn != inputs[i] || options_.redrawEveryFrame;
         anyChanged = anyChanged || changed[i];
     }
-    if (anyChanged) lastChange_ = now;
-    const double since = std::chrono::duration<double>(now - lastChange_).count();
+    if (anyChanged) lastChange_ = t;
+    const double since = t - lastChange_;
     const bool continuous = (continuousInput_ || flying_) && !options_.redrawEveryFrame;
     for (int i = 0; i < sides; ++i) {
         const Draw draw = decideDraw(changed[i], continuous, sides_[i].coarseDivisor > 1, since);
@@ -309,6 +309,11 @@ bool Dashboard::backgroundBusy() const noexcept {
            sweep_.running || recommend_.running;
 }
 
+double Dashboard::now() const {
+    if (options_.clock) return options_.clock();
+    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
 std::optional<double> Dashboard::nextFrameIn() const {
     if (drewThisFrame_) return 0.0; // once more, so the panels' text matches the new images
     const int sides = comparing() ? 2 : 1;
@@ -316,8 +321,7 @@ std::optional<double> Dashboard::nextFrameIn() const {
         if (!sides_[i].drawn || *sides_[i].drawn != passInputs(i)) return 0.0;
     std::optional<double> wait;
     if (coarse()) {
-        const double since = std::chrono::duration<double>(Clock::now() - lastChange_).count();
-        wait = std::max(0.0, kRefinePause - since);
+        wait = std::max(0.0, kRefinePause - (now() - lastChange_));
     }
     if (backgroundBusy()) wait = std::min(wait.value_or(0.05), 0.05);
     return wait;
