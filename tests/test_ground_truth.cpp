@@ -477,17 +477,21 @@ TEST(GroundTruthCoverage, OneSampleIsTheCentreRayAndBadInputsThrow) {
     EXPECT_THROW((void)planeTruth().coverage(vp, 80, 60, glm::vec3(0.f), 2), std::invalid_argument);
 }
 
-// A contact ray ends at its distance: the ground just beside a pole's base is occluded within a
-// metre, a point 2 m down its shadow is not (the pole is 3.5 m along its ray).
-TEST(GroundTruthContact, OccludedWithinStopsAtTheDistance) {
+// A contact ray ends at its distance: the ground just beside a pole's base has its occluder within
+// a metre, a point 2 m down its shadow does not (the pole is 3.5 m along its ray); the distance found
+// is the occluder's.
+TEST(GroundTruthContact, OccluderDistanceStopsAtTheDistance) {
     const glm::vec3 l = glm::normalize(planeScene().light.direction);
     const Pole& pole = planeScenePoles().at(0);
     const glm::vec3 nearBase = pole.base + shadowDir(l) * (pole.radius + 0.02f);
     const glm::vec3 down = pole.base + shadowDir(l) * 2.f;
-    const auto within = planeTruth().occludedWithin({nearBase, down, down}, {kUp, kUp, kUp}, l, {1.f, 1.f, 100.f});
-    EXPECT_EQ(within, (std::vector<uint8_t>{1, 0, 1}));
-    EXPECT_EQ(planeTruth().occludedWithin({nearBase}, {kUp}, l, {kNaN}).at(0), 0);
-    EXPECT_THROW((void)planeTruth().occludedWithin({nearBase}, {kUp}, l, {}), std::invalid_argument);
+    const auto d = planeTruth().occluderDistance({nearBase, down, down}, {kUp, kUp, kUp}, l, {1.f, 1.f, 100.f});
+    EXPECT_LT(d.at(0), 1.f);
+    EXPECT_TRUE(std::isinf(d.at(1)));
+    EXPECT_GT(d.at(2), 1.f);
+    EXPECT_LT(d.at(2), 100.f);
+    EXPECT_TRUE(std::isinf(planeTruth().occluderDistance({nearBase}, {kUp}, l, {kNaN}).at(0)));
+    EXPECT_THROW((void)planeTruth().occluderDistance({nearBase}, {kUp}, l, {}), std::invalid_argument);
 }
 
 TEST(GroundTruthEmpty, NothingOccludesAndNothingIsSeen) {
@@ -751,7 +755,7 @@ TEST(GroundTruthCancel, AStopRequestedBeforeTheCallThrowsCancelled) {
     source.request_stop();
     const std::stop_token stop = source.get_token();
     EXPECT_THROW((void)truth.occluded(hits.points, hits.normals, l, 0, stop), Cancelled);
-    EXPECT_THROW((void)truth.occludedWithin(hits.points, hits.normals, l, reach, 0, stop), Cancelled);
+    EXPECT_THROW((void)truth.occluderDistance(hits.points, hits.normals, l, reach, 0, stop), Cancelled);
     std::vector<int> meshes;
     EXPECT_THROW((void)truth.surfaceNormals(scene.camera.eye, hits.points, hits.normals, 0, &meshes, stop), Cancelled);
     EXPECT_THROW((void)truth.coverage(platformViewProj(64, 36), 64, 36, l, 2, 0, stop), Cancelled);
@@ -801,8 +805,8 @@ TEST(GroundTruthCancel, ANeverStoppedTokenGivesTheSameResults) {
 
     std::vector<float> reach(hits.points.size());
     for (size_t i = 0; i < reach.size(); ++i) reach[i] = 0.05f * float(i % 40);
-    const auto within = truth.occludedWithin(hits.points, normals, l, reach);
-    EXPECT_EQ(truth.occludedWithin(hits.points, normals, l, reach, 0, live), within);
+    const auto within = truth.occluderDistance(hits.points, normals, l, reach);
+    EXPECT_EQ(truth.occluderDistance(hits.points, normals, l, reach, 0, live), within);
 
     const glm::mat4 vp = platformViewProj(160, 90);
     const auto c = truth.coverage(vp, 160, 90, l, 4);

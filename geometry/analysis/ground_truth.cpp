@@ -329,37 +329,38 @@ float GroundTruth::epsilon(const glm::vec3& p) const noexcept {
 
 namespace {
 
+/// Lane i of `ray` as occluded()'s shadow ray for point idx: from the point moved epsilon(p) off the
+/// surface on the light's side, towards the light, hits closer than epsilon ignored, up to `reach`.
+/// False, the lane idle, where the point or its normal is unusable or `reach` does not clear epsilon
+/// (NaN included: nothing can lie in between).
+template <class Ray>
+bool setShadowLane(Ray& ray, int i, const GroundTruth& truth, size_t idx, const std::vector<glm::vec3>& points,
+                   const std::vector<glm::vec3>& normals, const glm::vec3& toLight, float reach) noexcept {
+    const glm::vec3 p = idx != kNoPoint ? points[idx] : glm::vec3(0.f);
+    const glm::vec3 n = idx != kNoPoint ? normals[idx] : glm::vec3(0.f);
+    const float len = glm::length(n);
+    const float eps = truth.epsilon(p);
+    if (idx == kNoPoint || !finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len) || !(reach > eps)) {
+        setIdleLane(ray, i);
+        return false;
+    }
+    const glm::vec3 side = glm::dot(n, toLight) > 0.f ? n : -n; // the light's side of the surface
+    setLane(ray, i, p + side * (eps / len), toLight, eps, reach);
+    return true;
+}
+
 /// One rtcOccluded16 per packet: 2.6× faster than rtcOccluded1 ray by ray on AVX-512.
 std::vector<uint8_t> traceOccluded(const GroundTruth& truth, RTCScene scene, const RunLayout& layout,
                                    const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                                   const glm::vec3& l, int threads, const std::stop_token& stop,
-                                   const std::vector<float>* maxDistance = nullptr) {
+                                   const glm::vec3& l, int threads, const std::stop_token& stop) {
     std::vector<uint8_t> result(points.size(), 0);
     const glm::vec3 toLight = -glm::normalize(l);
     forEachPacket(layout, threads, stop, [&](const Lanes& lanes) {
         RTCRay16 ray;
         alignas(64) std::array<int, kLanes> valid{};
         bool any = false;
-        for (int i = 0; i < kLanes; ++i) {
-            const size_t idx = lanes[i];
-            const glm::vec3 p = idx != kNoPoint ? points[idx] : glm::vec3(0.f);
-            const glm::vec3 n = idx != kNoPoint ? normals[idx] : glm::vec3(0.f);
-            const float len = glm::length(n);
-            if (!finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len)) {
-                setIdleLane(ray, i);
-                continue;
-            }
-            const float eps = truth.epsilon(p);
-            const float reach = maxDistance ? (*maxDistance)[idx] : kInf;
-            if (!(reach > eps)) { // NaN or too short to leave the surface: nothing can lie in between
-                setIdleLane(ray, i);
-                continue;
-            }
-            const glm::vec3 side = glm::dot(n, toLight) > 0.f ? n : -n; // the light's side of the surface
-            setLane(ray, i, p + side * (eps / len), toLight, eps, reach);
-            valid[i] = -1;
-            any = true;
-        }
+        for (int i = 0; i < kLanes; ++i)
+            if (setShadowLane(ray, i, truth, lanes[i], points, normals, toLight, kInf)) valid[i] = -1, any = true;
         if (!any) return;
         RTCIntersectContext ctx = coherentContext();
         rtcOccluded16(valid.data(), scene, &ctx, &ray);
@@ -380,21 +381,6 @@ std::vector<uint8_t> GroundTruth::occluded(const std::vector<glm::vec3>& points,
     return result;
 }
 
-std::vector<uint8_t> GroundTruth::occludedWithin(const std::vector<glm::vec3>& points,
-                                                 const std::vector<glm::vec3>& normals, const glm::vec3& l,
-                                                 const std::vector<float>& maxDistance, int threads,
-                                                 std::stop_token stop) const {
-    checkInputs(points, normals, l);
-    if (maxDistance.size() != points.size())
-        throw std::invalid_argument("GroundTruth::occludedWithin: " + std::to_string(points.size()) + " points but " +
-                                    std::to_string(maxDistance.size()) + " distances");
-    if (!impl_) throw std::logic_error("GroundTruth::occludedWithin on a moved-from object");
-    auto result =
-        traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads, stop, &maxDistance);
-    impl_->throwIfError("tracing contact rays");
-    return result;
-}
-
 std::vector<float> GroundTruth::occluderDistance(const std::vector<glm::vec3>& points,
                                                  const std::vector<glm::vec3>& normals, const glm::vec3& l,
                                                  const std::vector<float>& maxDistance, int threads,
@@ -406,24 +392,14 @@ std::vector<float> GroundTruth::occluderDistance(const std::vector<glm::vec3>& p
     if (!impl_) throw std::logic_error("GroundTruth::occluderDistance on a moved-from object");
     std::vector<float> out(points.size(), kInf);
     const glm::vec3 toLight = -glm::normalize(l);
-    // The rays of traceOccluded (same origin, same ignored distance), intersected for their hit.
+    // occluded()'s rays, each ending at its distance, intersected for their hit.
     forEachPacket(RunLayout{points.size()}, threads, stop, [&](const Lanes& lanes) {
         RTCRayHit16 rh;
         alignas(64) std::array<int, kLanes> valid{};
         bool any = false;
         for (int i = 0; i < kLanes; ++i) {
-            const size_t idx = lanes[i];
-            const glm::vec3 p = idx != kNoPoint ? points[idx] : glm::vec3(0.f);
-            const glm::vec3 n = idx != kNoPoint ? normals[idx] : glm::vec3(0.f);
-            const float len = glm::length(n);
-            const float eps = epsilon(p);
-            const float reach = idx != kNoPoint ? maxDistance[idx] : 0.f;
-            if (!finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len) || !(reach > eps)) {
-                setIdleLane(rh.ray, i);
-                continue;
-            }
-            const glm::vec3 side = glm::dot(n, toLight) > 0.f ? n : -n;
-            setLane(rh.ray, i, p + side * (eps / len), toLight, eps, reach);
+            const float reach = lanes[i] != kNoPoint ? maxDistance[lanes[i]] : 0.f;
+            if (!setShadowLane(rh.ray, i, *this, lanes[i], points, normals, toLight, reach)) continue;
             rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
             valid[i] = -1;
             any = true;

@@ -71,18 +71,10 @@ public:
                                                         std::vector<int>* meshes = nullptr,
                                                         std::stop_token stop = {}) const;
 
-    /// occluded(), with each ray ending maxDistance[i] from its point: 1 where something lies
-    /// between the surface and that distance towards the light (a contact). A distance not above
-    /// epsilon(p), or NaN, gives 0. Throws std::invalid_argument as occluded(), or when the sizes differ;
-    /// Cancelled as occluded().
-    [[nodiscard]] std::vector<uint8_t> occludedWithin(const std::vector<glm::vec3>& points,
-                                                      const std::vector<glm::vec3>& normals, const glm::vec3& l,
-                                                      const std::vector<float>& maxDistance, int threads = 0,
-                                                      std::stop_token stop = {}) const;
-
     /// The distance along the light from each point to the first triangle between it and
-    /// maxDistance[i] (the rays of occludedWithin); +∞ where nothing lies that close, and where the
-    /// input is not traced (as occludedWithin). Throws as occludedWithin.
+    /// maxDistance[i] (occluded()'s rays, each ending there); +∞ where nothing lies that close, and
+    /// where a point is not traced (as occluded(), or its distance not above epsilon(p), or NaN).
+    /// Throws std::invalid_argument as occluded(), or when the sizes differ; Cancelled as occluded().
     [[nodiscard]] std::vector<float> occluderDistance(const std::vector<glm::vec3>& points,
                                                       const std::vector<glm::vec3>& normals, const glm::vec3& l,
                                                       const std::vector<float>& maxDistance, int threads = 0,
