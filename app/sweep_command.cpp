@@ -36,7 +36,7 @@ void addThresholdOptions(CLI::App& cmd, SweepThresholds& t) {
 
 std::string methodList() {
     std::string s;
-    for (int m = 0; m <= int(geometry::shadow::WarpMethod::Manual); ++m)
+    for (int m = 0; m < int(geometry::shadow::kEnumCount<geometry::shadow::WarpMethod>); ++m)
         s += (s.empty() ? "" : ", ") + std::string(geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)));
     return s;
 }

@@ -22,11 +22,11 @@ namespace app {
 namespace {
 
 geometry::shadow::WarpMethod parseMethod(const std::string& name) {
-    for (int m = 0; m <= int(geometry::shadow::WarpMethod::Manual); ++m)
+    for (int m = 0; m < int(geometry::shadow::kEnumCount<geometry::shadow::WarpMethod>); ++m)
         if (geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)) == name)
             return geometry::shadow::WarpMethod(m);
     std::string list;
-    for (int m = 0; m <= int(geometry::shadow::WarpMethod::Manual); ++m)
+    for (int m = 0; m < int(geometry::shadow::kEnumCount<geometry::shadow::WarpMethod>); ++m)
         list +=
             (list.empty() ? "" : ", ") + std::string(geometry::shadow::warpMethodName(geometry::shadow::WarpMethod(m)));
     throw std::invalid_argument("--methods: unknown warp method '" + name + "' (expected " + list + ")");

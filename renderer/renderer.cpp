@@ -1,6 +1,7 @@
 // Index
 //   [SECTION] GL helpers ................ makeSampler, bindTexture, needsPeeling
 //   [SECTION] Set-up and shared state ... Renderer, ~Renderer, setScene, warnOnce, depthProgram, uploadShadowBlock
+//                                         (the shadow and settings blocks)
 //   [SECTION] The frame ................. render, eyeSamples, waitForTimings
 //   [SECTION] Shadow maps ............... drawCasters, shadowPass, peelAndCombine, momentsPass
 //   [SECTION] Eye view .................. depthPrePass, eyePass, eyeBlurAndCompose
@@ -50,13 +51,13 @@ void bindTexture(int unit, GLenum target, GLuint texture, GLuint sampler) {
 }
 
 bool needsPeeling(const geometry::shadow::ShadowPlan& plan) {
-    return plan.bias.type == BiasType::Midpoint || plan.bias.type == BiasType::DualDepth;
+    return plan.settings.bias.type == BiasType::Midpoint || plan.settings.bias.type == BiasType::DualDepth;
 }
 
 /// The moments of linear depth 1 (nothing between the light and the far end), as depth.frag's
 /// MOMENTS variant would write them for each filter.
 std::array<float, 4> emptyTexelMoments(const geometry::shadow::ShadowPlan& plan) noexcept {
-    const auto& f = plan.filter;
+    const auto& f = plan.settings.filter;
     switch (f.type) {
     case FilterType::Esm: return {std::exp(f.esmExponent), 0.f, 0.f, 0.f};
     case FilterType::Evsm2:
@@ -77,6 +78,10 @@ Renderer::Renderer(const geometry::scene::Scene& scene, RendererLimits limits)
     glGenBuffers(1, &shadowBlockBuffer_);
     glBindBuffer(GL_UNIFORM_BUFFER, shadowBlockBuffer_);
     glBufferData(GL_UNIFORM_BUFFER, sizeof(ShadowBlock), nullptr, GL_DYNAMIC_DRAW);
+    glGenBuffers(1, &settingsBlockBuffer_);
+    glBindBuffer(GL_UNIFORM_BUFFER, settingsBlockBuffer_);
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(settingsBlockWords({}).size() * sizeof(std::uint32_t)), nullptr,
+                 GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     nearestSampler_ = makeSampler(GL_NEAREST, false);
     compareSampler_ = makeSampler(GL_LINEAR, true);
@@ -87,6 +92,7 @@ Renderer::Renderer(const geometry::scene::Scene& scene, RendererLimits limits)
 Renderer::~Renderer() {
     glDeleteVertexArrays(1, &emptyVao_);
     glDeleteBuffers(1, &shadowBlockBuffer_);
+    glDeleteBuffers(1, &settingsBlockBuffer_);
     const GLuint samplers[] = {nearestSampler_, compareSampler_, linearSampler_};
     glDeleteSamplers(3, samplers);
 }
@@ -133,8 +139,12 @@ void Renderer::uploadShadowBlock(const geometry::shadow::ShadowPlan& plan) {
     const ShadowBlock block = shadowBlock(plan, firstDepth_.resolution());
     glBindBuffer(GL_UNIFORM_BUFFER, shadowBlockBuffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
+    const std::vector<std::uint32_t> words = settingsBlockWords(plan.settings);
+    glBindBuffer(GL_UNIFORM_BUFFER, settingsBlockBuffer_);
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, GLsizeiptr(words.size() * sizeof words[0]), words.data());
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlockBuffer_);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kSettingsBlockBinding, settingsBlockBuffer_);
 }
 
 // ---- [SECTION] The frame --------------------------------------------------------------------
@@ -243,7 +253,7 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
     }
     // Depth arrays (one, or three when peeling) and the moments (map and blur target, 32-bit float
     // each): halve until they fit the budget.
-    const int moments = geometry::shadow::momentCount(plan.filter.type);
+    const int moments = geometry::shadow::momentCount(plan.settings.filter.type);
     const double bytesPerTexel = moments > 0 ? 4.0 + 2.0 * 4.0 * moments : (needsPeeling(plan) ? 12.0 : 4.0);
     const int requested = resolution;
     while (resolution > 16 && double(resolution) * resolution * layers * bytesPerTexel > limits_.shadowMemoryBytes)
@@ -278,7 +288,7 @@ void Renderer::shadowPass(const geometry::shadow::ShadowPlan& plan) {
         firstDepth_.bindLayer(i, splitResolution(split));
         glClear(GL_DEPTH_BUFFER_BIT);
         if (split.empty()) continue;
-        drawCasters(plan, i, program, plan.bias.type == BiasType::SecondDepth);
+        drawCasters(plan, i, program, plan.settings.bias.type == BiasType::SecondDepth);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
@@ -322,7 +332,7 @@ void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
 void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
     const int layers = firstDepth_.layers(), res = firstDepth_.resolution();
     const GLenum formats[] = {GL_R32F, GL_R32F, GL_RG32F, GL_RGBA32F, GL_RGBA32F}; // by moment count
-    const GLenum format = formats[std::clamp(geometry::shadow::momentCount(plan.filter.type), 0, 4)];
+    const GLenum format = formats[std::clamp(geometry::shadow::momentCount(plan.settings.filter.type), 0, 4)];
     moments_.ensure(res, layers, format, true);
     momentsTemp_.ensure(res, layers, format, false);
     Program& program = depthProgram("#define MOMENTS\n");
@@ -337,7 +347,7 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
         drawCasters(plan, i, program, false);
     }
     glDisable(GL_CULL_FACE);
-    const int radius = plan.filter.kernel / 2;
+    const int radius = plan.settings.filter.kernel / 2;
     if (radius > 0) {
         glDisable(GL_DEPTH_TEST);
         momentsBlurProgram_.use();
@@ -415,7 +425,7 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
     glDepthMask(prepassDrawn_ ? GL_FALSE : GL_TRUE);
     eyeProgram_.use();
     eyeProgram_.set("uViewProj", viewProj);
-    const auto& f = plan.filter;
+    const auto& f = plan.settings.filter;
     bindTexture(0, GL_TEXTURE_2D_ARRAY, sampledDepth_, nearestSampler_);
     bindTexture(1, GL_TEXTURE_2D_ARRAY, sampledDepth_, compareSampler_);
     bindTexture(2, GL_TEXTURE_2D_ARRAY, geometry::shadow::isMomentFilter(f.type) ? moments_.colourTexture() : 0,
@@ -436,13 +446,13 @@ void Renderer::eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan) {
     glDisable(GL_DEPTH_TEST);
     GLuint mask = eyeBuffers().texture(EyeBuffers::Mask);
     const int w = eyeBuffers().width(), h = eyeBuffers().height();
-    if (plan.filter.eyeBlurIterations > 0) {
+    if (plan.settings.filter.eyeBlurIterations > 0) {
         eyeBlurProgram_.use();
         eyeBlurProgram_.set("uMask", 0);
         eyeBlurProgram_.set("uBase", 1);
         bindTexture(1, GL_TEXTURE_2D, eyeBuffers().texture(EyeBuffers::Base), nearestSampler_);
         int target = 0;
-        for (int it = 0; it < plan.filter.eyeBlurIterations; ++it)
+        for (int it = 0; it < plan.settings.filter.eyeBlurIterations; ++it)
             for (const glm::vec2 step : {glm::vec2(1.f / w, 0.f), glm::vec2(0.f, 1.f / h)}) {
                 eyeBuffers().bindBlur(target);
                 bindTexture(0, GL_TEXTURE_2D, mask, linearSampler_);

@@ -10,6 +10,7 @@
 #include "program.h"
 #include "render_targets.h"
 #include "sample_reduction.h"
+#include "settings_block.h"
 #include "shadow_block.h"
 #include "shadow_map_key.h"
 
@@ -152,7 +153,8 @@ private:
     Program unlitProgram_{"eye.vert", "unlit.frag"};
     LineRenderer lines_;
     GLuint emptyVao_ = 0;
-    GLuint shadowBlockBuffer_ = 0; // ShadowBlock (renderer/shadow_block.h), bound at kShadowBlockBinding
+    GLuint shadowBlockBuffer_ = 0;   // ShadowBlock (renderer/shadow_block.h), bound at kShadowBlockBinding
+    GLuint settingsBlockBuffer_ = 0; // settingsBlockWords (renderer/settings_block.h), at kSettingsBlockBinding
     GLuint nearestSampler_ = 0, compareSampler_ = 0, linearSampler_ = 0;
     GLint maxTextureSize_ = 0;
     RendererLimits limits_;

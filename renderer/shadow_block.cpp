@@ -22,30 +22,16 @@ ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResol
         s.lookupShiftY = split.lookupShift.y;
         s.blendStart = split.blendStart;
     }
-    const auto& bias = plan.bias;
-    const auto& filter = plan.filter;
     b.lightDir = plan.l;
     b.splitCount = count;
     b.eye = glm::vec3(glm::inverse(plan.eyeView)[3]); // where the eye matrices put the camera
     b.arrayResolution = arrayResolution;
     b.viewDir = plan.v;
-    b.biasType = static_cast<int>(bias.type);
     b.receiverOffset = plan.receiverOffset;
     b.normalOffset = plan.normalOffsetTexels;
-    b.diskRadius = filter.radius;
-    b.bleedReduction = filter.bleedReduction;
-    b.filterType = static_cast<int>(filter.type);
-    b.kernel = filter.kernel;
-    b.taps = filter.taps;
     b.linearDepth = plan.linearDepth ? 1 : 0;
-    b.tangentPlane = bias.tangentPlane ? 1 : 0;
-    b.eyeBlurFalloff = filter.eyeBlurFalloff;
     b.slopeBias = plan.polygonOffset;
-    b.sunTanHalfAngle = float(std::tan(glm::radians(double(plan.light.angularDiameterDeg)) * 0.5));
-    b.pcssMaxRadius = filter.pcssMaxRadius;
-    b.esmExponent = filter.esmExponent;
-    b.momentBias = filter.momentBias;
-    b.evsmExponents = {filter.evsmPositive, filter.evsmNegative};
+    b.sunTanHalfAngle = float(std::tan(glm::radians(double(plan.settings.light.angularDiameterDeg)) * 0.5));
     return b;
 }
 

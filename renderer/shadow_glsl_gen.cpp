@@ -1,18 +1,18 @@
 // Build-time generator: writes the GLSL that every shader includes as "shadow_block.glsl" — the
-// enum values and the split limit from the C++ declarations (geometry/shadow), and the uniform block
-// from renderer/shadow_block.inc — as a C++ source holding that text (renderer::kShadowBlockGlsl).
+// limits, every setting enum's constants (BIAS_CONSTANT, FILTER_PCF, …) and the settings block from
+// the settings declaration (geometry/shadow/settings.h), and the shadow block from
+// renderer/shadow_block.inc — as a C++ source holding that text (renderer::kShadowBlockGlsl).
 // Usage: shadow_glsl_gen OUTPUT.cpp
 #include "geometry/shadow/sample_bounds.h"
 #include "geometry/shadow/settings.h"
+#include "renderer/settings_block.h"
 #include "renderer/shadow_block.h"
 
 #include <cctype>
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <stdexcept>
 #include <string>
-#include <utility>
 
 namespace {
 
@@ -25,17 +25,20 @@ std::string upper(std::string_view name) {
 
 std::string glsl() {
     std::ostringstream out;
-    out << "// Generated at build time from geometry/shadow (settings and kMaxSplits) and renderer/shadow_block.inc.\n";
+    out << "// Generated at build time from geometry/shadow/settings.h (enums, settings) and "
+           "renderer/shadow_block.inc.\n";
     out << "const int MAX_SPLITS = " << geometry::shadow::kMaxSplits << ";\n";
     out << "const int SAMPLE_BINS = " << geometry::shadow::kSampleBins << ";\n";
     out << "const int SAMPLE_DIRECTIONS = " << geometry::shadow::kSampleDirections << ";\n";
-    // Enum values by their settings names, in declaration order (= the C++ enum's values).
-    for (const auto& [key, prefix] : {std::pair{"bias.type", "BIAS_"}, std::pair{"filter.type", "FILTER_"}}) {
-        const auto* info = geometry::shadow::findSetting(key);
-        if (!info) throw std::logic_error(std::string("no setting ") + key);
-        for (size_t i = 0; i < info->choices.size(); ++i)
-            out << "const int " << prefix << upper(info->choices[i]) << " = " << i << ";\n";
-    }
+    // Every choice's values by their names, in declaration order (= the C++ enum's values).
+    const auto& rows = geometry::shadow::settingsDeclaration();
+    for (const auto& info : rows)
+        for (size_t i = 0; i < info.choices.size(); ++i)
+            out << "const int " << info.glslPrefix << upper(info.choices[i]) << " = " << i << ";\n";
+    // Every setting as the user set it, one scalar each (renderer/settings_block.h).
+    out << "layout(std140, binding = " << renderer::kSettingsBlockBinding << ") uniform SettingsBlock {\n";
+    for (const auto& info : rows) out << "    " << renderer::settingGlslType(info) << " " << info.glslName() << ";\n";
+    out << "} settings;\n";
     out << "struct ShadowSplit {\n";
 #define SHADOW_SPLIT_FIELD(glslType, cpp, name) out << "    " #glslType " " #name ";\n";
 #include "renderer/shadow_block.inc"

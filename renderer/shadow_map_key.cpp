@@ -10,15 +10,11 @@ ShadowMapKey shadowMapKey(const geometry::shadow::ShadowPlan& plan) {
             {s.lightViewProj, s.resolution, s.empty(), {s.linearDepthRange.x, s.linearDepthScale}, s.dualDepthCap});
     k.l = plan.l;
     k.polygonOffset = plan.polygonOffset;
-    k.biasType = static_cast<int>(plan.bias.type);
     k.linearZ = plan.linearDepth;
-    if (geometry::shadow::isMomentFilter(plan.filter.type)) {
-        k.momentFilter = static_cast<int>(plan.filter.type);
-        k.momentsKernel = plan.filter.kernel;
-        k.momentExponents = {plan.filter.esmExponent, plan.filter.evsmPositive, plan.filter.evsmNegative};
-    }
-    k.casterLodTexels = plan.casterLodTexels;
     if (plan.casterLodTexels > 0.f) k.lodEye = plan.eye;
+    const auto& rows = geometry::shadow::settingsDeclaration();
+    for (size_t i = 0; i < rows.size(); ++i)
+        if (rows[i].drawsMaps(plan.settings)) k.mapSettings.emplace_back(int(i), rows[i].get(plan.settings));
     return k;
 }
 

@@ -1,11 +1,13 @@
 #pragma once
 // What the shadow-map passes read from a plan, as one comparable value: two plans with equal keys
 // draw identical maps, so a renderer may keep the maps it drew last (ViewOptions::reuseShadowMaps)
-// when only eye-side values changed (filter taps, receiver and normal offsets, blend bands).
+// when only eye-side values changed (filter taps, receiver and normal offsets, PCSS's sun). The
+// settings it covers are those whose declaration says so (geometry/shadow/settings.h).
 #include "geometry/shadow/shadow_plan.h"
 
 #include <glm/glm.hpp>
 
+#include <utility>
 #include <vector>
 
 namespace renderer {
@@ -22,13 +24,11 @@ struct ShadowMapKey {
     std::vector<Split> splits;
     glm::vec3 l{0.f};
     glm::vec2 polygonOffset{0.f};
-    int biasType = 0; // second depth, midpoint and dual depth draw other faces or peel
-    bool linearZ = false;
-    int momentFilter = -1;          // the moment filter (FilterType) whose moments pass and blur ran; −1: none
-    int momentsKernel = 0;          // its blur width
-    glm::vec3 momentExponents{0.f}; // esm c, evsm c+ and c− (the moments depend on them)
-    float casterLodTexels = 0;      // the caster levels chosen per chunk…
-    glm::vec3 lodEye{0.f};          // …measure their texels from the eye (caster_detail.h)
+    bool linearZ = false;  // the plan's choice (linear z, moments, PCSS)
+    glm::vec3 lodEye{0.f}; // casters.lod = auto measures its texels from the eye (caster_detail.h)
+    /// (row, value) for every setting whose row says the maps depend on it and that applies
+    /// (SettingInfo::drawsMaps): derived from the declaration, never listed here by hand.
+    std::vector<std::pair<int, double>> mapSettings;
     [[nodiscard]] bool operator==(const ShadowMapKey&) const = default;
 };
 

@@ -119,3 +119,51 @@ TEST(Settings, FrustumValidationNamesTheKey) {
     EXPECT_EQ(message(1, INFINITY, 60).rfind("far", 0), 0u);
     EXPECT_EQ(message(1, 100, 180).rfind("fov-y", 0), 0u);
 }
+
+// The enum tables are checked at compile time (named_enum.h): a table out of order, short of a
+// value or with a repeated name is caught by the same check every declared enum passes.
+namespace geometry::shadow {
+enum class MisorderedEnum { A, B };
+template <> struct EnumDeclaration<MisorderedEnum> {
+    static constexpr std::string_view glslPrefix = "X_";
+    static constexpr std::array entries{EnumEntry<MisorderedEnum>{MisorderedEnum::B, "b", ""},
+                                        EnumEntry<MisorderedEnum>{MisorderedEnum::A, "a", ""}};
+};
+enum class RepeatedNameEnum { A, B };
+template <> struct EnumDeclaration<RepeatedNameEnum> {
+    static constexpr std::string_view glslPrefix = "Y_";
+    static constexpr std::array entries{EnumEntry<RepeatedNameEnum>{RepeatedNameEnum::A, "a", ""},
+                                        EnumEntry<RepeatedNameEnum>{RepeatedNameEnum::B, "a", ""}};
+};
+static_assert(!enumTableConsistent<MisorderedEnum>());
+static_assert(!enumTableConsistent<RepeatedNameEnum>());
+static_assert(kEnumCount<FilterType> == 10 && enumName(FilterType::Msm) == "msm");
+static_assert(enumName(BiasType::ReceiverPlane) == "receiver_plane" && enumName(BiasType(99)) == "?");
+} // namespace geometry::shadow
+
+// Every choice row lists its enum's names in order, and its help names each of them.
+TEST(Settings, ChoicesAreTheirEnumsNames) {
+    const auto names = [](auto entries) {
+        std::vector<std::string_view> out;
+        for (const auto& e : entries) out.push_back(e.name);
+        return out;
+    };
+    EXPECT_EQ(findSetting("bias.type")->choices, names(kEnumEntries<BiasType>));
+    EXPECT_EQ(findSetting("filter.type")->choices, names(kEnumEntries<FilterType>));
+    EXPECT_EQ(findSetting("warp.method")->choices, names(kEnumEntries<WarpMethod>));
+    EXPECT_EQ(findSetting("splits.scheme")->choices, names(kEnumEntries<SplitScheme>));
+    for (const auto& info : settingsDeclaration())
+        for (const auto name : info.choices)
+            EXPECT_NE(info.help.find(std::string(name)), std::string::npos) << info.key << ": " << name;
+}
+
+// A row's `when` names a declared setting (the "has no effect" warning and the tooltip quote it).
+TEST(Settings, EveryConditionNamesADeclaredSetting) {
+    for (const auto& info : settingsDeclaration()) {
+        if (!info.appliesWhen) {
+            EXPECT_TRUE(info.governedBy.empty()) << info.key;
+            continue;
+        }
+        EXPECT_NE(findSetting(info.governedBy), nullptr) << info.key << " names " << info.governedBy;
+    }
+}

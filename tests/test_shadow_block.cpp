@@ -1,13 +1,16 @@
-// The shadow uniform block: the C++ struct and the generated GLSL block agree on every offset (as GL
-// reports them), and shadowBlock() copies the plan's values without deciding anything itself.
+// The shadow and settings uniform blocks: the C++ side and the generated GLSL blocks agree on every
+// offset (as GL reports them), shadowBlock() copies the plan's values without deciding anything
+// itself, and settingsBlockWords() holds every declared setting as set.
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/shadow/shadow_plan.h"
 #include "renderer/context.h"
 #include "renderer/program.h"
+#include "renderer/settings_block.h"
 #include "renderer/shadow_block.h"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <string>
 
 namespace {
@@ -77,9 +80,6 @@ TEST(ShadowBlock, CopiesThePlanAsItIs) {
     const ShadowBlock b = renderer::shadowBlock(plan, 1024);
     EXPECT_EQ(b.splitCount, 3);
     EXPECT_EQ(b.arrayResolution, 1024);
-    EXPECT_EQ(b.biasType, int(BiasType::DualDepth));
-    EXPECT_EQ(b.filterType, int(FilterType::Pcf));
-    EXPECT_EQ(b.kernel, 5);
     EXPECT_EQ(b.linearDepth, 1);
     EXPECT_EQ(b.slopeBias, glm::vec2(0.f)); // slope bias only with bias.type = slope
     for (int i = 0; i < 3; ++i) {
@@ -98,4 +98,42 @@ TEST(ShadowBlock, CopiesThePlanAsItIs) {
     EXPECT_FLOAT_EQ(renderer::shadowBlock(plan, 512).splits[0].mapScale, 1.f);
     EXPECT_FLOAT_EQ(renderer::shadowBlock(plan, 512).splits[1].mapScale, 1.f);
     EXPECT_FLOAT_EQ(renderer::shadowBlock(plan, 512).splits[2].mapScale, 0.5f);
+}
+
+TEST(SettingsBlock, EveryDeclaredSettingIsAtItsOffsetInTheGlslBlock) {
+    auto context = renderer::createOSMesaContext();
+    renderer::Program eye("eye.vert", "eye.frag");
+    const auto& rows = geometry::shadow::settingsDeclaration();
+    for (size_t i = 0; i < rows.size(); ++i)
+        EXPECT_EQ(glOffset(eye.id(), "SettingsBlock." + rows[i].glslName()), GLint(4 * i)) << rows[i].key;
+    const GLuint block = glGetProgramResourceIndex(eye.id(), GL_UNIFORM_BLOCK, "SettingsBlock");
+    ASSERT_NE(block, GL_INVALID_INDEX);
+    const GLenum prop = GL_BUFFER_DATA_SIZE;
+    GLint size = 0;
+    glGetProgramResourceiv(eye.id(), GL_UNIFORM_BLOCK, block, 1, &prop, 1, nullptr, &size);
+    EXPECT_EQ(size, GLint(renderer::settingsBlockWords({}).size() * 4));
+    EXPECT_EQ(renderer::takeGlErrors(), "");
+}
+
+TEST(SettingsBlock, WordsHoldEveryValueAsSet) {
+    using namespace geometry::shadow;
+    ShadowSettings s;
+    applyAssignment(s, "bias.type=dual_depth");
+    applyAssignment(s, "filter.kernel=7");
+    applyAssignment(s, "filter.radius=3.5");
+    applyAssignment(s, "bias.tangent_plane=true");
+    const auto words = renderer::settingsBlockWords(s);
+    const auto word = [&](std::string_view key) {
+        const auto& rows = settingsDeclaration();
+        for (size_t i = 0; i < rows.size(); ++i)
+            if (rows[i].key == key) return words.at(i);
+        ADD_FAILURE() << key;
+        return 0u;
+    };
+    EXPECT_EQ(word("bias.type"), unsigned(BiasType::DualDepth));
+    EXPECT_EQ(word("filter.kernel"), 7u);
+    EXPECT_EQ(std::bit_cast<float>(word("filter.radius")), 3.5f);
+    EXPECT_EQ(word("bias.tangent_plane"), 1u);
+    EXPECT_EQ(word("bias.linear_z"), 0u);
+    EXPECT_EQ(words.size() % 4, 0u);
 }

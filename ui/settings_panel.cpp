@@ -21,6 +21,9 @@ bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGr
         const std::string label(info.key);
         double value = info.get(settings);
         bool edited = false;
+        // Greyed, and closed to input, while the other settings make it inert (its row's `when`).
+        const bool applies = info.appliesTo(settings);
+        if (!applies) ImGui::BeginDisabled();
         switch (info.kind) {
         case Kind::Bool: {
             bool b = value != 0.0;
@@ -77,9 +80,14 @@ bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGr
             }
             typed.erase(it);
         }
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s\n%s (ctrl+click to type a value)", std::string(info.help).c_str(),
-                              info.rangeText().c_str());
+        if (!applies) ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+            std::string inert;
+            if (const auto* by = applies ? nullptr : geometry::shadow::findSetting(info.governedBy))
+                inert = "\nNo effect with " + std::string(info.governedBy) + " = " + by->format(settings);
+            ImGui::SetTooltip("%s\n%s (ctrl+click to type a value)%s", info.help.c_str(), info.rangeText().c_str(),
+                              inert.c_str());
+        }
         if (!edited) continue;
         if (std::isfinite(value) && value >= info.min && value <= info.max) {
             info.set(settings, value);

@@ -21,7 +21,7 @@ constexpr size_t kPixelsPerStopCheck = 4096;
 void addSoftTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, std::stop_token stop) {
     in.sunVisibility.clear();
     in.softTruth.reset();
-    const float diameterDeg = plan.light.angularDiameterDeg;
+    const float diameterDeg = plan.settings.light.angularDiameterDeg;
     if (!(diameterDeg > 0.f)) return;
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const double theta = double(diameterDeg) * std::numbers::pi / 180.0;

@@ -52,7 +52,7 @@ struct Inspection {
     // With truth at N > 1 samples per axis and the samples drawn (FrameReadback::sampleShadow): the
     // rendered s at the truth's N × N positions per pixel, (width·N) wide; NaN off the receivers.
     std::vector<float> sampleShadow;
-    // With truth and a sun of non-zero size (plan.light.angularDiameterDeg > 0): the fraction v of
+    // With truth and a sun of non-zero size (plan.settings.light.angularDiameterDeg > 0): the fraction v of
     // the sun's disk each receiver sees (GroundTruth::sunVisibility; NaN for non-receivers), and
     // the figures over it. Empty and nullopt for a point sun.
     std::vector<float> sunVisibility;
@@ -97,7 +97,7 @@ struct FrameReadback {
 ///   light), or a contact (an occluder within one eye-pixel footprint, pixelFootprint(), along the light);
 /// - the peter-panning reach: the occluder distance where it is under kPeterPanningReach footprints;
 /// - the TruthClasses overall, per split and per scene mesh;
-/// - with plan.light.angularDiameterDeg > 0, the soft truth: sunVisibility over
+/// - with plan.settings.light.angularDiameterDeg > 0, the soft truth: sunVisibility over
 ///   GroundTruth::kSunSamplesPerAxis² rays per receiver (geometric normals), softTruth's
 ///   soft_mean_abs and, where the truth's scene has an occluder edge, the penumbra width errors.
 /// Throws std::invalid_argument for samplesPerAxis outside 1..GroundTruth::kMaxSamplesPerAxis, and

@@ -1,7 +1,7 @@
 #pragma once
-// Which settings change anything under the others (bias.slope only for the slope biases, splits.alpha
-// only for adaptive splits with more than one split, …), and the warnings for those set in vain
-// (docs/design.md §3 "Settings without effect"). Pure.
+// Which settings change anything under the others (each row's `when` in settings.h: bias.slope only
+// for the slope biases, splits.alpha only for adaptive splits with more than one split, …), and the
+// warnings for those set in vain (docs/design.md §3 "Settings without effect"). Pure.
 #include "geometry/shadow/settings.h"
 
 #include <string>
@@ -10,7 +10,8 @@
 
 namespace geometry::shadow {
 
-/// Whether `key` changes anything under the other settings of `s`.
+/// Whether `key` changes anything under the other settings of `s` (its row's appliesTo; true for an
+/// unknown key).
 [[nodiscard]] bool settingMatters(const ShadowSettings& s, std::string_view key) noexcept;
 
 /// One line per declared setting that differs from its default but has no effect under the others

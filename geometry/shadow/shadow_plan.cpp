@@ -273,9 +273,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         plan.polygonOffset = {settings.bias.slope, settings.bias.units};
     if (bias == BiasType::NormalOffset || bias == BiasType::SlopeNormalOffset)
         plan.normalOffsetTexels = settings.bias.normalOffset;
-    plan.bias = settings.bias;
-    plan.filter = settings.filter;
-    plan.light = settings.light;
+    plan.settings = settings;
     plan.casterLodTexels = settings.casters.lod == CasterLod::Auto ? settings.casters.lodTexels : 0.f;
 
     const dvec3 l(plan.l), v(plan.v), eye(camera.eye);

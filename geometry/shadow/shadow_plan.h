@@ -76,9 +76,9 @@ struct ShadowPlan {
     /// casters.lod = auto: the error a chunk's level may have, in texels of the split's map at the
     /// chunk (caster_detail.h); 0: every pass draws every triangle.
     float casterLodTexels = 0.f;
-    BiasSettings bias; // what the renderer applies, as chosen in the settings
-    FilterSettings filter;
-    LightSettings light; // the sun's size: PCSS's penumbra and the soft truth
+    /// The settings as asked for: the renderer applies the bias, filter and sun from here, and the
+    /// shaders read every declared value (renderer/settings_block.h).
+    ShadowSettings settings;
     /// The maps the eye pass reads hold linear light depth: bias.linear_z, the moment filters (their
     /// moments are of linear depth) and PCSS (its penumbra needs blocker distances in scene units).
     bool linearDepth = false;

@@ -47,15 +47,4 @@ int splitResolution(const SplitParams& p, int resolution, int i) noexcept {
     return std::max(16, resolution >> std::clamp(i, 0, 30));
 }
 
-std::string_view splitSchemeName(SplitScheme s) noexcept {
-    switch (s) {
-    case SplitScheme::Uniform: return "uniform";
-    case SplitScheme::Log: return "log";
-    case SplitScheme::Practical: return "practical";
-    case SplitScheme::Pssm: return "pssm";
-    case SplitScheme::Adaptive: return "adaptive";
-    }
-    return "?";
-}
-
 } // namespace geometry::shadow

@@ -1,11 +1,20 @@
 #pragma once
 // Z-partitioning of [n, f] into k splits (docs/design.md §3.4).
+#include "geometry/shadow/named_enum.h"
+
 #include <string_view>
 #include <vector>
 
 namespace geometry::shadow {
 
-enum class SplitScheme { Uniform, Log, Practical, Pssm, Adaptive };
+// splits.scheme (named_enum.h: value, setting name, help).
+#define SHADOWSCOPE_SPLIT_SCHEMES(X)                                                                                   \
+    X(Uniform, "uniform", "")                                                                                          \
+    X(Log, "log", "Lloyd")                                                                                             \
+    X(Practical, "practical", "log/uniform blend")                                                                     \
+    X(Pssm, "pssm", "geometric lengths")                                                                               \
+    X(Adaptive, "adaptive", "Barroso eq 19")
+SHADOWSCOPE_NAMED_ENUM(SplitScheme, "SPLIT_", SHADOWSCOPE_SPLIT_SCHEMES);
 
 /// The most splits a plan holds: the settings' range, the renderer's texture array and the
 /// shaders' split arrays (generated from this constant) all follow it.
@@ -30,6 +39,6 @@ struct SplitParams {
 /// Resolution of split i (0-based) for a first-split resolution.
 [[nodiscard]] int splitResolution(const SplitParams& p, int resolution, int i) noexcept;
 
-[[nodiscard]] std::string_view splitSchemeName(SplitScheme s) noexcept;
+[[nodiscard]] constexpr std::string_view splitSchemeName(SplitScheme s) noexcept { return enumName(s); }
 
 } // namespace geometry::shadow

@@ -78,16 +78,4 @@ double lambdaFromNPrime(double nPrime, double n, double f, double phi, double ga
     return range > 0.0 ? nPrime / range : 0.0;
 }
 
-std::string_view warpMethodName(WarpMethod m) noexcept {
-    switch (m) {
-    case WarpMethod::Uniform: return "uniform";
-    case WarpMethod::Psm: return "psm";
-    case WarpMethod::Lispsm: return "lispsm";
-    case WarpMethod::Glispsm: return "glispsm";
-    case WarpMethod::Gmnpr: return "gmnpr";
-    case WarpMethod::Manual: return "manual";
-    }
-    return "?";
-}
-
 } // namespace geometry::shadow

@@ -3,14 +3,34 @@
 // the warp frustum P's projection centre to its near plane. n' = +∞ means uniform (no warp).
 // Angles in radians; n, f the (sub-)frustum's near and far; φ its vertical half field of view;
 // γ = θ ∈ [0, π/2] the angle between light and view directions.
+#include "geometry/shadow/named_enum.h"
+
 #include <limits>
 #include <string_view>
 
 namespace geometry::shadow {
 
-enum class WarpMethod { Uniform, Psm, Lispsm, Glispsm, Gmnpr, Manual };
-enum class WarpDirection { Standard, Middle };
-enum class GlispsmFalloff { Eq18, Eq17 };
+// warp.method (named_enum.h: value, setting name, help).
+#define SHADOWSCOPE_WARP_METHODS(X)                                                                                    \
+    X(Uniform, "uniform", "none")                                                                                      \
+    X(Psm, "psm", "n' = n / sin(gamma)")                                                                               \
+    X(Lispsm, "lispsm", "Wimmer")                                                                                      \
+    X(Glispsm, "glispsm", "Barroso eqs 13-18")                                                                         \
+    X(Gmnpr, "gmnpr", "Zhang eq 8")                                                                                    \
+    X(Manual, "manual", "warp.n_prime")
+SHADOWSCOPE_NAMED_ENUM(WarpMethod, "WARP_", SHADOWSCOPE_WARP_METHODS);
+
+// warp.direction: V_P, the view projected onto the light plane, or Scherzer's middle vector.
+#define SHADOWSCOPE_WARP_DIRECTIONS(X)                                                                                 \
+    X(Standard, "standard", "view projected onto the light plane")                                                     \
+    X(Middle, "middle", "Scherzer's middle vector over the focus body")
+SHADOWSCOPE_NAMED_ENUM(WarpDirection, "WARP_DIRECTION_", SHADOWSCOPE_WARP_DIRECTIONS);
+
+// warp.falloff: GLiSPSM below gamma_lim.
+#define SHADOWSCOPE_GLISPSM_FALLOFFS(X)                                                                                \
+    X(Eq18, "eq18", "default")                                                                                         \
+    X(Eq17, "eq17", "")
+SHADOWSCOPE_NAMED_ENUM(GlispsmFalloff, "GLISPSM_FALLOFF_", SHADOWSCOPE_GLISPSM_FALLOFFS);
 
 inline constexpr double kUniform = std::numeric_limits<double>::infinity();
 
@@ -51,6 +71,6 @@ struct WarpParams {
 /// λ = n' / (f' − n') (Zhang's parameter) for any n'; 0 for uniform.
 [[nodiscard]] double lambdaFromNPrime(double nPrime, double n, double f, double phi, double gamma) noexcept;
 
-[[nodiscard]] std::string_view warpMethodName(WarpMethod m) noexcept;
+[[nodiscard]] constexpr std::string_view warpMethodName(WarpMethod m) noexcept { return enumName(m); }
 
 } // namespace geometry::shadow

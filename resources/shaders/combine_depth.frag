@@ -10,6 +10,6 @@ void main() {
     ivec3 t = ivec3(gl_FragCoord.xy, uSplit);
     float z1 = texelFetch(uFirst, t, 0).r;
     float z2 = texelFetch(uSecond, t, 0).r;
-    gl_FragDepth = shadow.biasType == BIAS_DUAL_DEPTH ? z1 + min(0.5 * (z2 - z1), shadow.splits[uSplit].dualDepthCap)
+    gl_FragDepth = settings.bias_type == BIAS_DUAL_DEPTH ? z1 + min(0.5 * (z2 - z1), shadow.splits[uSplit].dualDepthCap)
                                                  : 0.5 * (z1 + z2);
 }

@@ -35,7 +35,7 @@ void main() {
 #endif
 #ifdef MOMENTS
     float m = linearDepth();
-    if (shadow.filterType == FILTER_VSM) {
+    if (settings.filter_type == FILTER_VSM) {
         float dx = dFdx(m), dy = dFdy(m);
         oMoments = vec4(m, m * m + 0.25 * (dx * dx + dy * dy), 0.0, 0.0); // Donnelly & Lauritzen's slope term
     } else {

@@ -1,7 +1,8 @@
 #version 430 core
 // Eye pass: Lambert + ambient terms and the shadow factor, kept apart so the mask can be blurred
-// (Scherzer §4.3) and inspected. Every bias and filter of docs/design.md §3.5–3.6 lives here; the
-// parameters come in the shadow block (renderer/shadow_block.inc).
+// (Scherzer §4.3) and inspected. Every bias and filter of docs/design.md §3.5–3.6 lives here; what the
+// plan derives comes in the shadow block (renderer/shadow_block.inc), the settings as set in the
+// settings block (`settings.<key with _ for .>`, renderer/settings_block.h).
 #include "shadow_block.glsl"
 #include "moments.glsl"
 in vec3 vWorldPos;
@@ -94,13 +95,13 @@ float pcss(vec3 receiver, vec3 n, float z, int split, float res) {
     float nl = min(dot(n, shadow.lightDir), -0.05); // the receiver faces the light; bounded at grazing
     float slope = sqrt(max(1.0 - nl * nl, 0.0)) / -nl; // scene units along l per unit across it
     float eps = scale * texel * slope + 1e-6;           // one texel of the receiver's slope
-    float maxRadius = shadow.pcssMaxRadius * texel;
+    float maxRadius = settings.filter_pcss_max_radius * texel;
     float angle = pixelAngle();
     vec2 shift = vec2(shadow.splits[split].lookupShiftX, shadow.splits[split].lookupShiftY);
     float searchRadius = clamp(z / scale * shadow.sunTanHalfAngle, texel, maxRadius);
     float blockers = 0.0, blockerDepth = 0.0;
-    for (int k = 0; k < shadow.taps; ++k) {
-        vec2 o = vogel(k, shadow.taps, angle) * searchRadius;
+    for (int k = 0; k < settings.filter_taps; ++k) {
+        vec2 o = vogel(k, settings.filter_taps, angle) * searchRadius;
         vec2 tap = pcssTap(receiver, n, nl, e1 * o.x + e2 * o.y, split, res, shift, eps);
         if (tap.y < tap.x) {
             blockers += 1.0;
@@ -111,31 +112,31 @@ float pcss(vec3 receiver, vec3 n, float z, int split, float res) {
     float distance = max(z - blockerDepth / blockers, 0.0) / scale; // receiver to blockers, scene units
     float radius = clamp(distance * shadow.sunTanHalfAngle, 0.5 * texel, maxRadius);
     float lit = 0.0;
-    for (int k = 0; k < shadow.taps; ++k) {
-        vec2 o = vogel(k, shadow.taps, angle + 1.0) * radius;
+    for (int k = 0; k < settings.filter_taps; ++k) {
+        vec2 o = vogel(k, settings.filter_taps, angle + 1.0) * radius;
         vec2 tap = pcssTap(receiver, n, nl, e1 * o.x + e2 * o.y, split, res, shift, eps);
         lit += tap.x > tap.y ? 0.0 : 1.0;
     }
-    return lit / float(shadow.taps);
+    return lit / float(settings.filter_taps);
 }
 
-/// k×k box PCF one texel apart (k = shadow.kernel, odd), four texels per textureGather: the k×k block
+/// k×k box PCF one texel apart (k = settings.filter_kernel, odd), four texels per textureGather: the k×k block
 /// is covered by ⌈k/2⌉² gathers and the extra row and column are masked out.
 float pcfBox(vec2 texel, float z, int split, vec2 dzdt) {
-    vec2 first = floor(texel) - float(shadow.kernel / 2); // lower-left texel of the block
+    vec2 first = floor(texel) - float(settings.filter_kernel / 2); // lower-left texel of the block
     float lit = 0.0;
-    for (int j = 0; j < shadow.kernel; j += 2)
-        for (int i = 0; i < shadow.kernel; i += 2) {
+    for (int j = 0; j < settings.filter_kernel; j += 2)
+        for (int i = 0; i < settings.filter_kernel; i += 2) {
             vec2 corner = first + vec2(i, j) + 1.0; // shared corner of texels (i, j)..(i+1, j+1)
             vec4 d = textureGather(uShadowMap, vec3(corner / float(shadow.arrayResolution), float(split)), 0);
             // Gather order: x (i, j+1), y (i+1, j+1), z (i+1, j), w (i, j).
             vec2 o = first + vec2(i, j) + 0.5 - texel; // offset of texel (i, j) from the receiver
             vec4 ref = z + vec4(dot(dzdt, o + vec2(0, 1)), dot(dzdt, o + vec2(1, 1)), dot(dzdt, o + vec2(1, 0)), dot(dzdt, o));
-            vec4 inside = vec4(j + 1 < shadow.kernel ? 1.0 : 0.0, (i + 1 < shadow.kernel && j + 1 < shadow.kernel) ? 1.0 : 0.0,
-                               i + 1 < shadow.kernel ? 1.0 : 0.0, 1.0);
+            vec4 inside = vec4(j + 1 < settings.filter_kernel ? 1.0 : 0.0, (i + 1 < settings.filter_kernel && j + 1 < settings.filter_kernel) ? 1.0 : 0.0,
+                               i + 1 < settings.filter_kernel ? 1.0 : 0.0, 1.0);
             lit += dot(inside, step(ref, d)); // lit where ref ≤ stored
         }
-    return lit / float(shadow.kernel * shadow.kernel);
+    return lit / float(settings.filter_kernel * settings.filter_kernel);
 }
 
 
@@ -164,8 +165,8 @@ Lookup lookUp(int split, vec3 receiver, vec3 n, vec3 dPdx, vec3 dPdy, float ndot
     // The receiver plane's depth gradient per texel (Barroso §2.2).
     vec2 dzdt = abs(L.det) > 1e-12 ? vec2(dzdx * L.dTdy.y - dzdy * L.dTdx.y, dzdy * L.dTdx.x - dzdx * L.dTdy.x) / L.det
                                    : vec2(0.0);
-    bool receiverPlane = shadow.biasType == BIAS_RECEIVER_PLANE;
-    if (shadow.tangentPlane == 0 && !receiverPlane) dzdt = vec2(0.0);
+    bool receiverPlane = settings.bias_type == BIAS_RECEIVER_PLANE;
+    if (!settings.bias_tangent_plane && !receiverPlane) dzdt = vec2(0.0);
 
     p.xy += vec2(shadow.splits[split].lookupShiftX, shadow.splits[split].lookupShiftY) / res; // 0 but in tests
     vec2 texel = p.xy * res; // texel-space position within this split's map
@@ -174,25 +175,25 @@ Lookup lookUp(int split, vec3 receiver, vec3 n, vec3 dPdx, vec3 dPdy, float ndot
     float s = 1.0;
     bool inside = all(greaterThanEqual(p, vec3(0.0))) && all(lessThanEqual(p.xy, vec2(1.0)));
     if (inside && ndotl > 0.0) {
-        if (shadow.filterType == FILTER_NONE) {
+        if (settings.filter_type == FILTER_NONE) {
             s = receiverPlane ? planeTest(texel, texel, p.z, dzdt, split, res) : hardTest(texel, p.z, split, res);
-        } else if (shadow.filterType == FILTER_HW2X2) {
+        } else if (settings.filter_type == FILTER_HW2X2) {
             // One reference for four texels: the receiver plane can only lower it by a texel's slope.
             float ref = receiverPlane ? p.z - 2.0 * planeSlack(dzdt) : p.z;
             s = texture(uShadowMapCmp, vec4(uvArray, float(split), ref));
-        } else if (shadow.filterType == FILTER_PCF) {
+        } else if (settings.filter_type == FILTER_PCF) {
             s = pcfBox(texel, receiverPlane ? p.z - planeSlack(dzdt) : p.z, split, dzdt);
-        } else if (shadow.filterType == FILTER_DISK) {
+        } else if (settings.filter_type == FILTER_DISK) {
             // Vogel disk, rotated per pixel to trade banding for noise.
             float angle = pixelAngle();
             float sum = 0.0;
-            for (int k = 0; k < shadow.taps; ++k) {
-                vec2 offset = shadow.diskRadius * vogel(k, shadow.taps, angle);
+            for (int k = 0; k < settings.filter_taps; ++k) {
+                vec2 offset = settings.filter_radius * vogel(k, settings.filter_taps, angle);
                 sum += receiverPlane ? planeTest(texel, texel + offset, p.z, dzdt, split, res)
                                      : hardTest(texel + offset, p.z + dot(dzdt, offset), split, res);
             }
-            s = sum / float(shadow.taps);
-        } else if (shadow.filterType == FILTER_PCSS) {
+            s = sum / float(settings.filter_taps);
+        } else if (settings.filter_type == FILTER_PCSS) {
             s = pcss(receiver, n, p.z, split, res);
         } else {
             s = momentLit(texture(uMoments, vec3(uvArray, float(split))), p.z);
@@ -220,7 +221,7 @@ void main() {
     float res = float(shadow.arrayResolution) * shadow.splits[split].mapScale;
 
     vec3 receiver = vWorldPos;
-    if (shadow.biasType == BIAS_CONSTANT) receiver -= shadow.lightDir * shadow.receiverOffset;
+    if (settings.bias_type == BIAS_CONSTANT) receiver -= shadow.lightDir * shadow.receiverOffset;
     if (shadow.normalOffset > 0.0) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
     vec3 dPdx = dFdx(receiver), dPdy = dFdy(receiver); // in uniform control flow
 

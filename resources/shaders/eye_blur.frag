@@ -9,7 +9,7 @@ layout(location = 0) out vec4 oMask;
 void main() {
     float depth = texture(uBase, vUv).a;
     if (depth <= 0.0) { oMask = texture(uMask, vUv); return; } // sky
-    float radius = 3.0 / (1.0 + shadow.eyeBlurFalloff * depth);              // pixels
+    float radius = 3.0 / (1.0 + settings.filter_eye_blur_falloff * depth);              // pixels
     float sum = 0.0, weight = 0.0;
     for (int i = -3; i <= 3; ++i) {
         vec2 uv = vUv + uStep * (float(i) * radius / 3.0);

@@ -5,24 +5,24 @@
 /// EVSM's two warps of z (Lauritzen & McCool 2008): z to [-1,1], then exp(c+ w) and -exp(-c- w).
 vec2 evsmWarp(float z) {
     float w = 2.0 * z - 1.0;
-    return vec2(exp(shadow.evsmExponents.x * w), -exp(-shadow.evsmExponents.y * w));
+    return vec2(exp(settings.filter_evsm_positive_exponent * w), -exp(-settings.filter_evsm_negative_exponent * w));
 }
 
 /// What the moments pass writes for linear depth z.
 vec4 momentsOf(float z) {
-    if (shadow.filterType == FILTER_ESM) return vec4(exp(shadow.esmExponent * z), 0.0, 0.0, 0.0);
-    if (shadow.filterType == FILTER_EVSM2 || shadow.filterType == FILTER_EVSM4) {
+    if (settings.filter_type == FILTER_ESM) return vec4(exp(settings.filter_esm_exponent * z), 0.0, 0.0, 0.0);
+    if (settings.filter_type == FILTER_EVSM2 || settings.filter_type == FILTER_EVSM4) {
         vec2 w = evsmWarp(z);
         return vec4(w.x, w.x * w.x, w.y, w.y * w.y);
     }
     float z2 = z * z;
-    if (shadow.filterType == FILTER_MSM) return vec4(z, z2, z2 * z, z2 * z2); // Hamburger: 4 power moments
+    if (settings.filter_type == FILTER_MSM) return vec4(z, z2, z2 * z, z2 * z2); // Hamburger: 4 power moments
     return vec4(z, z2, 0.0, 0.0);
 }
 
 /// Light-bleeding reduction: lit fractions below filter.bleed_reduction become 0, the rest rescale.
 float reduceBleeding(float lit) {
-    return clamp((lit - shadow.bleedReduction) / (1.0 - shadow.bleedReduction), 0.0, 1.0);
+    return clamp((lit - settings.filter_bleed_reduction) / (1.0 - settings.filter_bleed_reduction), 0.0, 1.0);
 }
 
 /// Chebyshev's one-sided upper bound on the lit fraction for a receiver at t, given the mean and
@@ -35,13 +35,13 @@ float chebyshevUpperBound(vec2 m, float t, float minVariance) {
 }
 
 /// ESM (Annen et al. 2008): E[exp(c z_o)] exp(-c z), the filtered exp(c (z_o - z)).
-float esmLit(vec4 m, float z) { return clamp(m.x * exp(-shadow.esmExponent * z), 0.0, 1.0); }
+float esmLit(vec4 m, float z) { return clamp(m.x * exp(-settings.filter_esm_exponent * z), 0.0, 1.0); }
 
 /// EVSM: Chebyshev on each warp, the smaller bound. The variance floor follows the warp's slope, so
 /// it is the same small depth tolerance (~1e-4 of the range) at every depth.
 float evsmLit(vec4 m, float z, bool four) {
     vec2 w = evsmWarp(z);
-    vec2 floorDepth = 1e-4 * shadow.evsmExponents * w;
+    vec2 floorDepth = 1e-4 * vec2(settings.filter_evsm_positive_exponent, settings.filter_evsm_negative_exponent) * w;
     float lit = chebyshevUpperBound(m.xy, w.x, floorDepth.x * floorDepth.x);
     if (four) lit = min(lit, chebyshevUpperBound(m.zw, w.y, floorDepth.y * floorDepth.y));
     return reduceBleeding(lit);
@@ -51,7 +51,7 @@ float evsmLit(vec4 m, float z, bool four) {
 /// (0.5, 0.5, 0.5, 0.5) by alpha, bound the occluders' depth distribution; the lit fraction is one
 /// minus the least shadow any distribution with these moments can cast on z.
 float msmLit(vec4 moments, float z) {
-    vec4 b = mix(moments, vec4(0.5), shadow.momentBias);
+    vec4 b = mix(moments, vec4(0.5), settings.filter_msm_moment_bias);
     // Solve B c = (1, z, z^2) for the Hankel matrix B = [1 b1 b2; b1 b2 b3; b2 b3 b4] by LDL^T.
     float d22 = b.y - b.x * b.x;
     float l32 = (b.z - b.x * b.y) / d22;
@@ -76,9 +76,9 @@ float msmLit(vec4 moments, float z) {
 
 /// The lit fraction of a receiver at linear depth z from blurred moments m, for the current filter.
 float momentLit(vec4 m, float z) {
-    if (shadow.filterType == FILTER_VSM) return reduceBleeding(chebyshevUpperBound(m.xy, z, 1e-7));
-    if (shadow.filterType == FILTER_ESM) return esmLit(m, z);
-    if (shadow.filterType == FILTER_EVSM2) return evsmLit(m, z, false);
-    if (shadow.filterType == FILTER_EVSM4) return evsmLit(m, z, true);
+    if (settings.filter_type == FILTER_VSM) return reduceBleeding(chebyshevUpperBound(m.xy, z, 1e-7));
+    if (settings.filter_type == FILTER_ESM) return esmLit(m, z);
+    if (settings.filter_type == FILTER_EVSM2) return evsmLit(m, z, false);
+    if (settings.filter_type == FILTER_EVSM4) return evsmLit(m, z, true);
     return msmLit(m, z);
 }

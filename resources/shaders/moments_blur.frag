@@ -9,7 +9,7 @@ uniform ivec2 uStep;    // (1, 0) or (0, 1)
 layout(location = 0) out vec4 oMoments;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    int radius = shadow.kernel / 2;
+    int radius = settings.filter_kernel / 2;
     ivec2 size = ivec2(round(float(shadow.arrayResolution) * shadow.splits[uSplit].mapScale)); // this split's texels
     vec4 sum = vec4(0.0);
     for (int i = -radius; i <= radius; ++i)
