@@ -77,10 +77,13 @@ const json* leaf(const json& j, std::string_view key) {
     }
 }
 
-/// Every key away from its default: the maximum, the last choice, true.
+/// Every key at the end of its range away from its default: the maximum (the minimum where the default
+/// is the maximum: a flag on by default is turned off), the last choice.
 ShadowSettings extremeSettings() {
+    const ShadowSettings defaults;
     ShadowSettings s;
-    for (const auto& info : geometry::shadow::settingsDeclaration()) info.set(s, info.max);
+    for (const auto& info : geometry::shadow::settingsDeclaration())
+        info.set(s, info.get(defaults) == info.max ? info.min : info.max); // the end away from the default
     return s;
 }
 
