@@ -88,6 +88,7 @@ struct FilterSettings {
     int kernel = 3;               // filter.kernel: k×k PCF taps / moments blur width, odd
     int taps = 16;                // filter.taps: disk and PCSS taps
     float radius = 2.f;           // filter.radius: disk radius, texels
+    bool rotateTaps = true;       // filter.rotate_taps: disk and PCSS patterns turned per pixel
     float bleedReduction = 0.2f;  // filter.bleed_reduction: VSM/EVSM/MSM light-bleeding cut
     float pcssMaxRadius = 64.f;   // filter.pcss.max_radius: cap on the blocker search and filter radius, texels
     float esmExponent = 80.f;     // filter.esm.exponent: c in exp(c·z)
@@ -336,6 +337,12 @@ inline const std::vector<SettingInfo>& settingsDeclaration() {
             "filter.radius", "disk: radius in texels", Kind::Float, 0.5, 16,
             [](auto& s) -> auto& { return s.filter.radius; })
             .when("filter.type", filterIs<F::Disk>),
+        number(
+            "filter.rotate_taps",
+            "disk, pcss: turn the tap pattern per pixel (interleaved gradient noise), trading banding for "
+            "noise; off: one pattern everywhere, smooth but banded",
+            Kind::Bool, 0, 1, [](auto& s) -> auto& { return s.filter.rotateTaps; })
+            .when("filter.type", filterIs<F::Disk, F::Pcss>),
         number(
             "filter.bleed_reduction",
             "vsm, evsm2, evsm4, msm: light-bleeding reduction (lit fractions below it become 0, the rest is "

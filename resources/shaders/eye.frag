@@ -71,8 +71,12 @@ vec2 vogel(int k, int n, float angle) {
     return sqrt((float(k) + 0.5) / float(n)) * vec2(cos(a), sin(a));
 }
 
-/// Interleaved gradient noise (Jimenez 2014): a per-pixel rotation that trades banding for noise.
-float pixelAngle() { return 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715)))); }
+/// Interleaved gradient noise (Jimenez 2014): a per-pixel rotation that trades banding for noise
+/// (filter.rotate_taps; off: the same pattern at every pixel).
+float pixelAngle() {
+    if (!settings.filter_rotate_taps) return 0.0;
+    return 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+}
 
 /// A PCSS tap: the point `offset` (⊥ l) away on the receiver's plane (normal n, nl = n·l < 0), as
 /// (its depth in this split's map − eps, the depth the map stores there).
