@@ -11,6 +11,7 @@
 
 #include "renderer.h"
 
+#include "geometry/scene/invariant.h"
 #include "geometry/shadow/caster_detail.h"
 #include "geometry/shadow/culling.h"
 
@@ -331,8 +332,10 @@ void Renderer::peelAndCombine(const geometry::shadow::ShadowPlan& plan) {
 
 void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
     const int layers = firstDepth_.layers(), res = firstDepth_.resolution();
+    const int moments = geometry::shadow::momentCount(plan.settings.filter.type);
+    SHADOWSCOPE_EXPECTS(moments >= 1 && moments <= 4);                             // called for the moment filters only
     const GLenum formats[] = {GL_R32F, GL_R32F, GL_RG32F, GL_RGBA32F, GL_RGBA32F}; // by moment count
-    const GLenum format = formats[std::clamp(geometry::shadow::momentCount(plan.settings.filter.type), 0, 4)];
+    const GLenum format = formats[moments];
     moments_.ensure(res, layers, format, true);
     momentsTemp_.ensure(res, layers, format, false);
     Program& program = depthProgram("#define MOMENTS\n");

@@ -1,20 +1,25 @@
 #include "renderer/shadow_block.h"
 
+#include "geometry/scene/invariant.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace renderer {
 
 ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResolution) noexcept {
+    // The plan holds at most kMaxSplits (settings validation refuses more); the block has no room
+    // for another, and dropping one would shade its pixels with the wrong map.
+    SHADOWSCOPE_EXPECTS(plan.splits.size() <= size_t(geometry::shadow::kMaxSplits));
+    SHADOWSCOPE_EXPECTS(arrayResolution > 0);
     ShadowBlock b;
-    const int count = std::min(int(plan.splits.size()), geometry::shadow::kMaxSplits);
+    const int count = int(plan.splits.size());
     for (int i = 0; i < count; ++i) {
         const auto& split = plan.splits[i];
         auto& s = b.splits[i];
         s.lightViewProj = split.lightViewProj;
         s.splitFar = split.far;
-        s.mapScale =
-            arrayResolution > 0 ? float(std::min(split.resolution, arrayResolution)) / float(arrayResolution) : 1.f;
+        s.mapScale = float(std::min(split.resolution, arrayResolution)) / float(arrayResolution);
         s.linearLo = split.linearDepthRange.x;
         s.linearScale = split.linearDepthScale;
         s.dualDepthCap = split.dualDepthCap;

@@ -75,3 +75,17 @@ TEST(Splits, ResolutionFalloffHalvesPerSplit) {
     for (int i = 0; i < 8; ++i) mem += std::pow(splitResolution(p, 4096, i), 2);
     EXPECT_LE(mem, 4.0 / 3.0 * 4096.0 * 4096.0);
 }
+
+// Preconditions (geometry/scene/invariant.h) abort the checked build with the condition named, where
+// a release build would once have clamped the split count to 1.
+TEST(Splits, ABrokenPreconditionAbortsTheCheckedBuild) {
+#ifndef SHADOWSCOPE_CHECKED
+    GTEST_SKIP() << "preconditions are checked in the checked build (scripts/build-checked)";
+#else
+    geometry::shadow::SplitParams p;
+    p.count = 0;
+    EXPECT_DEATH((void)geometry::shadow::splitDistances(p, 1.0, 100.0, 0.0), "precondition failed: .*count >= 1");
+    p.count = 2;
+    EXPECT_DEATH((void)geometry::shadow::splitDistances(p, 1.0, 0.5, 0.0), "precondition failed: n > 0.0 && f > n");
+#endif
+}

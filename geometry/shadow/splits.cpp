@@ -1,5 +1,7 @@
 #include "geometry/shadow/splits.h"
 
+#include "geometry/scene/invariant.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -7,7 +9,11 @@
 namespace geometry::shadow {
 
 std::vector<double> splitDistances(const SplitParams& p, double n, double f, double gamma) {
-    const int k = std::max(1, p.count);
+    // Validated settings and frustum (settings.h) guarantee these; a caller that passes others has a
+    // bug to find, not a value to be quietly replaced.
+    SHADOWSCOPE_EXPECTS(p.count >= 1 && p.count <= kMaxSplits);
+    SHADOWSCOPE_EXPECTS(n > 0.0 && f > n);
+    const int k = p.count;
     std::vector<double> c(static_cast<size_t>(k) + 1);
     c[0] = n;
     c[k] = f;
