@@ -212,6 +212,16 @@ private:
     void drawLightPanel();
     void drawHeatmapPanel();
     void drawStatsPanel();
+    /// One row of the statistics table: its name, its value for side 0 or 1, and a tooltip.
+    struct StatRow {
+        const char* name;
+        std::function<std::string(int)> value;
+        const char* tip = nullptr;
+    };
+    /// The statistics table's rows, as data (the soft truth's only where a side has one).
+    [[nodiscard]] std::vector<StatRow> statRows(int sides) const;
+    [[nodiscard]] const renderer::FrameStats* statsOf(int side) const noexcept;
+    [[nodiscard]] std::function<std::string(int)> gpuTime(renderer::Pass pass) const;
     void drawStatsTable();
     void drawInspector();
     void drawAnalyticChart(int which); // 0 n'(γ), 1 λ(θ), 2 m_z(z)
