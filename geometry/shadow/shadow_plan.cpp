@@ -2,7 +2,8 @@
 //   helpers ........... perpendicular, fitUnitCube, depthRangeInMap, linearDepthRange, unwarpedView
 //   one split's map ... SplitFrame, frameForSplit (warped or uniform), stableFrame (stabilize.mode = snap)
 //   warpDirection ..... V_P: standard or Scherzer's middle vector
-//   planShadows ....... the plan: budget and warnings, splits, each split's focus body and frame
+//   planShadows ....... the plan: planFrame (l, v, γ, offsets), the budget and warnings,
+//                       splitBoundaries, per split focusSplit (B_i) and frameSplit (V_P, n', P), finishPlan
 
 #include "geometry/shadow/shadow_plan.h"
 
@@ -258,8 +259,24 @@ dvec3 warpDirection(WarpDirection mode, const dvec3& l, const dvec3& v, const dv
     return glm::length(s) > 1e-9 ? glm::normalize(s) : dvec3(0.0);
 }
 
-ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
-                       const scene::DirectionalLight& light, const Viewport& viewport, const SampleBounds* samples) {
+namespace {
+
+/// What every split of one plan is planned from.
+struct SplitContext {
+    const ShadowSettings& settings;
+    const scene::Aabb& S;
+    const scene::Camera& camera;
+    float aspect;
+    dvec3 l, v, eye;
+    double gamma, phi;
+    const SampleBounds* samples; // non-null: fitted to the samples (focus.mode = samples)
+    int resolution;              // the first split's, after the memory budget
+    double reachTexels;          // how far lookups reach past their sample (filter taps, normal offset)
+};
+
+/// The plan's values that do not depend on the splits: l, v, γ, the eye's matrices, the offsets.
+ShadowPlan planFrame(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
+                     const scene::DirectionalLight& light, const Viewport& viewport) {
     ShadowPlan plan;
     plan.l = light.l();
     plan.v = camera.viewDir();
@@ -275,129 +292,127 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
         plan.normalOffsetTexels = settings.bias.normalOffset;
     plan.settings = settings;
     plan.casterLodTexels = settings.casters.lod == CasterLod::Auto ? settings.casters.lodTexels : 0.f;
-
-    const dvec3 l(plan.l), v(plan.v), eye(camera.eye);
-    const double gamma = glm::radians(double(plan.gammaDeg));
-    const double phi = glm::radians(double(camera.fovYDeg)) * 0.5;
     plan.viewFrustum = frustumCorners(camera, viewport.aspect(), camera.near, camera.far);
     plan.sceneBounds = S;
     plan.eye = camera.eye;
     plan.cameraNear = camera.near;
     plan.cameraFar = camera.far;
-    const bool fit = settings.focus == FocusMode::Samples && samples != nullptr;
-    plan.fittedToSamples = fit;
-    // Beyond the memory budget the maps are drawn smaller, and the plan says so (splits[i].resolution).
-    const int resolution = budgetedResolution(settings);
-    if (resolution < settings.resolution)
-        plan.warnings.push_back("shadow_map.resolution " + std::to_string(settings.resolution) + " x " +
-                                std::to_string(settings.splits.count) + " splits needs " +
-                                std::to_string(int(shadowMapBytes(settings, settings.resolution) / (1 << 20))) +
-                                " MiB, over the " + std::to_string(int(kShadowMemoryBudgetBytes / (1 << 20))) +
-                                " MiB shadow-memory budget: drawn at " + std::to_string(resolution));
-    for (std::string& w : inertSettingWarnings(settings)) plan.warnings.push_back(std::move(w));
-    // The splits partition [n, f]; with samples, the samples' depth range instead (a sliver beyond
-    // it, so float noise cannot leave the nearest or farthest pixel out).
-    std::vector<double> c = splitDistances(settings.splits, camera.near, camera.far, gamma);
-    if (fit) {
-        plan.sampleCount = samples->count;
-        plan.sampleDepthRange = {samples->zMin, samples->zMax};
-        const double zLo = std::max(double(camera.near), samples->zMin * (1.0 - 1e-3));
-        const double zHi = std::min(double(camera.far), std::max(samples->zMax * (1.0 + 1e-3), zLo * (1.0 + 1e-3)));
-        if (!samples->empty()) c = splitDistances(settings.splits, zLo, zHi, gamma);
-        if (!samples->empty() && settings.splits.scheme == SplitScheme::Practical && c.size() > 2) {
-            SplitParams log = settings.splits;
-            log.scheme = SplitScheme::Log;
-            const std::vector<double> cLog = splitDistances(log, zLo, zHi, gamma);
-            const std::vector<double> q = sampleQuantiles(*samples, zLo, zHi, int(c.size()) - 1);
-            if (q.size() + 2 == c.size())
-                for (size_t i = 1; i + 1 < c.size(); ++i)
-                    c[i] = settings.splits.lambda * cLog[i] + (1.0 - settings.splits.lambda) * q[i - 1];
-        }
-    }
-    // Lookups reach past the sample they are for: filter taps, normal offset; a margin of that many
-    // texels (as a fraction of the map) keeps them on the map.
-    const double reachTexels = settings.filter.kernel / 2 + settings.filter.radius + settings.bias.normalOffset + 2.0;
+    return plan;
+}
 
-    for (int i = 0; i + 1 < int(c.size()); ++i) {
-        SplitPlan split;
-        split.near = float(c[i]);
-        split.far = float(c[i + 1]);
-        split.resolution = splitResolution(settings.splits, resolution, i);
-        split.frustum = frustumCorners(camera, viewport.aspect(), split.near, split.far);
-        // splits.blend: the last `blend` of this split's depth range fades into the next split, so
-        // the next split's map must also cover that band: its focus starts the band's width early.
-        const double blend = settings.splits.blend;
-        const bool last = i + 2 >= int(c.size());
-        split.blendStart = float(last ? c[i + 1] : c[i + 1] - blend * (c[i + 1] - c[i]));
-        const double focusNear = i > 0 ? std::max(camera.near, float(c[i] - blend * (c[i] - c[i - 1]))) : c[i];
-        const auto focusFrustum =
-            focusNear < c[i] ? frustumCorners(camera, viewport.aspect(), float(focusNear), split.far) : split.frustum;
-        if (fit) {
-            const SampleSlab slab =
-                samplesWithin(*samples, focusNear, c[i + 1], reachTexels / std::max(split.resolution, 1));
-            split.samples = slab.count;
-            split.skipped = slab.count == 0;
-            if (!split.skipped) {
-                split.body = focusBody(focusFrustum, S, plan.l, slab.planes);
-                split.sampleRegion.assign(split.body.begin(),
-                                          split.body.begin() + std::ptrdiff_t(split.body.size() / 2));
-            }
-        } else if (c[i + 1] > c[i]) {
-            split.body = focusBody(focusFrustum, S, plan.l);
-        }
-        if (split.empty()) {
-            plan.splits.push_back(std::move(split));
-            continue;
-        }
-        dvec3 vp = warpDirection(settings.direction, l, v, eye, split.body);
-        const bool degenerate = glm::length(vp) == 0.0;
-        if (degenerate) vp = perpendicular(l); // light ∥ view: any orientation, and no warp
-        // d for the n' formulas is B's extent along V_P (LiSPSM); compute it before choosing n'.
-        double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
-        for (const auto& p : split.body) {
-            const double t = glm::dot(dvec3(p), vp);
-            lo = std::min(lo, t);
-            hi = std::max(hi, t);
-        }
-        // The warp's n' from the fitted range, except that the first split's n sits between the
-        // camera's n and the nearest sample (n^(2/3)·z_min^(1/3)): the fitted z_min alone weakens
-        // the warp too much where a few near samples see a long frustum (deck: p95 m 3.21 → 4.39),
-        // the camera's n keeps it too strong for a far-off focus (overview); docs/performance.md
-        // "How n' is computed for fitted splits" has the variants measured.
-        const double nI = fit && i == 0 ? std::cbrt(double(camera.near) * camera.near * c[0]) : c[i], fI = c[i + 1];
-        double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, nI, fI, phi, gamma, hi - lo);
-        const bool quantize = settings.stabilize == StabilizeMode::Quantize;
-        if (quantize && !degenerate) { // V_P in 1° steps about l, n' in 1/16 octaves
-            const dvec3 e1 = perpendicular(l), e2 = glm::cross(l, e1);
-            const double angle = std::round(glm::degrees(std::atan2(glm::dot(vp, e2), glm::dot(vp, e1))));
-            vp = std::cos(glm::radians(angle)) * e1 + std::sin(glm::radians(angle)) * e2;
-            if (std::isfinite(nPrime) && nPrime > 0.0 && nPrime < kUniform)
-                nPrime = std::exp2(std::round(std::log2(nPrime) * 16.0) / 16.0);
-        }
-        SplitFrame frame = frameForSplit(split.body, l, vp, eye, S, nPrime, {quantize, split.resolution});
-        if (settings.stabilize != StabilizeMode::Off && frame.nPrime == kUniform)
-            frame = stableFrame(focusFrustum, l, eye, S, split.resolution);
-        const dmat4 viewProj = frame.lightProj * frame.lightView;
-        split.lightView = glm::mat4(frame.lightView);
-        split.lightProj = glm::mat4(frame.lightProj);
-        split.lightViewProj = glm::mat4(viewProj);
-        split.nPrime = frame.nPrime;
-        split.lambda = lambdaFromNPrime(frame.nPrime, nI, fI, phi, gamma);
-        split.warpDir = glm::vec3(vp);
-        split.warpCentre = glm::vec3(frame.warpCentre);
-        split.warpDepth = float(frame.d);
-        split.bodyDepthRange = depthRangeInMap(viewProj, split.body);
-        split.mapVolume = unitCubeInWorld(viewProj);
-        split.linearDepthRange = linearDepthRange(split.body, l, S);
-        dvec3 centre(0.0);
-        for (const auto& p : split.body) centre += dvec3(p);
-        centre /= double(split.body.size());
-        const double step = std::max(1e-3 * frame.d, 1e-3);
-        split.depthPerUnit =
-            float(std::max(0.0, (depth01(viewProj, centre + step * l) - depth01(viewProj, centre)) / step));
-        plan.splits.push_back(std::move(split));
+/// The split boundaries c_0 = n … c_k = f; with samples, over the samples' depth range instead (a
+/// sliver beyond it, so float noise cannot leave the nearest or farthest pixel out), and the
+/// practical scheme blends the log split with the samples' quantiles.
+std::vector<double> splitBoundaries(const SplitContext& k, ShadowPlan& plan) {
+    const ShadowSettings& settings = k.settings;
+    std::vector<double> c = splitDistances(settings.splits, k.camera.near, k.camera.far, k.gamma);
+    if (!k.samples) return c;
+    const SampleBounds& samples = *k.samples;
+    plan.sampleCount = samples.count;
+    plan.sampleDepthRange = {samples.zMin, samples.zMax};
+    if (samples.empty()) return c;
+    const double zLo = std::max(double(k.camera.near), samples.zMin * (1.0 - 1e-3));
+    const double zHi = std::min(double(k.camera.far), std::max(samples.zMax * (1.0 + 1e-3), zLo * (1.0 + 1e-3)));
+    c = splitDistances(settings.splits, zLo, zHi, k.gamma);
+    if (settings.splits.scheme == SplitScheme::Practical && c.size() > 2) {
+        SplitParams log = settings.splits;
+        log.scheme = SplitScheme::Log;
+        const std::vector<double> cLog = splitDistances(log, zLo, zHi, k.gamma);
+        const std::vector<double> q = sampleQuantiles(samples, zLo, zHi, int(c.size()) - 1);
+        if (q.size() + 2 == c.size())
+            for (size_t i = 1; i + 1 < c.size(); ++i)
+                c[i] = settings.splits.lambda * cLog[i] + (1.0 - settings.splits.lambda) * q[i - 1];
     }
-    // Derived once here so that no pass recomputes them.
+    return c;
+}
+
+/// Split i's depth range, resolution, blend band and focus body B_i; returns the view sub-frustum B_i
+/// was fitted to (it reaches back over the previous split's blend band).
+std::array<glm::vec3, 8> focusSplit(const SplitContext& k, const std::vector<double>& c, int i, SplitPlan& split) {
+    split.near = float(c[i]);
+    split.far = float(c[i + 1]);
+    split.resolution = splitResolution(k.settings.splits, k.resolution, i);
+    split.frustum = frustumCorners(k.camera, k.aspect, split.near, split.far);
+    // splits.blend: the last `blend` of this split's depth range fades into the next split, so
+    // the next split's map must also cover that band: its focus starts the band's width early.
+    const double blend = k.settings.splits.blend;
+    const bool last = i + 2 >= int(c.size());
+    split.blendStart = float(last ? c[i + 1] : c[i + 1] - blend * (c[i + 1] - c[i]));
+    const double focusNear = i > 0 ? std::max(k.camera.near, float(c[i] - blend * (c[i] - c[i - 1]))) : c[i];
+    const auto focusFrustum =
+        focusNear < c[i] ? frustumCorners(k.camera, k.aspect, float(focusNear), split.far) : split.frustum;
+    if (k.samples) {
+        const SampleSlab slab =
+            samplesWithin(*k.samples, focusNear, c[i + 1], k.reachTexels / std::max(split.resolution, 1));
+        split.samples = slab.count;
+        split.skipped = slab.count == 0;
+        if (!split.skipped) {
+            split.body = focusBody(focusFrustum, k.S, glm::vec3(k.l), slab.planes);
+            split.sampleRegion.assign(split.body.begin(), split.body.begin() + std::ptrdiff_t(split.body.size() / 2));
+        }
+    } else if (c[i + 1] > c[i]) {
+        split.body = focusBody(focusFrustum, k.S, glm::vec3(k.l));
+    }
+    return focusFrustum;
+}
+
+/// Split i's warp and map: V_P, n' (Barroso eqs 13–18 and the other methods, warp.h), stabilization,
+/// and the matrices and depth ranges the passes need. `split.body` is not empty.
+void frameSplit(const SplitContext& k, const std::vector<double>& c, int i,
+                const std::array<glm::vec3, 8>& focusFrustum, SplitPlan& split) {
+    const ShadowSettings& settings = k.settings;
+    dvec3 vp = warpDirection(settings.direction, k.l, k.v, k.eye, split.body);
+    const bool degenerate = glm::length(vp) == 0.0;
+    if (degenerate) vp = perpendicular(k.l); // light ∥ view: any orientation, and no warp
+    // d for the n' formulas is B's extent along V_P (LiSPSM); compute it before choosing n'.
+    double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+    for (const auto& p : split.body) {
+        const double t = glm::dot(dvec3(p), vp);
+        lo = std::min(lo, t);
+        hi = std::max(hi, t);
+    }
+    // The warp's n' from the fitted range, except that the first split's n sits between the
+    // camera's n and the nearest sample (n^(2/3)·z_min^(1/3)): the fitted z_min alone weakens
+    // the warp too much where a few near samples see a long frustum (deck: p95 m 3.21 → 4.39),
+    // the camera's n keeps it too strong for a far-off focus (overview); docs/performance.md
+    // "How n' is computed for fitted splits" has the variants measured.
+    const double n = k.camera.near;
+    const double nI = k.samples && i == 0 ? std::cbrt(n * n * c[0]) : c[i], fI = c[i + 1];
+    double nPrime = degenerate ? kUniform : warpNPrime(settings.warp, nI, fI, k.phi, k.gamma, hi - lo);
+    const bool quantize = settings.stabilize == StabilizeMode::Quantize;
+    if (quantize && !degenerate) { // V_P in 1° steps about l, n' in 1/16 octaves
+        const dvec3 e1 = perpendicular(k.l), e2 = glm::cross(k.l, e1);
+        const double angle = std::round(glm::degrees(std::atan2(glm::dot(vp, e2), glm::dot(vp, e1))));
+        vp = std::cos(glm::radians(angle)) * e1 + std::sin(glm::radians(angle)) * e2;
+        if (std::isfinite(nPrime) && nPrime > 0.0 && nPrime < kUniform)
+            nPrime = std::exp2(std::round(std::log2(nPrime) * 16.0) / 16.0);
+    }
+    SplitFrame frame = frameForSplit(split.body, k.l, vp, k.eye, k.S, nPrime, {quantize, split.resolution});
+    if (settings.stabilize != StabilizeMode::Off && frame.nPrime == kUniform)
+        frame = stableFrame(focusFrustum, k.l, k.eye, k.S, split.resolution);
+    const dmat4 viewProj = frame.lightProj * frame.lightView;
+    split.lightView = glm::mat4(frame.lightView);
+    split.lightProj = glm::mat4(frame.lightProj);
+    split.lightViewProj = glm::mat4(viewProj);
+    split.nPrime = frame.nPrime;
+    split.lambda = lambdaFromNPrime(frame.nPrime, nI, fI, k.phi, k.gamma);
+    split.warpDir = glm::vec3(vp);
+    split.warpCentre = glm::vec3(frame.warpCentre);
+    split.warpDepth = float(frame.d);
+    split.bodyDepthRange = depthRangeInMap(viewProj, split.body);
+    split.mapVolume = unitCubeInWorld(viewProj);
+    split.linearDepthRange = linearDepthRange(split.body, k.l, k.S);
+    dvec3 centre(0.0);
+    for (const auto& p : split.body) centre += dvec3(p);
+    centre /= double(split.body.size());
+    const double step = std::max(1e-3 * frame.d, 1e-3);
+    split.depthPerUnit =
+        float(std::max(0.0, (depth01(viewProj, centre + step * k.l) - depth01(viewProj, centre)) / step));
+}
+
+/// What the passes derive from the whole plan, computed once here: linear depth and its scale, the
+/// dual-depth cap in map units, the unwarped light view, and the snap warning.
+void finishPlan(const ShadowSettings& settings, ShadowPlan& plan) {
     plan.linearDepth =
         settings.bias.linearZ || isMomentFilter(settings.filter.type) || settings.filter.type == FilterType::Pcss;
     for (auto& split : plan.splits) {
@@ -411,6 +426,47 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
     if (settings.stabilize == StabilizeMode::Snap && !anyUniform && !plan.splits.empty())
         plan.warnings.push_back("stabilize.mode = snap has no effect: every split is warped (snap moves unwarped "
                                 "maps in whole texels; quantize holds warped ones)");
+}
+
+} // namespace
+
+ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
+                       const scene::DirectionalLight& light, const Viewport& viewport, const SampleBounds* samples) {
+    ShadowPlan plan = planFrame(settings, S, camera, light, viewport);
+    const bool fit = settings.focus == FocusMode::Samples && samples != nullptr;
+    plan.fittedToSamples = fit;
+    // Beyond the memory budget the maps are drawn smaller, and the plan says so (splits[i].resolution).
+    const int resolution = budgetedResolution(settings);
+    if (resolution < settings.resolution)
+        plan.warnings.push_back("shadow_map.resolution " + std::to_string(settings.resolution) + " x " +
+                                std::to_string(settings.splits.count) + " splits needs " +
+                                std::to_string(int(shadowMapBytes(settings, settings.resolution) / (1 << 20))) +
+                                " MiB, over the " + std::to_string(int(kShadowMemoryBudgetBytes / (1 << 20))) +
+                                " MiB shadow-memory budget: drawn at " + std::to_string(resolution));
+    for (std::string& w : inertSettingWarnings(settings)) plan.warnings.push_back(std::move(w));
+    // Lookups reach past the sample they are for: filter taps, normal offset; a margin of that many
+    // texels (as a fraction of the map) keeps them on the map.
+    const double reachTexels = settings.filter.kernel / 2 + settings.filter.radius + settings.bias.normalOffset + 2.0;
+    const SplitContext k{settings,
+                         S,
+                         camera,
+                         viewport.aspect(),
+                         dvec3(plan.l),
+                         dvec3(plan.v),
+                         dvec3(camera.eye),
+                         glm::radians(double(plan.gammaDeg)),
+                         glm::radians(double(camera.fovYDeg)) * 0.5,
+                         fit ? samples : nullptr,
+                         resolution,
+                         reachTexels};
+    const std::vector<double> c = splitBoundaries(k, plan);
+    for (int i = 0; i + 1 < int(c.size()); ++i) {
+        SplitPlan split;
+        const auto focusFrustum = focusSplit(k, c, i, split);
+        if (!split.empty()) frameSplit(k, c, i, focusFrustum, split);
+        plan.splits.push_back(std::move(split));
+    }
+    finishPlan(settings, plan);
     return plan;
 }
 
