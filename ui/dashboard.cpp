@@ -41,7 +41,7 @@ Dashboard::Dashboard(LoadedScene scene, DashboardState state, DashboardOptions o
 }
 
 Dashboard::~Dashboard() {
-    cancelCasterLod();
+    casterLod_.cancel();
     cancelInspections();
     finishBackgroundWork(); // the workers read the scene's ground truth
 }
@@ -66,7 +66,7 @@ void Dashboard::pollSceneLoad() {
 }
 
 void Dashboard::adoptScene(LoadedScene loaded) {
-    cancelCasterLod(); // its build reads the scene being replaced
+    casterLod_.cancel(); // its build reads the scene being replaced
     cancelInspections();
     finishBackgroundWork(); // … and so do the inspections (its ground truth)
     scene_ = std::move(loaded);
@@ -127,8 +127,8 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     stepCasterLod();
     applyCameraInput(input);
     renderViews();
-    stepTradeoffSweep();
-    stepRecommend();
+    if (auto status = sweep_.step(measureContext())) status_ = std::move(*status);
+    if (auto status = recommend_.step(measureContext())) status_ = std::move(*status);
     pollInspections();
     updateInspection();
     updateHeatmap();

@@ -6,16 +6,19 @@
 // It only builds ImGui windows and asks the renderer for frames, so the same code runs in the
 // GLFW window (viewer.cpp) and headless into an image (dashboard_headless.cpp): same layout and
 // same pixels for the same state and size.
+#include "caster_lod_job.h"
 #include "dashboard_state.h"
 #include "geometry/analysis/tuner.h"
 #include "pass_inputs.h"
 #include "progressive.h"
 #include "recent_median.h"
+#include "recommend_job.h"
 #include "renderer/image.h"
 #include "renderer/inspection.h"
 #include "renderer/renderer.h"
 #include "renderer/texture.h"
 #include "scene_loader.h"
+#include "tradeoff_sweep.h"
 #include "ui/charts/tradeoff_chart.h"
 
 #include <array>
@@ -140,16 +143,16 @@ public:
         sweep_.x = x;
         sweep_.y = y;
     }
-    [[nodiscard]] bool tradeoffRunning() const noexcept { return sweep_.running; }
+    [[nodiscard]] bool tradeoffRunning() const noexcept { return sweep_.running(); }
     /// Starts the trade-off sweep (the "Run sweep" button).
     void startTradeoffSweep();
     /// Starts the Trade-off tab's "Recommend" (geometry/analysis/tuner.h) on the current view from the
     /// settings being edited; false, with the reason in the status bar, for a bad target or no truth.
     bool startRecommend(const std::string& target, int budgetEvals = 40);
-    [[nodiscard]] bool recommendRunning() const noexcept { return recommend_.running; }
+    [[nodiscard]] bool recommendRunning() const noexcept { return recommend_.running(); }
     /// The recommended settings, once a search has found them.
     [[nodiscard]] const std::optional<geometry::shadow::ShadowSettings>& recommendation() const noexcept {
-        return recommend_.result;
+        return recommend_.result();
     }
     /// Loads the recommendation into side A (0) or B (1; A/B compare turns on).
     void applyRecommendation(int side);
@@ -186,9 +189,8 @@ private:
 
     void pollSceneLoad();
     void adoptScene(LoadedScene loaded);
-    // Caster LOD (dashboard_lod.cpp): built once per scene, in the background, when a side asks.
+    // Caster LOD (dashboard_lod.cpp; built by casterLod_, caster_lod_job.h) when a side asks.
     void stepCasterLod();
-    void cancelCasterLod() noexcept;
     void giveCasterLod(renderer::Renderer& r) const;
     [[nodiscard]] std::string casterLodStatus(int side) const;
     // Drawing only what changed (dashboard_frame.cpp).
@@ -226,11 +228,10 @@ private:
     void drawInspector();
     void drawAnalyticChart(int which); // 0 n'(γ), 1 λ(θ), 2 m_z(z)
     void drawTradeoffTab();
-    void stepTradeoffSweep();
     // Recommend (dashboard_recommend.cpp).
     void drawRecommendControls();
-    void stepRecommend();
-    [[nodiscard]] charts::Chart recommendChart() const;
+    /// What the background measurements (trade-off sweep, Recommend) read this frame.
+    [[nodiscard]] MeasureContext measureContext();
     void exportChart(const charts::Chart& chart, const std::string& name);
     void drawStatusBar();
     void drawControlsPanel();
@@ -270,10 +271,7 @@ private:
     bool screenshotRequested_ = false;
     double cpuFrameMs_ = 0;
     int sceneGeneration_ = 0;
-    std::future<geometry::lod::SceneLod> lodBuild_;
-    std::shared_ptr<const geometry::lod::SceneLod> lod_;
-    std::atomic<float> lodProgress_{0.f};
-    std::atomic<bool> lodCancel_{false};
+    CasterLodJob casterLod_;
     std::string scenePath_;                      // the picker's text field
     std::optional<geometry::io::UpAxis> upAxis_; // model files' up axis; empty: their format's default
     std::string presetPath_;                     // the preset field
@@ -288,47 +286,8 @@ private:
     bool flying_ = false; // this frame moved the camera with the fly keys
     void applyCameraInput(const FrameInput& input);
 
-    /// The Charts panel's trade-off sweep, one configuration per dashboard frame so the UI stays live.
-    struct TradeoffSweep {
-        struct Config {
-            std::string label, preset;
-            geometry::shadow::ShadowSettings settings;
-        };
-        /// What one configuration measured: every figure the chart's axes can show.
-        struct Figures {
-            std::string label, preset;
-            double gpuMs = 0, cpuMs = 0, memoryMiB = 0, p95 = 0;
-            double interior = NAN, edge = NAN, misclassified = NAN, umbra = NAN; // with ground truth on
-            double soft = NAN;    // with ground truth and a sun of non-zero size
-            double flicker = NAN; // world-space, along `path` (when the sweep ran with one)
-        };
-        std::vector<Config> configs;
-        size_t next = 0;
-        bool running = false;
-        std::vector<Figures> results;
-        charts::TradeoffX x = charts::TradeoffX::GpuMs;
-        charts::TradeoffY y = charts::TradeoffY::P95;
-        std::string path;        // the scene file's path each configuration walks for flicker ("" none)
-        std::string runningPath; // the path of the sweep under way
-        std::unique_ptr<renderer::Renderer> renderer;
-        int generation = -1; // scene generation the renderer holds
-    } sweep_;
-
-    /// The Trade-off tab's Recommend: the tune search, one measurement per dashboard frame.
-    struct Recommend {
-        std::string target = "p95=2,interior=0.001,edge=0.02";
-        int budget = 40;
-        std::unique_ptr<geometry::analysis::Tuner> tuner;
-        bool running = false;
-        bool showChart = false; // the tune chart instead of the trade-off chart
-        std::optional<geometry::shadow::ShadowSettings> result;
-        std::string summary;
-        geometry::shadow::Viewport size{0, 0}; // of the view when the search started
-        geometry::scene::Camera camera;
-        geometry::scene::DirectionalLight light;
-        std::unique_ptr<renderer::Renderer> renderer;
-        int generation = -1;
-    } recommend_;
+    TradeoffSweep sweep_;    // the Charts panel's trade-off sweep (tradeoff_sweep.h)
+    RecommendJob recommend_; // the Trade-off tab's Recommend (recommend_job.h)
 };
 
 /// One line with a probe's values (status bar, inspector).

@@ -1,10 +1,10 @@
 // The Charts tabs: the analytic curves at the current frustum and γ (n'(γ), λ(θ), m_z(z)), and the
-// speed/accuracy trade-off of the presets and the current settings, swept over frames in the
-// background of the live dashboard. The same chart descriptions as `curves` and `bench`.
+// speed/accuracy trade-off of the presets and the current settings (the sweep itself:
+// tradeoff_sweep.h), measured in the background of the live dashboard. The same chart descriptions
+// as `curves` and `bench`.
 #include "dashboard.h"
 
 #include "geometry/io/preset.h"
-#include "renderer/measure.h"
 #include "ui/chart_image.h"
 #include "ui/charts/analytic_charts.h"
 #include "ui/charts/chart_imgui.h"
@@ -96,17 +96,16 @@ void Dashboard::drawAnalyticChart(int which) {
 
 void Dashboard::drawTradeoffTab() {
     TradeoffSweep& s = sweep_;
-    if (!s.running) {
+    if (!s.running()) {
         if (ImGui::SmallButton("Run sweep")) startTradeoffSweep();
         widgetMapRecord("tradeoff.run");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Times every preset in resources/presets and the current settings on this view (3 frames "
                               "each, GPU median) and measures aliasing p95; runs between dashboard frames");
     } else {
-        ImGui::ProgressBar(float(s.next) / float(std::max<size_t>(s.configs.size(), 1)),
-                           ImVec2(ImGui::GetFontSize() * 12, 0));
+        ImGui::ProgressBar(s.progress(), ImVec2(ImGui::GetFontSize() * 12, 0));
         ImGui::SameLine();
-        if (ImGui::SmallButton("Cancel")) s.running = false;
+        if (ImGui::SmallButton("Cancel")) s.cancel();
         widgetMapRecord("tradeoff.cancel");
     }
     ImGui::SameLine();
@@ -135,8 +134,8 @@ void Dashboard::drawTradeoffTab() {
         widgetMapRecord("tradeoff.path");
     }
     ImGui::SameLine();
-    const bool tune = recommend_.showChart && recommend_.tuner;
-    const charts::Chart chart = tune ? recommendChart() : charts::tradeoffChart(tradeoffResults(), s.x, s.y);
+    const bool tune = recommend_.showChart && recommend_.started();
+    const charts::Chart chart = tune ? recommend_.chart() : charts::tradeoffChart(tradeoffResults(), s.x, s.y);
     if (ImGui::SmallButton("Export SVG + PNG")) exportChart(chart, tune ? "tune" : "tradeoff");
     widgetMapRecord("export.tradeoff");
     drawRecommendControls();
@@ -146,88 +145,30 @@ void Dashboard::drawTradeoffTab() {
     charts::drawChart(ImGui::GetWindowDrawList(), chart, {area.x, area.y, area.w, area.h}, mouse);
 }
 
-std::vector<charts::TradeoffPoint> Dashboard::tradeoffResults() const {
-    std::vector<charts::TradeoffPoint> points;
-    for (const auto& f : sweep_.results) {
-        const double x = sweep_.x == charts::TradeoffX::GpuMs   ? f.gpuMs
-                         : sweep_.x == charts::TradeoffX::CpuMs ? f.cpuMs
-                                                                : f.memoryMiB;
-        const double y = sweep_.y == charts::TradeoffY::P95             ? f.p95
-                         : sweep_.y == charts::TradeoffY::Interior      ? f.interior
-                         : sweep_.y == charts::TradeoffY::Edge          ? f.edge
-                         : sweep_.y == charts::TradeoffY::Misclassified ? f.misclassified
-                         : sweep_.y == charts::TradeoffY::Soft          ? f.soft
-                         : sweep_.y == charts::TradeoffY::Umbra         ? f.umbra
-                                                                        : f.flicker;
-        points.push_back({f.label, f.preset, x, y});
-    }
-    return points;
-}
+std::vector<charts::TradeoffPoint> Dashboard::tradeoffResults() const { return sweep_.points(); }
 
 void Dashboard::startTradeoffSweep() {
-    TradeoffSweep& s = sweep_;
-    s.configs.clear();
-    s.results.clear();
+    std::vector<TradeoffSweep::Config> configs;
     for (const auto& path : options_.presetChoices) {
         try {
             const std::string stem = std::filesystem::path(path).stem().string();
-            s.configs.push_back({stem, stem, geometry::io::loadPreset(path)});
+            configs.push_back({stem, stem, geometry::io::loadPreset(path)});
         } catch (const std::exception& e) {
             status_ = e.what();
         }
     }
-    s.configs.push_back({"current A", "", state_.settings[0]});
-    if (comparing()) s.configs.push_back({"current B", "", state_.settings[1]});
-    s.runningPath = s.path;
-    s.next = 0;
-    s.running = true;
+    configs.push_back({"current A", "", state_.settings[0]});
+    if (comparing()) configs.push_back({"current B", "", state_.settings[1]});
+    sweep_.start(std::move(configs));
 }
 
-void Dashboard::stepTradeoffSweep() {
-    TradeoffSweep& s = sweep_;
-    if (!s.running) return;
-    if (s.next >= s.configs.size()) {
-        s.running = false;
-        status_ = "trade-off sweep done: " + std::to_string(s.results.size()) + " configurations";
-        return;
-    }
-    geometry::scene::Scene& scene = scene_.file.scene;
-    if (!s.renderer || s.generation != sceneGeneration_) {
-        s.renderer = std::make_unique<renderer::Renderer>(scene);
-        s.generation = sceneGeneration_;
-    }
-    giveCasterLod(*s.renderer);
-    const auto& cfg = s.configs[s.next++];
-    const geometry::shadow::Viewport size =
-        sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360};
-    try {
-        const renderer::Measurement m =
-            renderer::measure(*s.renderer, cfg.settings, scene.bounds(), scene.camera, scene.light, size,
-                              {.warmup = 1, .frames = 3, .truthSamples = state_.views.truthSamples},
-                              state_.views.truth ? scene_.truth.get() : nullptr);
-        TradeoffSweep::Figures f{cfg.label,
-                                 cfg.preset,
-                                 m.gpuMs,
-                                 m.cpuMs,
-                                 double(m.shadowMemoryBytes) / (1024.0 * 1024.0),
-                                 m.inspection.aliasing.p95};
-        if (const auto& t = m.inspection.truthClasses) {
-            f.interior = t->interiorFalseShadow + t->interiorFalseLit;
-            f.edge = t->edgeError;
-            f.umbra = t->umbraLight;
-        }
-        if (const auto& t = m.inspection.truth) f.misclassified = t->falseShadow + t->falseLit;
-        if (const auto& t = m.inspection.softTruth) f.soft = t->meanAbs;
-        const auto path = scene_.file.paths.find(s.runningPath);
-        if (path != scene_.file.paths.end() && scene_.truth)
-            f.flicker = renderer::measurePath(*s.renderer, cfg.settings, scene.bounds(),
-                                              {path->second.cameras, path->second.lights}, {scene.camera, scene.light},
-                                              10, size, *scene_.truth, state_.views.truthSamples)
-                            .flickerMean;
-        s.results.push_back(f);
-    } catch (const std::exception& e) {
-        status_ = "trade-off sweep: " + cfg.label + ": " + e.what();
-    }
+MeasureContext Dashboard::measureContext() {
+    return {scene_,
+            sceneGeneration_,
+            casterLod_.levels(),
+            sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360},
+            state_.views.truth,
+            state_.views.truthSamples};
 }
 
 } // namespace ui

@@ -305,8 +305,8 @@ void Dashboard::updateHeatmap() {
 // ---- [SECTION] Scheduling -------------------------------------------------------------------
 
 bool Dashboard::backgroundBusy() const noexcept {
-    return !retiring_.empty() || sides_[0].job || sides_[1].job || loader_.busy() || lodBuild_.valid() ||
-           sweep_.running || recommend_.running;
+    return !retiring_.empty() || sides_[0].job || sides_[1].job || loader_.busy() || casterLod_.building() ||
+           sweep_.running() || recommend_.running();
 }
 
 double Dashboard::now() const {
