@@ -101,57 +101,60 @@ std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, 
     return truthOcclusion(in, truth.surfaceNormals(eye, in.positions, in.normals, 0, nullptr, stop), l, truth, stop);
 }
 
-void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis,
-              std::stop_token stop) {
-    if (samplesPerAxis < 1 || samplesPerAxis > GroundTruth::kMaxSamplesPerAxis)
-        throw std::invalid_argument("--truth-samples: " + std::to_string(samplesPerAxis) + " is outside 1.." +
-                                    std::to_string(GroundTruth::kMaxSamplesPerAxis));
-    throwIfStopped(stop);
-    const glm::vec3& l = plan.l;
-    in.truthSamples = samplesPerAxis;
-    in.geometricNormals = truth.surfaceNormals(plan.eye, in.positions, in.normals, 0, &in.mesh, stop);
-    in.occluded = truthOcclusion(in, in.geometricNormals, l, truth, stop);
+namespace {
+
+/// The truth at every sample: GroundTruth::coverage over an N-times finer image traces exactly the
+/// samples of this one (sub-pixel centres), so each can meet the rendered s there; in.coverage gets
+/// their mean per pixel (NaN where no sample saw a surface). Returns the per-sample truth.
+std::vector<float> sampleCoverage(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int N,
+                                  std::stop_token stop) {
+    in.coverage.assign(in.positions.size(), 1.f);
+    if (N <= 1) return {};
+    std::vector<float> sampleTruth =
+        truth.coverage(plan.eyeProj * plan.eyeView, in.width * N, in.height * N, plan.l, 1, 0, stop);
+    for (int y = 0; y < in.height; ++y)
+        for (int x = 0; x < in.width; ++x) {
+            double sum = 0;
+            int hits = 0;
+            for (int sy = 0; sy < N; ++sy)
+                for (int sx = 0; sx < N; ++sx) {
+                    const float t = sampleTruth[(size_t(y) * N + sy) * size_t(in.width) * N + size_t(x) * N + sx];
+                    if (std::isfinite(t)) sum += t, ++hits;
+                }
+            in.coverage[size_t(y) * size_t(in.width) + size_t(x)] =
+                hits ? float(sum / hits) : std::numeric_limits<float>::quiet_NaN();
+        }
+    return sampleTruth;
+}
+
+/// The per-pixel inputs of the truth classes besides s and c.
+struct PixelFacts {
+    std::vector<float> texelsPerPixel, gap; // 1/m; the occluder's distance within the peter-panning reach
+    std::vector<uint8_t> singular;          // J singular: m not measured
+    std::vector<int> split;                 // the split each receiver was looked up in
+};
+
+/// Per receiver, what the scene alone says: the undecidable pixels (terminator, shading and
+/// geometric normals disagreeing, an occluder within one pixel footprint) into in.ambiguity, and
+/// c where no sample saw a surface; plus the PixelFacts.
+PixelFacts pixelFacts(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int N,
+                      std::stop_token stop) {
     const size_t n = in.positions.size();
-    const glm::vec3 toLight = -glm::normalize(l);
-    in.coverage.assign(n, 1.f);
-    // The truth at every sample: GroundTruth::coverage over a samplesPerAxis-times finer image traces
-    // exactly its samples of this one (sub-pixel centres), so each can meet the rendered s there.
-    const int N = samplesPerAxis;
-    std::vector<float> sampleTruth;
-    if (N > 1) {
-        sampleTruth = truth.coverage(plan.eyeProj * plan.eyeView, in.width * N, in.height * N, l, 1, 0, stop);
-        for (int y = 0; y < in.height; ++y)
-            for (int x = 0; x < in.width; ++x) {
-                double sum = 0;
-                int hits = 0;
-                for (int sy = 0; sy < N; ++sy)
-                    for (int sx = 0; sx < N; ++sx) {
-                        const float t = sampleTruth[(size_t(y) * N + sy) * size_t(in.width) * N + size_t(x) * N + sx];
-                        if (std::isfinite(t)) sum += t, ++hits;
-                    }
-                in.coverage[size_t(y) * size_t(in.width) + size_t(x)] =
-                    hits ? float(sum / hits) : std::numeric_limits<float>::quiet_NaN();
-            }
-    }
-    if (in.sampleShadow.size() != sampleTruth.size()) in.sampleShadow.clear(); // not drawn: s against c
-    // Where the edges lie, from kEdgeSamplesPerAxis² samples whatever N (truth_classes.h, edgeCoverage).
-    std::vector<float> edgeCoverage;
-    if (N < kEdgeSamplesPerAxis)
-        edgeCoverage =
-            truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, l, kEdgeSamplesPerAxis, 0, stop);
+    const glm::vec3 toLight = -glm::normalize(plan.l);
+    PixelFacts f;
     in.ambiguity.assign(n, uint8_t(Ambiguity::None));
-    std::vector<float> texelsPerPixel(n, std::numeric_limits<float>::quiet_NaN());
+    f.texelsPerPixel.assign(n, std::numeric_limits<float>::quiet_NaN());
     std::vector<float> reach(n, std::numeric_limits<float>::quiet_NaN()), footprint(n, 0.f);
-    std::vector<uint8_t> singular(n, 0);
-    std::vector<int> split(n, -1);
+    f.singular.assign(n, 0);
+    f.split.assign(n, -1);
     for (size_t i = 0; i < n; ++i) {
         if (i % kPixelsPerStopCheck == 0) throwIfStopped(stop);
         const float centre = (*in.occluded)[i] ? 0.f : 1.f;
-        if (samplesPerAxis == 1 || !std::isfinite(in.coverage[i])) in.coverage[i] = centre; // no sample saw it
-        if (in.m[i] > 0.f && in.m[i] < kSingularM) texelsPerPixel[i] = 1.f / in.m[i];
+        if (N == 1 || !std::isfinite(in.coverage[i])) in.coverage[i] = centre; // no sample saw it
+        if (in.m[i] > 0.f && in.m[i] < kSingularM) f.texelsPerPixel[i] = 1.f / in.m[i];
         if (!in.receiver[i]) continue;
-        singular[i] = std::isfinite(in.m[i]) && !(in.m[i] < kSingularM);
-        split[i] = int(std::lround(in.aux[i].z));
+        f.singular[i] = std::isfinite(in.m[i]) && !(in.m[i] < kSingularM);
+        f.split[i] = int(std::lround(in.aux[i].z));
         const float geometric = glm::dot(in.geometricNormals[i], toLight);
         const float shading = glm::dot(in.normals[i], toLight);
         if (std::abs(geometric) < 0.1f) in.ambiguity[i] = uint8_t(Ambiguity::Terminator);
@@ -163,9 +166,32 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
     }
     // The occluder's distance where it lies within the peter-panning reach; within one footprint,
     // a contact no map can be judged on.
-    std::vector<float> gap = truth.occluderDistance(in.positions, in.geometricNormals, l, reach, 0, stop);
+    f.gap = truth.occluderDistance(in.positions, in.geometricNormals, plan.l, reach, 0, stop);
     for (size_t i = 0; i < n; ++i)
-        if (gap[i] <= footprint[i]) in.ambiguity[i] = uint8_t(Ambiguity::Contact);
+        if (f.gap[i] <= footprint[i]) in.ambiguity[i] = uint8_t(Ambiguity::Contact);
+    return f;
+}
+
+} // namespace
+
+void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int samplesPerAxis,
+              std::stop_token stop) {
+    if (samplesPerAxis < 1 || samplesPerAxis > GroundTruth::kMaxSamplesPerAxis)
+        throw std::invalid_argument("--truth-samples: " + std::to_string(samplesPerAxis) + " is outside 1.." +
+                                    std::to_string(GroundTruth::kMaxSamplesPerAxis));
+    throwIfStopped(stop);
+    const int N = samplesPerAxis;
+    in.truthSamples = N;
+    in.geometricNormals = truth.surfaceNormals(plan.eye, in.positions, in.normals, 0, &in.mesh, stop);
+    in.occluded = truthOcclusion(in, in.geometricNormals, plan.l, truth, stop);
+    const std::vector<float> sampleTruth = sampleCoverage(in, plan, truth, N, stop);
+    if (in.sampleShadow.size() != sampleTruth.size()) in.sampleShadow.clear(); // not drawn: s against c
+    // Where the edges lie, from kEdgeSamplesPerAxis² samples whatever N (truth_classes.h, edgeCoverage).
+    std::vector<float> edgeCoverage;
+    if (N < kEdgeSamplesPerAxis)
+        edgeCoverage =
+            truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, plan.l, kEdgeSamplesPerAxis, 0, stop);
+    const PixelFacts facts = pixelFacts(in, plan, truth, N, stop);
     in.truth = truthStats(in.shadow, *in.occluded, in.receiver);
     addSoftTruth(in, plan, truth, stop);
     TruthClassInput input;
@@ -174,20 +200,20 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
     input.coverage = in.coverage;
     input.receiver = in.receiver;
     input.ambiguity = in.ambiguity;
-    input.texelsPerPixel = texelsPerPixel;
+    input.texelsPerPixel = facts.texelsPerPixel;
     input.samplesPerAxis = N;
     if (!in.sampleShadow.empty()) {
         input.sampleS = in.sampleShadow;
         input.sampleTruth = sampleTruth;
     }
-    input.singular = singular;
+    input.singular = facts.singular;
     input.visibility = in.sunVisibility;
-    input.contactGap = gap;
+    input.contactGap = facts.gap;
     input.edgeCoverage = edgeCoverage;
     throwIfStopped(stop);
     in.truthClasses = truthClasses(input, &in.classes);
     throwIfStopped(stop);
-    in.splitTruthClasses = truthClassesByGroup(input, split, int(in.utilization.size()));
+    in.splitTruthClasses = truthClassesByGroup(input, facts.split, int(in.utilization.size()));
     throwIfStopped(stop);
     in.meshNames = truth.meshNames();
     in.meshTruthClasses = truthClassesByGroup(input, in.mesh, int(in.meshNames.size()));
