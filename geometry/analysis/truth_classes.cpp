@@ -95,36 +95,82 @@ struct Tally {
     }
 };
 
-/// Classifies every pixel whose group[i] lies in [0, groups) (every pixel into group 0 when `group`
-/// is empty), one pass over the image whatever the number of groups.
-std::vector<TruthClasses> classify(const TruthClassInput& in, std::span<const int> group, int groups,
-                                   std::vector<TruthClass>* classes) {
-    check(in);
-    if (!group.empty() && group.size() != in.s.size())
-        throw std::invalid_argument("truthClasses: the groups do not match the pixels");
-    const size_t n = in.s.size();
-    const int w = in.width, h = int(n / size_t(w));
-    const int N = in.samplesPerAxis;
-    const bool perSample = !in.sampleS.empty();
-    const auto counted = [&](size_t i) {
-        return in.receiver[i] && std::isfinite(in.s[i]) && std::isfinite(in.coverage[i]) && in.coverage[i] >= 0.f &&
-               in.coverage[i] <= 1.f;
-    };
-    const auto fractional = [&](size_t i) { return in.coverage[i] > 0.f && in.coverage[i] < 1.f; };
-    const auto undecidable = [&](size_t i) {
-        return (!in.ambiguity.empty() && in.ambiguity[i] != 0) || (!in.singular.empty() && in.singular[i] != 0);
-    };
-    const auto verdict = [&](int x, int y) {
-        const size_t i = size_t(y) * size_t(w) + size_t(x);
+/// Classifies the pixels of one TruthClassInput (docs/design.md §4 "Truth classes"): each counted
+/// pixel's verdict against its truth, whether it lies near a true edge, and how far a misplaced
+/// rendered edge lies from the true one.
+class Classifier {
+public:
+    explicit Classifier(const TruthClassInput& in)
+        : in_(in), n_(in.s.size()), w_(in.width), h_(int(n_ / size_t(w_))),
+          edgeC_(in.edgeCoverage.empty() ? in.coverage : in.edgeCoverage) {
+        // Per pixel, the mean rendered s (for the displacement search: a pixel's rendered state).
+        meanS_.assign(n_, std::numeric_limits<float>::quiet_NaN());
+        verdicts_.resize(n_);
+        for (int y = 0; y < h_; ++y)
+            for (int x = 0; x < w_; ++x) {
+                const size_t i = index(x, y);
+                if (!counted(i)) continue;
+                verdicts_[i] = verdict(x, y);
+                meanS_[i] = float(verdicts_[i].s);
+            }
+    }
+
+    /// Every pixel whose group[i] lies in [0, groups) (every pixel into group 0 when `group` is
+    /// empty), one pass over the image whatever the number of groups.
+    std::vector<TruthClasses> run(std::span<const int> group, int groups, std::vector<TruthClass>* classes) const {
+        if (classes) classes->assign(n_, TruthClass::NotCounted);
+        std::vector<Tally> tallies(size_t(std::max(groups, 0)));
+        for (int y = 0; y < h_; ++y)
+            for (int x = 0; x < w_; ++x) {
+                const size_t i = index(x, y);
+                const int g = group.empty() ? 0 : group[i];
+                if (g < 0 || g >= groups || !counted(i)) continue;
+                Tally& t = tallies[size_t(g)];
+                ++t.out.count;
+                TruthClass c = TruthClass::Agrees;
+                if (!in_.ambiguity.empty() && in_.ambiguity[i] != 0) {
+                    ++t.amb;
+                    c = TruthClass::Ambiguous;
+                } else if (!in_.singular.empty() && in_.singular[i] != 0) {
+                    ++t.singular;
+                    c = TruthClass::Singular;
+                } else {
+                    c = tallyDecidable(t, x, y);
+                }
+                if (classes) (*classes)[i] = c;
+            }
+        std::vector<TruthClasses> out;
+        out.reserve(tallies.size());
+        for (Tally& t : tallies) out.push_back(t.finish());
+        return out;
+    }
+
+private:
+    [[nodiscard]] size_t index(int x, int y) const noexcept { return size_t(y) * size_t(w_) + size_t(x); }
+    [[nodiscard]] bool counted(size_t i) const noexcept {
+        return in_.receiver[i] && std::isfinite(in_.s[i]) && std::isfinite(in_.coverage[i]) && in_.coverage[i] >= 0.f &&
+               in_.coverage[i] <= 1.f;
+    }
+    [[nodiscard]] bool fractional(size_t i) const noexcept { return in_.coverage[i] > 0.f && in_.coverage[i] < 1.f; }
+    [[nodiscard]] bool undecidable(size_t i) const noexcept {
+        return (!in_.ambiguity.empty() && in_.ambiguity[i] != 0) || (!in_.singular.empty() && in_.singular[i] != 0);
+    }
+    [[nodiscard]] float fine(size_t i) const noexcept { return std::isfinite(edgeC_[i]) ? edgeC_[i] : in_.coverage[i]; }
+    [[nodiscard]] bool truthLit(size_t j) const noexcept { return in_.coverage[j] > 0.5f; }
+    [[nodiscard]] bool renderedLit(size_t j) const noexcept { return meanS_[j] > 0.5f; }
+
+    [[nodiscard]] PixelVerdict verdict(int x, int y) const {
+        const size_t i = index(x, y);
+        const int N = in_.samplesPerAxis;
         PixelVerdict v;
         size_t k = 0;
         double sSum = 0;
-        if (perSample)
+        if (!in_.sampleS.empty())
             for (int sy = 0; sy < N; ++sy)
                 for (int sx = 0; sx < N; ++sx) {
-                    const size_t j = (size_t(y) * size_t(N) + size_t(sy)) * size_t(w) * size_t(N) +
+                    const size_t j = (size_t(y) * size_t(N) + size_t(sy)) * size_t(w_) * size_t(N) +
                                      size_t(x) * size_t(N) + size_t(sx);
-                    const float sj = in.sampleS[j], tj = in.sampleTruth[j];
+                    const float sj = in_.sampleS[j], tj = in_.sampleTruth[j];
                     if (!std::isfinite(sj) || !std::isfinite(tj)) continue;
                     ++k;
                     sSum += sj;
@@ -137,134 +183,121 @@ std::vector<TruthClasses> classify(const TruthClassInput& in, std::span<const in
             v.wrongLit /= double(k);
             return v;
         }
-        const double c = in.coverage[i];
-        v.s = in.s[i];
+        const double c = in_.coverage[i];
+        v.s = in_.s[i];
         // Against c: its lit samples wrongly shadowed, its shadowed samples wrongly lit.
-        if (in.s[i] == 0.5f) {
+        if (in_.s[i] == 0.5f) {
             v.wrongShadow = 0.5 * c;
             v.wrongLit = 0.5 * (1.0 - c);
-        } else if (in.s[i] < 0.5f) {
+        } else if (in_.s[i] < 0.5f) {
             v.wrongShadow = c;
         } else {
             v.wrongLit = 1.0 - c;
         }
         return v;
-    };
-    const std::span<const float> edgeC = in.edgeCoverage.empty() ? in.coverage : in.edgeCoverage;
-    const auto fine = [&](size_t i) { return std::isfinite(edgeC[i]) ? edgeC[i] : in.coverage[i]; };
-    const auto nearEdge = [&](int x, int y) {
-        const size_t i = size_t(y) * size_t(w) + size_t(x);
+    }
+
+    [[nodiscard]] bool nearEdge(int x, int y) const {
+        const size_t i = index(x, y);
         if (fractional(i) || (fine(i) > 0.f && fine(i) < 1.f)) return true;
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
                 const int nx = x + dx, ny = y + dy;
-                if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-                const size_t j = size_t(ny) * size_t(w) + size_t(nx);
-                if (counted(j) && (in.coverage[j] != in.coverage[i] || fine(j) != fine(i))) return true;
+                if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= w_ || ny >= h_) continue;
+                const size_t j = index(nx, ny);
+                if (counted(j) && (in_.coverage[j] != in_.coverage[i] || fine(j) != fine(i))) return true;
             }
         return false;
-    };
-    // Per pixel, the mean rendered s (for the displacement search: a pixel's rendered state).
-    std::vector<float> meanS(n, std::numeric_limits<float>::quiet_NaN());
-    std::vector<PixelVerdict> verdicts(n);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const size_t i = size_t(y) * size_t(w) + size_t(x);
-            if (!counted(i)) continue;
-            verdicts[i] = verdict(x, y);
-            meanS[i] = float(verdicts[i].s);
-        }
-    const auto truthLit = [&](size_t j) { return in.coverage[j] > 0.5f; };
-    const auto renderedLit = [&](size_t j) { return meanS[j] > 0.5f; };
+    }
+
     /// Distance from pixel (x, y) to the nearest counted pixel where `wanted(j)` holds, less half a
     /// pixel (an edge lies between pixel centres); kSearchRadius when none is that close.
-    const auto distanceTo = [&](int x, int y, const auto& wanted) {
+    template <class Wanted> [[nodiscard]] double distanceTo(int x, int y, const Wanted& wanted) const {
         double best = kSearchRadius;
         for (int dy = -kSearchRadius; dy <= kSearchRadius; ++dy)
             for (int dx = -kSearchRadius; dx <= kSearchRadius; ++dx) {
                 const int nx = x + dx, ny = y + dy;
-                if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-                const size_t j = size_t(ny) * size_t(w) + size_t(nx);
+                if (nx < 0 || ny < 0 || nx >= w_ || ny >= h_) continue;
+                const size_t j = index(nx, ny);
                 if (!counted(j) || !wanted(j)) continue;
                 best = std::min(best, std::sqrt(double(dx * dx + dy * dy)) - 0.5);
             }
         return std::max(best, 0.0);
-    };
+    }
 
-    if (classes) classes->assign(n, TruthClass::NotCounted);
-    std::vector<Tally> tallies(size_t(std::max(groups, 0)));
-    const auto groupOf = [&](size_t i) { return group.empty() ? 0 : group[i]; };
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const size_t i = size_t(y) * size_t(w) + size_t(x);
-            const int g = groupOf(i);
-            if (g < 0 || g >= groups || !counted(i)) continue;
-            Tally& t = tallies[size_t(g)];
-            ++t.out.count;
-            TruthClass c = TruthClass::Agrees;
-            if (!in.ambiguity.empty() && in.ambiguity[i] != 0) {
-                ++t.amb;
-                c = TruthClass::Ambiguous;
-            } else if (!in.singular.empty() && in.singular[i] != 0) {
-                ++t.singular;
-                c = TruthClass::Singular;
-            } else {
-                const PixelVerdict& v = verdicts[i];
-                const double cov = in.coverage[i];
-                ++t.penumbra;
-                t.absSum += std::abs(v.s - cov);
-                const bool edge = nearEdge(x, y);
-                const bool umbra = in.visibility.empty() ? cov == 0.0 : in.visibility[i] == 0.f;
-                if (umbra && !edge) {
-                    ++t.out.umbraPixels;
-                    t.umbraSum += v.s;
-                }
-                // The truth edge's length here: a fractional pixel, or a step to the right or down.
-                if (fractional(i)) t.edgeLength += 1.0;
-                for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
-                    if (x + dx >= w || y + dy >= h) continue;
-                    const size_t j = size_t(y + dy) * size_t(w) + size_t(x + dx);
-                    if (counted(j) && !undecidable(j) && !fractional(i) && !fractional(j) &&
-                        in.coverage[j] != in.coverage[i])
-                        t.edgeLength += 1.0;
-                }
-                if (!in.contactGap.empty() && std::isfinite(in.contactGap[i]) && v.wrongLit > 0) {
-                    t.contactLit += v.wrongLit;
-                    t.gaps.push_back(in.contactGap[i]);
-                }
-                const double tpp =
-                    in.texelsPerPixel.empty() ? std::numeric_limits<double>::quiet_NaN() : double(in.texelsPerPixel[i]);
-                if (edge) {
-                    t.edge += v.wrong();
-                    if (std::isfinite(tpp)) t.edgeTexels += v.wrong() * tpp;
-                    if (v.wrong() > 0) c = TruthClass::EdgeError;
-                    // Where the pixel's mean truth and mean render fall on different sides of 0.5
-                    // (a tie at 0.5 on either side measures nothing).
-                    const bool truth = truthLit(i), rendered = renderedLit(i);
-                    if (cov != 0.5 && v.s != 0.5 && rendered != truth) {
-                        // The width of the wrong band this pixel lies in, across the edge: from the
-                        // true edge (the nearest pixel whose truth is what was rendered here) to the
-                        // rendered one (the nearest pixel rendered the other way). Every pixel of a
-                        // band W pixels wide reports W: how far the rendered edge lies from the true one.
-                        const double d = distanceTo(x, y, [&](size_t j) { return truthLit(j) == rendered; }) +
-                                         distanceTo(x, y, [&](size_t j) { return renderedLit(j) != rendered; });
-                        t.px.push_back(d);
-                        if (std::isfinite(tpp)) t.texels.push_back(d * tpp);
-                    }
-                } else {
-                    ++t.interiorPixels;
-                    t.interiorAbsSum += std::abs(v.s - cov);
-                    t.interiorShadow += v.wrongShadow;
-                    t.interiorLit += v.wrongLit;
-                    if (v.wrong() > 0) c = cov > 0.5 ? TruthClass::InteriorFalseShadow : TruthClass::InteriorFalseLit;
-                }
-            }
-            if (classes) (*classes)[i] = c;
+    /// The truth edge's length at (x, y): a fractional pixel, or a step to the right or down.
+    [[nodiscard]] double edgeLengthAt(int x, int y) const {
+        const size_t i = index(x, y);
+        double length = fractional(i) ? 1.0 : 0.0;
+        for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}}) {
+            if (x + dx >= w_ || y + dy >= h_) continue;
+            const size_t j = index(x + dx, y + dy);
+            if (counted(j) && !undecidable(j) && !fractional(i) && !fractional(j) && in_.coverage[j] != in_.coverage[i])
+                length += 1.0;
         }
-    std::vector<TruthClasses> out;
-    out.reserve(tallies.size());
-    for (Tally& t : tallies) out.push_back(t.finish());
-    return out;
+        return length;
+    }
+
+    /// Adds a decidable pixel to `t`: near an edge or interior, umbra, contact; returns its class.
+    TruthClass tallyDecidable(Tally& t, int x, int y) const {
+        const size_t i = index(x, y);
+        const PixelVerdict& v = verdicts_[i];
+        const double cov = in_.coverage[i];
+        ++t.penumbra;
+        t.absSum += std::abs(v.s - cov);
+        const bool edge = nearEdge(x, y);
+        const bool umbra = in_.visibility.empty() ? cov == 0.0 : in_.visibility[i] == 0.f;
+        if (umbra && !edge) {
+            ++t.out.umbraPixels;
+            t.umbraSum += v.s;
+        }
+        t.edgeLength += edgeLengthAt(x, y);
+        if (!in_.contactGap.empty() && std::isfinite(in_.contactGap[i]) && v.wrongLit > 0) {
+            t.contactLit += v.wrongLit;
+            t.gaps.push_back(in_.contactGap[i]);
+        }
+        const double tpp =
+            in_.texelsPerPixel.empty() ? std::numeric_limits<double>::quiet_NaN() : double(in_.texelsPerPixel[i]);
+        if (!edge) {
+            ++t.interiorPixels;
+            t.interiorAbsSum += std::abs(v.s - cov);
+            t.interiorShadow += v.wrongShadow;
+            t.interiorLit += v.wrongLit;
+            if (v.wrong() > 0) return cov > 0.5 ? TruthClass::InteriorFalseShadow : TruthClass::InteriorFalseLit;
+            return TruthClass::Agrees;
+        }
+        t.edge += v.wrong();
+        if (std::isfinite(tpp)) t.edgeTexels += v.wrong() * tpp;
+        // Where the pixel's mean truth and mean render fall on different sides of 0.5 (a tie at 0.5
+        // on either side measures nothing).
+        const bool truth = truthLit(i), rendered = renderedLit(i);
+        if (cov != 0.5 && v.s != 0.5 && rendered != truth) {
+            // The width of the wrong band this pixel lies in, across the edge: from the true edge (the
+            // nearest pixel whose truth is what was rendered here) to the rendered one (the nearest
+            // pixel rendered the other way). Every pixel of a band W pixels wide reports W: how far
+            // the rendered edge lies from the true one.
+            const double d = distanceTo(x, y, [&](size_t j) { return truthLit(j) == rendered; }) +
+                             distanceTo(x, y, [&](size_t j) { return renderedLit(j) != rendered; });
+            t.px.push_back(d);
+            if (std::isfinite(tpp)) t.texels.push_back(d * tpp);
+        }
+        return v.wrong() > 0 ? TruthClass::EdgeError : TruthClass::Agrees;
+    }
+
+    const TruthClassInput& in_;
+    size_t n_;
+    int w_, h_;
+    std::span<const float> edgeC_;
+    std::vector<float> meanS_;
+    std::vector<PixelVerdict> verdicts_;
+};
+
+std::vector<TruthClasses> classify(const TruthClassInput& in, std::span<const int> group, int groups,
+                                   std::vector<TruthClass>* classes) {
+    check(in);
+    if (!group.empty() && group.size() != in.s.size())
+        throw std::invalid_argument("truthClasses: the groups do not match the pixels");
+    return Classifier(in).run(group, groups, classes);
 }
 
 } // namespace
