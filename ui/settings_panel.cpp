@@ -12,82 +12,103 @@
 
 namespace ui {
 
+namespace {
+
+using Kind = geometry::shadow::SettingInfo::Kind;
+
+/// The row's widget; `value` in and out; true when the user changed it this frame.
+bool valueWidget(const geometry::shadow::SettingInfo& info, const std::string& label, double& value) {
+    bool edited = false;
+    switch (info.kind) {
+    case Kind::Bool: {
+        bool b = value != 0.0;
+        edited = ImGui::Checkbox(label.c_str(), &b);
+        value = b ? 1.0 : 0.0;
+        break;
+    }
+    case Kind::Choice: {
+        int index = static_cast<int>(value);
+        const int shown = std::clamp(index, 0, int(info.choices.size()) - 1);
+        if (ImGui::BeginCombo(label.c_str(), std::string(info.choices[shown]).c_str())) {
+            for (int i = 0; i < int(info.choices.size()); ++i) {
+                if (ImGui::Selectable(std::string(info.choices[i]).c_str(), i == index)) index = i, edited = true;
+                widgetMapRecord(label + "=" + std::string(info.choices[i]));
+            }
+            ImGui::EndCombo();
+        }
+        value = index;
+        break;
+    }
+    case Kind::Int: {
+        int v = static_cast<int>(value);
+        // No AlwaysClamp: a typed out-of-range value must be refused with a message, not
+        // silently turned into something else.
+        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
+        edited = ImGui::SliderInt(label.c_str(), &v, int(info.min), int(info.max), "%d", flags);
+        if (edited && info.odd && v % 2 == 0 && v >= info.min && v <= info.max)
+            v = v + 1 <= int(info.max) ? v + 1 : v - 1; // odd-only keys snap
+        value = v;
+        break;
+    }
+    case Kind::Float: {
+        float v = static_cast<float>(value);
+        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
+        edited = ImGui::SliderFloat(label.c_str(), &v, float(info.min), float(info.max), "%.4g", flags);
+        value = v;
+        break;
+    }
+    }
+    return edited;
+}
+
+/// A value typed into a slider's text field (ctrl+click) counts once, when the field closes with an
+/// edit: ImGui reports every keystroke, and "9" on the way to "999" must not apply. Returns whether
+/// `value` is to be applied now.
+bool typedValueComplete(const geometry::shadow::SettingInfo& info, const std::string& label, bool edited,
+                        double& value) {
+    static std::map<std::string, double> typed;
+    if (ImGui::IsItemActive() && ImGui::GetIO().WantTextInput && (info.kind == Kind::Int || info.kind == Kind::Float)) {
+        if (edited) typed[label] = value;
+        return false;
+    }
+    const auto it = typed.find(label);
+    if (it == typed.end()) return edited;
+    // The field closed (Return, or a click elsewhere) since the last keystroke; Escape cancels.
+    const bool escaped = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) ||
+                         ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    if (!escaped) value = it->second;
+    typed.erase(it);
+    return !escaped || edited;
+}
+
+/// Help, range, and why the row is greyed (the setting that makes it inert).
+void rowTooltip(const geometry::shadow::SettingInfo& info, const geometry::shadow::ShadowSettings& settings,
+                bool applies) {
+    if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    std::string inert;
+    if (const auto* by = applies ? nullptr : geometry::shadow::findSetting(info.governedBy))
+        inert = "\nNo effect with " + std::string(info.governedBy) + " = " + by->format(settings);
+    ImGui::SetTooltip("%s\n%s (ctrl+click to type a value)%s", info.help.c_str(), info.rangeText().c_str(),
+                      inert.c_str());
+}
+
+} // namespace
+
 bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGroup)(std::string_view, const void*),
                          const void* ctx, std::string* error) {
-    using Kind = geometry::shadow::SettingInfo::Kind;
     bool changed = false;
     for (const auto& info : geometry::shadow::settingsDeclaration()) {
         if (inGroup && !inGroup(info.key, ctx)) continue;
         const std::string label(info.key);
         double value = info.get(settings);
-        bool edited = false;
         // Greyed, and closed to input, while the other settings make it inert (its row's `when`).
         const bool applies = info.appliesTo(settings);
         if (!applies) ImGui::BeginDisabled();
-        switch (info.kind) {
-        case Kind::Bool: {
-            bool b = value != 0.0;
-            edited = ImGui::Checkbox(label.c_str(), &b);
-            value = b ? 1.0 : 0.0;
-            break;
-        }
-        case Kind::Choice: {
-            int index = static_cast<int>(value);
-            const int shown = std::clamp(index, 0, int(info.choices.size()) - 1);
-            if (ImGui::BeginCombo(label.c_str(), std::string(info.choices[shown]).c_str())) {
-                for (int i = 0; i < int(info.choices.size()); ++i) {
-                    if (ImGui::Selectable(std::string(info.choices[i]).c_str(), i == index)) index = i, edited = true;
-                    widgetMapRecord(label + "=" + std::string(info.choices[i]));
-                }
-                ImGui::EndCombo();
-            }
-            value = index;
-            break;
-        }
-        case Kind::Int: {
-            int v = static_cast<int>(value);
-            // No AlwaysClamp: a typed out-of-range value must be refused with a message, not
-            // silently turned into something else.
-            const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
-            edited = ImGui::SliderInt(label.c_str(), &v, int(info.min), int(info.max), "%d", flags);
-            if (edited && info.odd && v % 2 == 0 && v >= info.min && v <= info.max)
-                v = v + 1 <= int(info.max) ? v + 1 : v - 1; // odd-only keys snap
-            value = v;
-            break;
-        }
-        case Kind::Float: {
-            float v = static_cast<float>(value);
-            const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
-            edited = ImGui::SliderFloat(label.c_str(), &v, float(info.min), float(info.max), "%.4g", flags);
-            value = v;
-            break;
-        }
-        }
+        bool edited = valueWidget(info, label, value);
         widgetMapRecord(label);
-        // A value typed into a slider's text field (ctrl+click) counts once, when the field closes
-        // with an edit: ImGui reports every keystroke, and "9" on the way to "999" must not apply.
-        static std::map<std::string, double> typed;
-        if (ImGui::IsItemActive() && ImGui::GetIO().WantTextInput &&
-            (info.kind == Kind::Int || info.kind == Kind::Float)) {
-            if (edited) typed[label] = value;
-            edited = false;
-        } else if (const auto it = typed.find(label); it != typed.end()) {
-            // The field closed (Return, or a click elsewhere) since the last keystroke; Escape cancels.
-            if (!ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) &&
-                !ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
-                value = it->second;
-                edited = true;
-            }
-            typed.erase(it);
-        }
+        edited = typedValueComplete(info, label, edited, value);
         if (!applies) ImGui::EndDisabled();
-        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-            std::string inert;
-            if (const auto* by = applies ? nullptr : geometry::shadow::findSetting(info.governedBy))
-                inert = "\nNo effect with " + std::string(info.governedBy) + " = " + by->format(settings);
-            ImGui::SetTooltip("%s\n%s (ctrl+click to type a value)%s", info.help.c_str(), info.rangeText().c_str(),
-                              inert.c_str());
-        }
+        rowTooltip(info, settings, applies);
         if (!edited) continue;
         if (std::isfinite(value) && value >= info.min && value <= info.max) {
             info.set(settings, value);
