@@ -168,34 +168,115 @@ ui::charts::Chart benchChart(const std::vector<BenchConfiguration>& configs, con
     return chart;
 }
 
-} // namespace
+using NamedView = std::pair<std::string, geometry::io::CanonicalView>;
 
-int runBench(const BenchOptions& o) {
-    const std::vector<BenchConfiguration> configs = benchConfigurations(o);
-    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene), {}, o.common.up);
-    std::vector<std::pair<std::string, geometry::io::CanonicalView>> views;
-    if (o.common.views.empty())
+/// The views to measure: those --view names, else every view of the scene file, else its own camera and light.
+std::vector<NamedView> benchViews(const geometry::io::SceneFile& file, const std::vector<std::string>& names) {
+    std::vector<NamedView> views;
+    if (names.empty())
         for (const auto& v : file.views) views.emplace_back(v);
-    for (const auto& name : o.common.views) {
+    for (const auto& name : names) {
         const auto it = file.views.find(name);
         if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
         views.emplace_back(*it);
     }
     if (views.empty()) views.emplace_back("default", geometry::io::CanonicalView{file.scene.camera, file.scene.light});
-    const ui::charts::TradeoffX xAxis = ui::charts::parseTradeoffX(o.x).value_or(ui::charts::TradeoffX::GpuMs);
-    const ui::charts::TradeoffY yAxis = ui::charts::parseTradeoffY(o.y).value_or(ui::charts::TradeoffY::P95);
+    return views;
+}
+
+/// Rejects a --y whose figure the run would not measure: the truth figures without --truth, flicker without --path.
+void checkChartAxes(const BenchOptions& o, ui::charts::TradeoffY yAxis) {
     const bool needsTruth = yAxis == ui::charts::TradeoffY::Interior || yAxis == ui::charts::TradeoffY::Edge ||
                             yAxis == ui::charts::TradeoffY::Misclassified || yAxis == ui::charts::TradeoffY::Soft ||
                             yAxis == ui::charts::TradeoffY::Umbra;
     if (needsTruth && !o.truth.enabled) throw std::invalid_argument("--y " + o.y + " needs --truth");
     if (yAxis == ui::charts::TradeoffY::Flicker && o.path.empty())
         throw std::invalid_argument("--y flicker needs --path");
-    std::optional<geometry::io::ScenePath> path;
-    if (!o.path.empty()) {
-        const auto it = file.paths.find(o.path);
-        if (it == file.paths.end()) throw std::invalid_argument("--path " + o.path + ": the scene has no such path");
-        path = it->second;
+}
+
+/// The scene file's path that --path names, or none when --path is empty.
+std::optional<geometry::io::ScenePath> benchPath(const geometry::io::SceneFile& file, const std::string& name) {
+    if (name.empty()) return std::nullopt;
+    const auto it = file.paths.find(name);
+    if (it == file.paths.end()) throw std::invalid_argument("--path " + name + ": the scene has no such path");
+    return it->second;
+}
+
+/// The results row of one configuration measured at one view.
+Row benchRow(const BenchConfiguration& cfg, const std::string& viewName, const renderer::Measurement& m) {
+    const geometry::analysis::Inspection& in = m.inspection;
+    Row row;
+    row.config = cfg.label;
+    row.preset = cfg.preset;
+    row.view = viewName;
+    row.gamma = m.plan.gammaDeg;
+    row.gpuMs = m.gpuMs;
+    row.cpuMs = m.cpuMs;
+    row.p95 = in.aliasing.p95;
+    row.memoryMiB = double(m.shadowMemoryBytes) / (1024.0 * 1024.0);
+    row.shadowMs = m.shadowGpuMs;
+    row.shadowTriangles = m.shadowTriangles;
+    row.shadowTrianglesWithoutLod = m.shadowTrianglesWithoutLod;
+    if (in.truth) {
+        row.truth = true;
+        row.falseLit = in.truth->falseLit;
+        row.falseShadow = in.truth->falseShadow;
+        if (in.truthClasses) row.classes = *in.truthClasses;
+        if (in.softTruth) row.soft = in.softTruth->meanAbs;
     }
+    return row;
+}
+
+/// Writes results.csv: one line per row, the path figures of its configuration when there was a --path.
+void writeResultsCsv(const std::filesystem::path& dir, const BenchOptions& o,
+                     const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows,
+                     const std::vector<renderer::PathFigures>& paths, bool hasPath, const std::string& rendererName) {
+    std::ofstream csv(dir / "results.csv");
+    csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
+           "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
+           "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam,shadow_ms_median,"
+           "shadow_triangles,shadow_triangles_without_lod,soft_mean_abs,umbra_light,contact_false_lit,contact_gap_"
+           "p95,"
+           "interior_mean_abs,edge_width_px,edge_width_texels,truth_singular\n";
+    for (const Row& w : rows) {
+        csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
+            << w.cpuMs << ',' << w.p95 << ',';
+        if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
+        else csv << ",,";
+        csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.common.size.width << ',' << o.common.size.height
+            << ",\"" << rendererName << "\",";
+        const auto& c = w.classes;
+        if (w.truth)
+            csv << c.interiorFalseShadow << ',' << c.interiorFalseLit << ',' << c.edgeError << ','
+                << c.edgeDisplacementTexelsMedian << ',' << c.ambiguous;
+        else csv << ",,,,";
+        const auto cfg = std::find_if(configs.begin(), configs.end(),
+                                      [&](const BenchConfiguration& b) { return b.label == w.config; });
+        const renderer::PathFigures& f = paths[size_t(cfg - configs.begin())];
+        if (hasPath) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
+        else csv << ",,,,";
+        csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << ',';
+        if (std::isfinite(w.soft)) csv << w.soft;
+        csv << ',';
+        if (w.truth)
+            csv << c.umbraLight << ',' << c.contactFalseLit << ',' << c.contactGapP95 << ',' << c.interiorMeanAbs << ','
+                << c.edgeWidthPx << ',' << c.edgeWidthTexels << ',' << c.singular;
+        else csv << ",,,,,,";
+        csv << '\n';
+    }
+    if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
+}
+
+} // namespace
+
+int runBench(const BenchOptions& o) {
+    const std::vector<BenchConfiguration> configs = benchConfigurations(o);
+    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene), {}, o.common.up);
+    const std::vector<NamedView> views = benchViews(file, o.common.views);
+    const ui::charts::TradeoffX xAxis = ui::charts::parseTradeoffX(o.x).value_or(ui::charts::TradeoffX::GpuMs);
+    const ui::charts::TradeoffY yAxis = ui::charts::parseTradeoffY(o.y).value_or(ui::charts::TradeoffY::P95);
+    checkChartAxes(o, yAxis);
+    const std::optional<geometry::io::ScenePath> path = benchPath(file, o.path);
     std::filesystem::create_directories(o.common.out);
 
     auto context = renderer::createHeadlessContext(renderer::parseBackend(o.common.backend));
@@ -219,27 +300,7 @@ int runBench(const BenchOptions& o) {
                                   {.warmup = o.warmup, .frames = o.frames, .truthSamples = o.truth.samples},
                                   o.truth.enabled ? truth.get() : nullptr);
             if (m.gpuFrames == 0) gpuTimes = false;
-            const geometry::analysis::Inspection& in = m.inspection;
-            Row row;
-            row.config = cfg.label;
-            row.preset = cfg.preset;
-            row.view = viewName;
-            row.gamma = m.plan.gammaDeg;
-            row.gpuMs = m.gpuMs;
-            row.cpuMs = m.cpuMs;
-            row.p95 = in.aliasing.p95;
-            row.memoryMiB = double(m.shadowMemoryBytes) / (1024.0 * 1024.0);
-            row.shadowMs = m.shadowGpuMs;
-            row.shadowTriangles = m.shadowTriangles;
-            row.shadowTrianglesWithoutLod = m.shadowTrianglesWithoutLod;
-            if (in.truth) {
-                row.truth = true;
-                row.falseLit = in.truth->falseLit;
-                row.falseShadow = in.truth->falseShadow;
-                if (in.truthClasses) row.classes = *in.truthClasses;
-                if (in.softTruth) row.soft = in.softTruth->meanAbs;
-            }
-            rows.push_back(row);
+            const Row& row = rows.emplace_back(benchRow(cfg, viewName, m));
             std::cerr << "[" << rows.size() << "/" << total << "] " << cfg.label << " @ " << viewName << ": GPU "
                       << row.gpuMs << " ms, CPU " << row.cpuMs << " ms, p95 m " << row.p95 << '\n';
         }
@@ -259,42 +320,7 @@ int runBench(const BenchOptions& o) {
         throw std::runtime_error("GL error: " + errors);
 
     const std::filesystem::path dir(o.common.out);
-    {
-        std::ofstream csv(dir / "results.csv");
-        csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
-               "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
-               "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam,shadow_ms_median,"
-               "shadow_triangles,shadow_triangles_without_lod,soft_mean_abs,umbra_light,contact_false_lit,contact_gap_"
-               "p95,"
-               "interior_mean_abs,edge_width_px,edge_width_texels,truth_singular\n";
-        for (const Row& w : rows) {
-            csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
-                << w.cpuMs << ',' << w.p95 << ',';
-            if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
-            else csv << ",,";
-            csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.common.size.width << ',' << o.common.size.height
-                << ",\"" << context->rendererString() << "\",";
-            const auto& c = w.classes;
-            if (w.truth)
-                csv << c.interiorFalseShadow << ',' << c.interiorFalseLit << ',' << c.edgeError << ','
-                    << c.edgeDisplacementTexelsMedian << ',' << c.ambiguous;
-            else csv << ",,,,";
-            const auto cfg = std::find_if(configs.begin(), configs.end(),
-                                          [&](const BenchConfiguration& b) { return b.label == w.config; });
-            const renderer::PathFigures& f = paths[size_t(cfg - configs.begin())];
-            if (path) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
-            else csv << ",,,,";
-            csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << ',';
-            if (std::isfinite(w.soft)) csv << w.soft;
-            csv << ',';
-            if (w.truth)
-                csv << c.umbraLight << ',' << c.contactFalseLit << ',' << c.contactGapP95 << ',' << c.interiorMeanAbs
-                    << ',' << c.edgeWidthPx << ',' << c.edgeWidthTexels << ',' << c.singular;
-            else csv << ",,,,,,";
-            csv << '\n';
-        }
-        if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
-    }
+    writeResultsCsv(dir, o, configs, rows, paths, path.has_value(), context->rendererString());
     const ui::charts::TradeoffX x =
         xAxis == ui::charts::TradeoffX::GpuMs && !gpuTimes ? ui::charts::TradeoffX::CpuMs : xAxis;
     const ui::charts::Chart chart = benchChart(configs, rows, paths, x, yAxis);
