@@ -3,6 +3,10 @@
 //   writeCsv, describe ... tune.csv and the figures as printed (modelled cost; measured time apart)
 //   fewestReceivers ...... what decides the screening size
 //   calibrateCost ........ --calibrate-cost: the cost model's fit on this backend
+//   startSettings, tuneViews, createOutputFolder ... what runTune starts from
+//   measureRequests ...... measures what the tuner asks for
+//   writeTuneChart ....... tune.svg, tune.png
+//   reportRecommended, reportClosest ... the preset saved, what is printed, the exit code
 //   runTune .............. the search, its files and exit code
 
 #include "tune_command.h"
@@ -180,6 +184,127 @@ int calibrateCost(renderer::Renderer& r, const geometry::shadow::ShadowSettings&
     return 0;
 }
 
+/// The search's start: the one --preset (or the defaults) with every --set applied.
+geometry::shadow::ShadowSettings startSettings(const TuneCommandOptions& o) {
+    if (o.common.presets.size() > 1) throw std::invalid_argument("--preset: tune starts from one preset");
+    geometry::shadow::ShadowSettings start;
+    if (!o.common.presets.empty()) start = geometry::io::loadPreset(findResource(o.common.presets.front()));
+    for (const auto& a : o.common.assignments) geometry::shadow::applyAssignment(start, a);
+    return start;
+}
+
+/// The views tune measures every configuration on.
+struct TuneViews {
+    std::vector<renderer::MeasureView> views;
+    std::vector<std::string> names; // empty when the scene's camera stands in for views
+    std::string line;               // the names for messages: "a, b" or "the scene's camera"
+};
+
+/// The --view views, else every canonical view (as bench), else the scene's camera.
+TuneViews tuneViews(const geometry::io::SceneFile& file, const std::vector<std::string>& asked) {
+    TuneViews out;
+    out.names = asked;
+    if (out.names.empty())
+        for (const auto& [name, view] : file.views) out.names.push_back(name);
+    for (const auto& name : out.names) {
+        const auto it = file.views.find(name);
+        if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
+        out.views.push_back({it->second.camera, it->second.light});
+        out.line += (out.line.empty() ? "" : ", ") + name;
+    }
+    if (out.views.empty()) {
+        out.views.push_back({file.scene.camera, file.scene.light});
+        out.line = "the scene's camera";
+    }
+    return out;
+}
+
+/// Creates the output folder, saying why when it cannot.
+void createOutputFolder(const std::filesystem::path& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("cannot create output folder " + dir.string() + ": " + ec.message());
+}
+
+/// Measures what the tuner asks for until it is done; returns each evaluation's figures per view.
+std::vector<std::vector<geometry::analysis::TuneFigures>>
+measureRequests(geometry::analysis::Tuner& tuner, renderer::Renderer& r, geometry::scene::Scene& scene,
+                const std::vector<renderer::MeasureView>& views, const geometry::analysis::GroundTruth& truth,
+                const geometry::analysis::CostModel& costModel, const TuneCommandOptions& o) {
+    std::vector<std::vector<geometry::analysis::TuneFigures>> perView;
+    while (const auto request = tuner.next()) {
+        ensureCasterLod(r, scene, request->settings);
+        perView.emplace_back();
+        const geometry::analysis::TuneFigures f =
+            renderer::measureTuneRequest(r, *request, scene.bounds(), views, truth, o.truth.samples, costModel,
+                                         {.warmup = 1, .frames = o.frames}, &perView.back());
+        tuner.report(f);
+        const TuneEvaluation& e = tuner.evaluations().back();
+        std::cerr << "[" << tuner.evaluations().size() << "/" << o.budgetEvals << "] " << stageName(request->stage)
+                  << ' ' << request->size.width << 'x' << request->size.height << ' ' << request->label << ": "
+                  << describe(e.figures) << ", measured " << f.frameMs << " ms"
+                  << (e.meets() ? " - meets" : " - misses") << '\n';
+    }
+    return perView;
+}
+
+/// tune.svg and tune.png: every evaluation's modelled cost against its distance to the target.
+void writeTuneChart(const std::filesystem::path& dir, const geometry::analysis::Tuner& tuner,
+                    const geometry::analysis::TuneTarget& target, std::optional<size_t> chosen) {
+    std::vector<ui::charts::TunePoint> points;
+    for (size_t i = 0; i < tuner.evaluations().size(); ++i) {
+        const TuneEvaluation& e = tuner.evaluations()[i];
+        points.push_back({e.request.label, e.figures.costMs, geometry::analysis::targetRatio(e.figures, target),
+                          e.request.stage == TuneStage::Full, chosen == i});
+    }
+    const ui::charts::Chart chart = ui::charts::tuneChart(points, geometry::analysis::formatTuneTarget(target));
+    ui::charts::writeSvg(dir / "tune.svg", chart, 1000, 620);
+    geometry::analysis::writePng((dir / "tune.png").string(), ui::renderChartImage(chart, 1000, 620));
+}
+
+/// Saves the chosen configuration as recommended.json and prints it; exit code 0.
+int reportRecommended(const std::filesystem::path& dir, const TuneEvaluation& e, const std::string& sceneName,
+                      const std::string& viewLine, geometry::shadow::Viewport size,
+                      const geometry::analysis::TuneTarget& target, const std::string& summary) {
+    const std::string path = (dir / "recommended.json").string();
+    geometry::io::savePreset(path, e.candidate, "recommended",
+                             "shadowscope tune on " + sceneName + " (" + viewLine + ") at " +
+                                 std::to_string(size.width) + "x" + std::to_string(size.height) + ": meets " +
+                                 geometry::analysis::formatTuneTarget(target) + "; " + describe(e.figures));
+    std::cout << path << '\n'
+              << "recommended: " << e.request.label << " (" << describe(e.figures) << ", measured " << e.figures.frameMs
+              << " ms)\n"
+              << summary << '\n';
+    return 0;
+}
+
+/// Nothing met the target: saves the closest as closest.json, prints what it misses, per view too; exit code 3.
+int reportClosest(const std::filesystem::path& dir, const TuneEvaluation& e,
+                  const std::vector<geometry::analysis::TuneFigures>& perView, const std::vector<std::string>& names,
+                  const std::string& sceneName, const geometry::analysis::TuneTarget& target,
+                  const std::string& summary) {
+    using geometry::analysis::describeMisses;
+    using geometry::analysis::formatTuneTarget;
+    std::vector<std::string> viewList = names;
+    if (viewList.empty()) viewList.push_back("the scene's camera");
+    const std::string path = (dir / "closest.json").string();
+    geometry::io::savePreset(path, e.candidate, "closest",
+                             "shadowscope tune on " + sceneName + ": closest to " + formatTuneTarget(target) +
+                                 ", misses " + describeMisses(e.figures, target) + "; " + describe(e.figures));
+    std::cout << path << '\n'
+              << "no configuration meets " << formatTuneTarget(target) << "; closest: " << e.request.label << " ("
+              << describe(e.figures) << "), misses " << describeMisses(e.figures, target) << '\n';
+    // Which view misses what, with its figures.
+    for (size_t v = 0; v < perView.size() && v < viewList.size(); ++v) {
+        const geometry::analysis::TuneFigures& f = perView[v];
+        const std::string misses = describeMisses(f, target);
+        std::cout << "  view " << viewList[v] << ": " << (misses.empty() ? "meets" : "misses " + misses) << " ("
+                  << describe(f) << ")\n";
+    }
+    std::cout << summary << '\n';
+    return 3;
+}
+
 } // namespace
 
 int runTune(const TuneCommandOptions& o) {
@@ -188,39 +313,20 @@ int runTune(const TuneCommandOptions& o) {
     const TuneTarget target = o.calibrateCost && o.target.empty() ? TuneTarget{} : parseTuneTarget(o.target);
     std::vector<TuneAxis> space = defaultTuneSpace();
     for (const auto& spec : o.spaces) overrideTuneAxis(space, spec);
-    if (o.common.presets.size() > 1) throw std::invalid_argument("--preset: tune starts from one preset");
-    geometry::shadow::ShadowSettings start;
-    if (!o.common.presets.empty()) start = geometry::io::loadPreset(findResource(o.common.presets.front()));
-    for (const auto& a : o.common.assignments) geometry::shadow::applyAssignment(start, a);
+    const geometry::shadow::ShadowSettings start = startSettings(o);
     // Checked before anything is loaded or measured: a bad target, space or start is a one-line error.
     if (!o.calibrateCost) (void)Tuner(start, space, target, {.size = o.common.size, .budgetEvals = o.budgetEvals});
 
     geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene), {}, o.common.up);
     geometry::scene::Scene& scene = file.scene;
-    std::vector<renderer::MeasureView> views;
-    std::string viewNames;
-    std::vector<std::string> names = o.common.views;
-    if (names.empty()) // every canonical view, as bench
-        for (const auto& [name, view] : file.views) names.push_back(name);
-    for (const auto& name : names) {
-        const auto it = file.views.find(name);
-        if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
-        views.push_back({it->second.camera, it->second.light});
-        viewNames += (viewNames.empty() ? "" : ", ") + name;
-    }
-    if (views.empty()) {
-        views.push_back({scene.camera, scene.light});
-        viewNames = "the scene's camera";
-    }
+    const TuneViews views = tuneViews(file, o.common.views);
     const std::filesystem::path dir(o.common.out);
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + dir.string() + ": " + ec.message());
+    createOutputFolder(dir);
 
     auto context = renderer::createHeadlessContext(renderer::parseBackend(o.common.backend));
     renderer::Renderer r(scene);
     if (o.calibrateCost)
-        return calibrateCost(r, start, scene, views, o,
+        return calibrateCost(r, start, scene, views.views, o,
                              std::string(renderer::backendName(context->backend())) + ": " + context->rendererString(),
                              dir);
     bool calibrated = false;
@@ -232,84 +338,36 @@ int runTune(const TuneCommandOptions& o) {
     Tuner tuner(start, space, target,
                 {.size = o.common.size,
                  .budgetEvals = o.budgetEvals,
-                 .receiverPixels = fewestReceivers(r, start, scene.bounds(), views, o.common.size)});
+                 .receiverPixels = fewestReceivers(r, start, scene.bounds(), views.views, o.common.size)});
     const GroundTruth truth(scene);
     const double spaceSize = tuneSpaceSize(tuner.space());
-    std::cerr << "tune: " << scene.name << " (" << viewNames << "), target " << formatTuneTarget(target)
+    std::cerr << "tune: " << scene.name << " (" << views.line << "), target " << formatTuneTarget(target)
               << ", a space of " << spaceSize << " configurations, at most " << o.budgetEvals << " evaluations on "
               << context->rendererString() << ", screening at "
               << (tuner.screensAtHalfSize() ? "half size" : "full size (half size could not resolve the target)")
               << '\n';
     const auto t0 = std::chrono::steady_clock::now();
-    std::vector<std::vector<TuneFigures>> perView; // per evaluation, each view's figures
-    while (const auto request = tuner.next()) {
-        ensureCasterLod(r, scene, request->settings);
-        perView.emplace_back();
-        const TuneFigures f =
-            renderer::measureTuneRequest(r, *request, scene.bounds(), views, truth, o.truth.samples, costModel,
-                                         {.warmup = 1, .frames = o.frames}, &perView.back());
-        tuner.report(f);
-        const TuneEvaluation& e = tuner.evaluations().back();
-        std::cerr << "[" << tuner.evaluations().size() << "/" << o.budgetEvals << "] " << stageName(request->stage)
-                  << ' ' << request->size.width << 'x' << request->size.height << ' ' << request->label << ": "
-                  << describe(e.figures) << ", measured " << f.frameMs << " ms"
-                  << (e.meets() ? " - meets" : " - misses") << '\n';
-    }
+    const std::vector<std::vector<TuneFigures>> perView =
+        measureRequests(tuner, r, scene, views.views, truth, costModel, o);
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
     const double minutes = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / 60.0;
 
     const std::optional<size_t> chosen = tuner.recommended();
     writeCsv(dir / "tune.csv", tuner, chosen);
-    std::vector<ui::charts::TunePoint> points;
-    for (size_t i = 0; i < tuner.evaluations().size(); ++i) {
-        const TuneEvaluation& e = tuner.evaluations()[i];
-        points.push_back({e.request.label, e.figures.costMs, targetRatio(e.figures, target),
-                          e.request.stage == TuneStage::Full, chosen == i});
-    }
-    const ui::charts::Chart chart = ui::charts::tuneChart(points, formatTuneTarget(target));
-    ui::charts::writeSvg(dir / "tune.svg", chart, 1000, 620);
-    writePng((dir / "tune.png").string(), ui::renderChartImage(chart, 1000, 620));
+    writeTuneChart(dir, tuner, target, chosen);
 
     std::ostringstream summary;
     summary << tuner.evaluations().size() << " evaluations (" << tuner.fullEvaluations()
             << " at full size, of a space of " << spaceSize << " configurations) in " << minutes << " min";
-    std::vector<std::string> viewList;
-    for (const auto& name : names) viewList.push_back(name);
-    if (viewList.empty()) viewList.push_back("the scene's camera");
     for (const char* f : {"tune.csv", "tune.svg", "tune.png"}) std::cout << (dir / f).string() << '\n';
-    if (chosen) {
-        const TuneEvaluation& e = tuner.evaluations()[*chosen];
-        const std::string path = (dir / "recommended.json").string();
-        geometry::io::savePreset(path, e.candidate, "recommended",
-                                 "shadowscope tune on " + scene.name + " (" + viewNames + ") at " +
-                                     std::to_string(o.common.size.width) + "x" + std::to_string(o.common.size.height) +
-                                     ": meets " + formatTuneTarget(target) + "; " + describe(e.figures));
-        std::cout << path << '\n'
-                  << "recommended: " << e.request.label << " (" << describe(e.figures) << ", measured "
-                  << e.figures.frameMs << " ms)\n"
-                  << summary.str() << '\n';
-        return 0;
-    }
+    if (chosen)
+        return reportRecommended(dir, tuner.evaluations()[*chosen], scene.name, views.line, o.common.size, target,
+                                 summary.str());
     const std::optional<size_t> near = tuner.closest();
     if (!near) throw std::runtime_error("tune: nothing was evaluated");
-    const TuneEvaluation& e = tuner.evaluations()[*near];
-    const std::string path = (dir / "closest.json").string();
-    geometry::io::savePreset(path, e.candidate, "closest",
-                             "shadowscope tune on " + scene.name + ": closest to " + formatTuneTarget(target) +
-                                 ", misses " + describeMisses(e.figures, target) + "; " + describe(e.figures));
-    std::cout << path << '\n'
-              << "no configuration meets " << formatTuneTarget(target) << "; closest: " << e.request.label << " ("
-              << describe(e.figures) << "), misses " << describeMisses(e.figures, target) << '\n';
-    // Which view misses what, with its figures.
-    for (size_t v = 0; v < perView[*near].size() && v < viewList.size(); ++v) {
-        const TuneFigures& f = perView[*near][v];
-        const std::string misses = describeMisses(f, target);
-        std::cout << "  view " << viewList[v] << ": " << (misses.empty() ? "meets" : "misses " + misses) << " ("
-                  << describe(f) << ")\n";
-    }
-    std::cout << summary.str() << '\n';
-    return 3;
+    return reportClosest(dir, tuner.evaluations()[*near], perView[*near], views.names, scene.name, target,
+                         summary.str());
 }
 
 } // namespace app
