@@ -88,14 +88,8 @@ double mean(const std::vector<PathRow>& rows, double (*value)(const PathRow&), b
     return n ? sum / n : 0.0;
 }
 
-} // namespace
-
-int runSweepPath(const SweepPathOptions& o) {
-    if (o.frames < 1 || o.frames > kMaxPathFrames)
-        throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " must be within 1.." +
-                                    std::to_string(kMaxPathFrames));
-    geometry::shadow::validateOrThrow(o.render.settings);
-    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.render.scene), {}, o.render.up);
+/// The scene file's path --path names; unknown names are an error listing the paths there are.
+geometry::io::ScenePath findPath(const geometry::io::SceneFile& file, const SweepPathOptions& o) {
     const auto it = file.paths.find(o.path);
     if (it == file.paths.end()) {
         std::string names;
@@ -103,81 +97,93 @@ int runSweepPath(const SweepPathOptions& o) {
         throw std::invalid_argument("--path " + o.path + ": scene '" + o.render.scene + "' has no such path (" +
                                     (names.empty() ? std::string("it has none") : "available: " + names) + ")");
     }
-    const geometry::io::ScenePath path = it->second;
+    return it->second;
+}
+
+/// The file's scene with its camera and light where --view, --camera and --light put them (the path's start).
+geometry::scene::Scene startScene(geometry::io::SceneFile& file, const RenderOptions& render) {
     geometry::scene::Scene scene = std::move(file.scene);
-    if (!o.render.view.empty()) {
-        const auto view = file.views.find(o.render.view);
+    if (!render.view.empty()) {
+        const auto view = file.views.find(render.view);
         if (view == file.views.end())
-            throw std::invalid_argument("--view " + o.render.view + ": scene '" + o.render.scene +
-                                        "' has no such view");
+            throw std::invalid_argument("--view " + render.view + ": scene '" + render.scene + "' has no such view");
         scene.camera = view->second.camera;
         scene.light = view->second.light;
     }
-    if (o.render.camera) scene.camera.eye = o.render.camera->eye, scene.camera.target = o.render.camera->target;
-    if (o.render.light) scene.light.direction = *o.render.light;
-    std::error_code ec;
-    std::filesystem::create_directories(o.render.out, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + o.render.out + ": " + ec.message());
-    const std::filesystem::path dir(o.render.out);
+    if (render.camera) scene.camera.eye = render.camera->eye, scene.camera.target = render.camera->target;
+    if (render.light) scene.light.direction = *render.light;
+    return scene;
+}
 
-    SweepRenderer sweeper(scene, o.render.backend);
-    const int w = o.render.size.width, h = o.render.size.height;
+/// One frame's row; the flicker compares it with the frame before (none for the first).
+PathRow pathRow(int i, double t, const SweepFrame& f, const SweepFrame& previous, const geometry::scene::Camera& camera,
+                geometry::shadow::Viewport size) {
+    PathRow r;
+    r.frame = i;
+    r.t = t;
+    r.gammaDeg = f.plan.gammaDeg;
+    r.angleDeg = f.plan.lightViewAngleDeg;
+    r.seam = geometry::analysis::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals, camera.eye,
+                                           size.width, size.height);
+    if (i > 0) {
+        const auto pair =
+            geometry::analysis::framePairFlicker(previous.in, previous.plan.eyeProj * previous.plan.eyeView, f.in);
+        r.flicker = pair.screen;
+        r.worldFlicker = pair.world;
+    }
+    r.p95 = f.in.aliasing.p95;
+    r.falseLit = f.in.truth->falseLit;
+    r.falseShadow = f.in.truth->falseShadow;
+    r.nPrime = f.plan.splits.front().nPrime;
+    r.glError = !f.glErrors.empty();
+    return r;
+}
+
+/// Renders the path frame by frame from `scene`'s camera and light; the GL errors go to `glErrors`, per frame.
+std::vector<PathRow> walkPath(SweepRenderer& sweeper, const SweepPathOptions& o, const geometry::io::ScenePath& path,
+                              const geometry::scene::Scene& scene, std::vector<std::string>& glErrors) {
     std::vector<PathRow> rows;
-    std::vector<std::string> glErrors;
     SweepFrame previous;
-    {
-        SweepProgress progress("sweep path " + o.path, o.frames);
-        for (int i = 0; i < o.frames; ++i) {
-            const double t = geometry::scene::pathParameter(i, o.frames);
-            const geometry::scene::Camera camera =
-                path.cameras.empty() ? scene.camera : geometry::scene::cameraAlongPath(path.cameras, t);
-            const geometry::scene::DirectionalLight light{
-                path.lights.empty() ? scene.light.direction : geometry::scene::lightAlongPath(path.lights, t)};
-            geometry::shadow::validateFrustum(camera.near, camera.far, camera.fovYDeg);
-            SweepFrame f = sweeper.render(o.render.settings, camera, light, o.render.size);
-            PathRow r;
-            r.frame = i;
-            r.t = t;
-            r.gammaDeg = f.plan.gammaDeg;
-            r.angleDeg = f.plan.lightViewAngleDeg;
-            r.seam = geometry::analysis::seamStats(f.in.m, f.in.aux, f.in.receiver, f.in.positions, f.in.normals,
-                                                   camera.eye, w, h);
-            if (i > 0) {
-                const auto pair = geometry::analysis::framePairFlicker(
-                    previous.in, previous.plan.eyeProj * previous.plan.eyeView, f.in);
-                r.flicker = pair.screen;
-                r.worldFlicker = pair.world;
-            }
-            r.p95 = f.in.aliasing.p95;
-            r.falseLit = f.in.truth->falseLit;
-            r.falseShadow = f.in.truth->falseShadow;
-            r.nPrime = f.plan.splits.front().nPrime;
-            r.glError = !f.glErrors.empty();
-            if (r.glError) glErrors.push_back("frame " + std::to_string(i) + ": " + f.glErrors);
-            rows.push_back(r);
-            previous = std::move(f);
-            progress.step(i + 1, "frame " + std::to_string(i));
-        }
+    SweepProgress progress("sweep path " + o.path, o.frames);
+    for (int i = 0; i < o.frames; ++i) {
+        const double t = geometry::scene::pathParameter(i, o.frames);
+        const geometry::scene::Camera camera =
+            path.cameras.empty() ? scene.camera : geometry::scene::cameraAlongPath(path.cameras, t);
+        const geometry::scene::DirectionalLight light{
+            path.lights.empty() ? scene.light.direction : geometry::scene::lightAlongPath(path.lights, t)};
+        geometry::shadow::validateFrustum(camera.near, camera.far, camera.fovYDeg);
+        SweepFrame f = sweeper.render(o.render.settings, camera, light, o.render.size);
+        const PathRow& r = rows.emplace_back(pathRow(i, t, f, previous, camera, o.render.size));
+        if (r.glError) glErrors.push_back("frame " + std::to_string(i) + ": " + f.glErrors);
+        previous = std::move(f);
+        progress.step(i + 1, "frame " + std::to_string(i));
     }
-    const std::filesystem::path csv = dir / "path.csv", svg = dir / "path.svg";
-    {
-        std::ofstream out(csv, std::ios::binary);
-        out << pathCsv(rows);
-        out.close();
-        if (!out) throw std::runtime_error("cannot write " + csv.string());
-    }
-    const std::string title = "Path '" + o.path + "' of " + scene.name + ", " + std::to_string(o.frames) + " frames, " +
-                              std::to_string(w) + "x" + std::to_string(h) + ", " +
-                              std::to_string(o.render.settings.resolution) + "² maps, " +
-                              std::to_string(o.render.settings.splits.count) + " split(s) " +
-                              std::string(geometry::shadow::splitSchemeName(o.render.settings.splits.scheme));
-    ui::charts::writeSvgText(svg, pathSvg(rows, title));
-    for (const auto& e : glErrors) std::cerr << "shadowscope: GL error: " << e << '\n';
-    std::cout << csv.string() << '\n' << svg.string() << '\n';
+    return rows;
+}
+
+/// Writes path.csv.
+void writePathCsv(const std::filesystem::path& csv, const std::vector<PathRow>& rows) {
+    std::ofstream out(csv, std::ios::binary);
+    out << pathCsv(rows);
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + csv.string());
+}
+
+/// The title of path.svg: the path, the scene, the frame size and the shadow settings that matter most.
+std::string pathTitle(const SweepPathOptions& o, const std::string& sceneName) {
+    const geometry::shadow::ShadowSettings& s = o.render.settings;
+    return "Path '" + o.path + "' of " + sceneName + ", " + std::to_string(o.frames) + " frames, " +
+           std::to_string(o.render.size.width) + "x" + std::to_string(o.render.size.height) + ", " +
+           std::to_string(s.resolution) + "² maps, " + std::to_string(s.splits.count) + " split(s) " +
+           std::string(geometry::shadow::splitSchemeName(s.splits.scheme));
+}
+
+/// Prints the summary line: the path's means of flicker, seams and p95.
+void printPathSummary(const std::vector<PathRow>& rows, int frames) {
     const auto all = [](const PathRow&) { return true; };
     const auto afterFirst = [](const PathRow& r) { return r.frame > 0; };
     const auto withSeams = [](const PathRow& r) { return r.seam.pairs > 0; };
-    std::cout << "summary: frames " << o.frames << ", flicker mean "
+    std::cout << "summary: frames " << frames << ", flicker mean "
               << formatCsvNumber(mean(
                      rows, [](const PathRow& r) { return r.flicker.rate; }, afterFirst))
               << ", world-space flicker mean "
@@ -199,6 +205,32 @@ int runSweepPath(const SweepPathOptions& o) {
               << formatCsvNumber(mean(
                      rows, [](const PathRow& r) { return r.p95; }, all))
               << '\n';
+}
+
+} // namespace
+
+int runSweepPath(const SweepPathOptions& o) {
+    if (o.frames < 1 || o.frames > kMaxPathFrames)
+        throw std::invalid_argument("--frames: " + std::to_string(o.frames) + " must be within 1.." +
+                                    std::to_string(kMaxPathFrames));
+    geometry::shadow::validateOrThrow(o.render.settings);
+    geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.render.scene), {}, o.render.up);
+    const geometry::io::ScenePath path = findPath(file, o);
+    const geometry::scene::Scene scene = startScene(file, o.render);
+    std::error_code ec;
+    std::filesystem::create_directories(o.render.out, ec);
+    if (ec) throw std::runtime_error("cannot create output folder " + o.render.out + ": " + ec.message());
+    const std::filesystem::path dir(o.render.out);
+
+    SweepRenderer sweeper(scene, o.render.backend);
+    std::vector<std::string> glErrors;
+    const std::vector<PathRow> rows = walkPath(sweeper, o, path, scene, glErrors);
+    const std::filesystem::path csv = dir / "path.csv", svg = dir / "path.svg";
+    writePathCsv(csv, rows);
+    ui::charts::writeSvgText(svg, pathSvg(rows, pathTitle(o, scene.name)));
+    for (const auto& e : glErrors) std::cerr << "shadowscope: GL error: " << e << '\n';
+    std::cout << csv.string() << '\n' << svg.string() << '\n';
+    printPathSummary(rows, o.frames);
     return glErrors.empty() ? 0 : 1;
 }
 
