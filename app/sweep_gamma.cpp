@@ -79,74 +79,83 @@ ui::charts::Chart methodChart(const std::vector<SweepRecord>& rows, const std::v
     return c;
 }
 
-} // namespace
-
-int runSweepGamma(const SweepGammaOptions& o) {
+/// The warps --methods names, each once, in the order given, with the names as given.
+struct SweptMethods {
     std::vector<geometry::shadow::WarpMethod> methods;
     std::vector<std::string> names;
-    for (const auto& name : o.methods) {
-        const auto m = parseMethod(name);
-        if (std::find(methods.begin(), methods.end(), m) != methods.end())
-            throw std::invalid_argument("--methods: '" + name + "' is given twice");
-        methods.push_back(m);
-        names.push_back(name);
-    }
-    if (methods.empty()) throw std::invalid_argument("--methods: no method given");
-    const std::vector<double> angles = sweepAngles(o.fromDeg, o.toDeg, o.stepDeg);
-    geometry::shadow::validateOrThrow(o.render.settings);
-    const geometry::scene::Scene scene = loadScene(o.render);
-    geometry::shadow::validateFrustum(scene.camera.near, scene.camera.far, scene.camera.fovYDeg);
-    std::error_code ec;
-    std::filesystem::create_directories(o.render.out, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + o.render.out + ": " + ec.message());
-    const std::filesystem::path dir(o.render.out);
+};
 
-    SweepRenderer sweeper(scene, o.render.backend);
+/// Parses --methods; a method named twice, or none, is an error.
+SweptMethods parseMethods(const std::vector<std::string>& given) {
+    SweptMethods out;
+    for (const auto& name : given) {
+        const auto m = parseMethod(name);
+        if (std::find(out.methods.begin(), out.methods.end(), m) != out.methods.end())
+            throw std::invalid_argument("--methods: '" + name + "' is given twice");
+        out.methods.push_back(m);
+        out.names.push_back(name);
+    }
+    if (out.methods.empty()) throw std::invalid_argument("--methods: no method given");
+    return out;
+}
+
+/// Renders every method at every angle (angle by angle); the GL errors go to `glErrors`, per frame.
+std::vector<SweepRecord> renderSweep(SweepRenderer& sweeper, const SweepGammaOptions& o,
+                                     const geometry::scene::Scene& scene, const std::vector<double>& angles,
+                                     const SweptMethods& swept, std::vector<std::string>& glErrors) {
+    const std::vector<geometry::shadow::WarpMethod>& methods = swept.methods;
+    const std::vector<std::string>& names = swept.names;
     const glm::vec3 v = scene.camera.viewDir();
     const glm::vec3 reference = scene.light.l();
     std::vector<SweepRecord> rows;
-    std::vector<std::string> glErrors;
-    {
-        SweepProgress progress("sweep gamma", int(angles.size() * methods.size()));
-        for (const double angle : angles) {
-            const geometry::scene::DirectionalLight light{
-                geometry::scene::lightAtViewAngle(v, reference, float(angle))};
-            // Uniform at every angle, swept or not: the continuity rule compares each warp with it.
-            const auto renderMethod = [&](geometry::shadow::WarpMethod method, const std::string& name) {
-                geometry::shadow::ShadowSettings settings = o.render.settings;
-                settings.warp.method = method;
-                const SweepFrame f = sweeper.render(settings, scene.camera, light, o.render.size);
-                if (!f.glErrors.empty())
-                    glErrors.push_back(name + " at " + formatCsvNumber(angle) + " deg: " + f.glErrors);
-                return record(angle, name, f);
-            };
-            const SweepRecord uniform = renderMethod(geometry::shadow::WarpMethod::Uniform, "uniform");
-            for (size_t k = 0; k < methods.size(); ++k) {
-                SweepRecord r =
-                    methods[k] == geometry::shadow::WarpMethod::Uniform ? uniform : renderMethod(methods[k], names[k]);
-                r.p95Uniform = uniform.p95;
-                rows.push_back(r);
-                progress.step(int(rows.size()), names[k] + " at " + formatCsvNumber(angle) + " deg");
-            }
+    SweepProgress progress("sweep gamma", int(angles.size() * methods.size()));
+    for (const double angle : angles) {
+        const geometry::scene::DirectionalLight light{geometry::scene::lightAtViewAngle(v, reference, float(angle))};
+        // Uniform at every angle, swept or not: the continuity rule compares each warp with it.
+        const auto renderMethod = [&](geometry::shadow::WarpMethod method, const std::string& name) {
+            geometry::shadow::ShadowSettings settings = o.render.settings;
+            settings.warp.method = method;
+            const SweepFrame f = sweeper.render(settings, scene.camera, light, o.render.size);
+            if (!f.glErrors.empty()) glErrors.push_back(name + " at " + formatCsvNumber(angle) + " deg: " + f.glErrors);
+            return record(angle, name, f);
+        };
+        const SweepRecord uniform = renderMethod(geometry::shadow::WarpMethod::Uniform, "uniform");
+        for (size_t k = 0; k < methods.size(); ++k) {
+            SweepRecord r =
+                methods[k] == geometry::shadow::WarpMethod::Uniform ? uniform : renderMethod(methods[k], names[k]);
+            r.p95Uniform = uniform.p95;
+            rows.push_back(r);
+            progress.step(int(rows.size()), names[k] + " at " + formatCsvNumber(angle) + " deg");
         }
     }
+    return rows;
+}
 
-    const std::filesystem::path csv = dir / "sweep.csv";
-    {
-        std::ofstream out(csv, std::ios::binary);
-        out << sweepCsvHeader() << '\n';
-        for (const auto& r : rows) out << sweepCsvRow(r) << '\n';
-        out.close();
-        if (!out) throw std::runtime_error("cannot write " + csv.string());
-    }
-    const std::string where = scene.name + (o.render.view.empty() ? "" : " " + o.render.view) + ", " +
-                              std::to_string(o.render.size.width) + "x" + std::to_string(o.render.size.height) + ", " +
-                              std::to_string(o.render.settings.resolution) + "² maps, " +
-                              std::to_string(o.render.settings.splits.count) + " split(s)";
+/// Writes sweep.csv.
+void writeSweepCsv(const std::filesystem::path& csv, const std::vector<SweepRecord>& rows) {
+    std::ofstream out(csv, std::ios::binary);
+    out << sweepCsvHeader() << '\n';
+    for (const auto& r : rows) out << sweepCsvRow(r) << '\n';
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + csv.string());
+}
+
+/// The charts' common subtitle: the scene and view, the frame size, the map size and the splits.
+std::string sweepWhere(const SweepGammaOptions& o, const std::string& sceneName) {
+    return sceneName + (o.render.view.empty() ? "" : " " + o.render.view) + ", " + std::to_string(o.render.size.width) +
+           "x" + std::to_string(o.render.size.height) + ", " + std::to_string(o.render.settings.resolution) +
+           "² maps, " + std::to_string(o.render.settings.splits.count) + " split(s)";
+}
+
+/// The sweep's charts, each with the file it goes to: n', p95 m, the gain over uniform, false lit, false shadow.
+std::vector<std::pair<std::filesystem::path, ui::charts::Chart>> sweepCharts(const std::filesystem::path& dir,
+                                                                             const std::vector<SweepRecord>& rows,
+                                                                             const std::vector<std::string>& names,
+                                                                             const std::string& where) {
     // m at the shader's cap for a singular J (receivers edge-on to the light) is not a measurement:
     // those points are left out of the m charts rather than squashing every curve.
     const auto measured = [](double m) { return m < geometry::analysis::kSingularM ? m : NAN; };
-    const std::vector<std::pair<std::filesystem::path, ui::charts::Chart>> charts{
+    return {
         {dir / "n_prime.svg",
          methodChart(
              rows, names, "n' of split 0 (uniform: ∞, not drawn) — " + where, {"n'", true, std::nullopt, std::nullopt},
@@ -168,6 +177,28 @@ int runSweepGamma(const SweepGammaOptions& o) {
                                        {"fraction of receiver pixels", false, 0.0, std::nullopt},
                                        [](const SweepRecord& r) { return r.falseShadow; }, false)},
     };
+}
+
+} // namespace
+
+int runSweepGamma(const SweepGammaOptions& o) {
+    const SweptMethods swept = parseMethods(o.methods);
+    const std::vector<double> angles = sweepAngles(o.fromDeg, o.toDeg, o.stepDeg);
+    geometry::shadow::validateOrThrow(o.render.settings);
+    const geometry::scene::Scene scene = loadScene(o.render);
+    geometry::shadow::validateFrustum(scene.camera.near, scene.camera.far, scene.camera.fovYDeg);
+    std::error_code ec;
+    std::filesystem::create_directories(o.render.out, ec);
+    if (ec) throw std::runtime_error("cannot create output folder " + o.render.out + ": " + ec.message());
+    const std::filesystem::path dir(o.render.out);
+
+    SweepRenderer sweeper(scene, o.render.backend);
+    std::vector<std::string> glErrors;
+    const std::vector<SweepRecord> rows = renderSweep(sweeper, o, scene, angles, swept, glErrors);
+
+    const std::filesystem::path csv = dir / "sweep.csv";
+    writeSweepCsv(csv, rows);
+    const auto charts = sweepCharts(dir, rows, swept.names, sweepWhere(o, scene.name));
     for (const auto& [path, chart] : charts) ui::charts::writeSvg(path, chart, 860, 480);
     for (const auto& e : glErrors) std::cerr << "shadowscope: GL error: " << e << '\n';
     std::cout << csv.string() << '\n';
