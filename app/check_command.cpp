@@ -1,6 +1,7 @@
 // Index
 //   [SECTION] Preparing ...... resolvePath, PreparedCase, prepare (everything read before rendering)
 //   [SECTION] Goldens ........ checkGolden, updateGolden
+//   [SECTION] Cases .......... CaseResults, goldenVerdict, renderCase, judgeCase, writeReports (render all, then judge)
 //   [SECTION] The command .... addCheckCommand, runCheck
 
 #include "check_command.h"
@@ -234,6 +235,92 @@ void writeText(const fs::path& path, const std::string& text) {
     if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
+// [SECTION] Cases
+
+/// What rendering the cases leaves for judging them, by case index.
+struct CaseResults {
+    explicit CaseResults(size_t n) : reports(n), metrics(n), rendered(n, nullptr), goldens(n), seconds(n) {}
+    std::vector<CaseReport> reports;
+    std::vector<json> metrics;
+    std::vector<const json*> rendered; // &metrics[i] once case i rendered every figure it names
+    std::vector<std::optional<Verdict>> goldens;
+    std::vector<double> seconds;
+    // --update: a golden shared by several cases is written from the first of them; the others are
+    // compared with what it wrote, as a later run would compare them.
+    std::map<std::string, Image> updated;
+};
+
+/// A rendered case's golden verdict: --update writes the golden (from the case that owns it), else compares with it.
+std::optional<Verdict> goldenVerdict(const PreparedCase& p, const Image& eye, const fs::path& caseDir, bool update,
+                                     std::map<std::string, Image>& updated, CaseReport& report) {
+    const CheckCase& c = *p.spec;
+    if (!c.golden) return std::nullopt;
+    if (update && p.ownsGolden) {
+        Verdict v = updateGolden(p, eye, caseDir, report);
+        updated[p.golden] = eye;
+        return v;
+    }
+    const auto it = updated.find(p.golden);
+    const Image* golden = it != updated.end() ? &it->second : p.goldenImage ? &*p.goldenImage : nullptr;
+    return golden ? checkGolden(p, *golden, eye, caseDir, report)
+                  : Verdict{"golden", false,
+                            "golden " + c.golden->path + ": not written (the first case naming it did not render)"};
+}
+
+/// Renders case i into OUT/CASE/ with its golden verdict; what fails the case goes to its report's error.
+void renderCase(const PreparedCase& p, size_t i, const CheckOptions& o, CaseResults& results) {
+    const CheckCase& c = *p.spec;
+    CaseReport& report = results.reports[i];
+    report.name = c.name;
+    const auto start = std::chrono::steady_clock::now();
+    const fs::path caseDir = fs::path(o.out) / c.name;
+    std::error_code ec;
+    for (const char* stale : {"diff.png", "golden.png"}) // of an earlier run, unless it is the golden itself
+        if (!samePath(caseDir / stale, p.golden)) fs::remove(caseDir / stale, ec);
+    ExportOptions exports;
+    exports.truth.enabled = c.truth;
+    if (c.truth) exports.views.push_back("truth");
+    try {
+        geometry::io::SceneFile scene = *p.scene;
+        applyView(scene, p.render);
+        const RenderOutput out = renderInto(std::move(scene.scene), p.render, exports);
+        requireKeys(c, out.metrics); // a figure render does not produce: the check file is wrong
+        results.metrics[i] = out.metrics;
+        results.rendered[i] = &results.metrics[i];
+        report.render = c.name + "/eye.png";
+        report.facts = facts(c, out);
+        results.goldens[i] = goldenVerdict(p, out.eye, caseDir, o.update, results.updated, report);
+    } catch (const CheckFileError&) {
+        throw;                          // the check file is wrong: runCheck stops
+    } catch (const std::exception& e) { // GL errors, files that cannot be written: this case fails
+        report.error = e.what();
+    }
+    results.seconds[i] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Judges case i's expectations, adds its golden verdict and time, and prints what failed.
+void judgeCase(const CheckFile& file, size_t i, CaseResults& results) {
+    CaseReport& report = results.reports[i];
+    if (results.rendered[i]) report.verdicts = evaluateCase(file, i, results.rendered);
+    if (results.goldens[i]) report.verdicts.push_back(*results.goldens[i]);
+    report.seconds = results.seconds[i];
+    if (!report.error.empty())
+        std::cerr << "shadowscope: check: " << report.name << ": error: " << report.error << '\n';
+    for (const Verdict& v : report.verdicts)
+        if (!v.passed) std::cerr << "shadowscope: check: " << report.name << ": " << v.text << '\n';
+}
+
+/// Writes report.html (and --junit's file) and prints the summary table and where they are.
+void writeReports(const CheckOptions& o, const std::vector<CaseReport>& reports) {
+    const fs::path html = fs::path(o.out) / "report.html";
+    writeText(html, htmlReport("shadowscope check " + fs::path(o.file).filename().string(), reports));
+    std::cout << summaryTable(reports) << "report: " << html.string() << '\n';
+    if (!o.junit.empty()) {
+        writeText(o.junit, junitXml(fs::path(o.file).stem().string(), reports));
+        std::cout << "junit: " << o.junit << '\n';
+    }
+}
+
 } // namespace
 
 // [SECTION] The command
@@ -271,77 +358,25 @@ int runCheck(const CheckOptions& o) {
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec) throw std::runtime_error("cannot create output folder " + o.out + ": " + ec.message());
-    std::vector<CaseReport> reports(cases.size());
-    std::vector<json> metrics(cases.size());
-    std::vector<const json*> rendered(cases.size(), nullptr);
-    std::vector<std::optional<Verdict>> goldens(cases.size());
-    // --update: a golden shared by several cases is written from the first of them; the others are
-    // compared with what it wrote, as a later run would compare them.
-    std::map<std::string, Image> updated;
-    std::vector<double> seconds(cases.size());
+    CaseResults results(cases.size());
     for (size_t i = 0; i < cases.size(); ++i) {
-        const PreparedCase& p = cases[i];
-        const CheckCase& c = *p.spec;
-        CaseReport& report = reports[i];
-        report.name = c.name;
-        const auto start = std::chrono::steady_clock::now();
-        const fs::path caseDir = fs::path(o.out) / c.name;
-        for (const char* stale : {"diff.png", "golden.png"}) // of an earlier run, unless it is the golden itself
-            if (!samePath(caseDir / stale, p.golden)) fs::remove(caseDir / stale, ec);
-        ExportOptions exports;
-        exports.truth.enabled = c.truth;
-        if (c.truth) exports.views.push_back("truth");
         try {
-            geometry::io::SceneFile scene = *p.scene;
-            applyView(scene, p.render);
-            const RenderOutput out = renderInto(std::move(scene.scene), p.render, exports);
-            requireKeys(c, out.metrics); // a figure render does not produce: the check file is wrong
-            metrics[i] = out.metrics;
-            rendered[i] = &metrics[i];
-            report.render = c.name + "/eye.png";
-            report.facts = facts(c, out);
-            if (c.golden && o.update && p.ownsGolden) {
-                goldens[i] = updateGolden(p, out.eye, caseDir, report);
-                updated[p.golden] = out.eye;
-            } else if (c.golden) {
-                const auto it = updated.find(p.golden);
-                const Image* golden = it != updated.end() ? &it->second : p.goldenImage ? &*p.goldenImage : nullptr;
-                goldens[i] = golden ? checkGolden(p, *golden, out.eye, caseDir, report)
-                                    : Verdict{"golden", false,
-                                              "golden " + c.golden->path +
-                                                  ": not written (the first case naming it did not render)"};
-            }
+            renderCase(cases[i], i, o, results);
         } catch (const CheckFileError& e) {
             return fail(e.what());
-        } catch (const std::exception& e) { // GL errors, files that cannot be written: this case fails
-            report.error = e.what();
         }
-        seconds[i] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-
     // Ratios compare cases with each other, so expectations are judged once every case has rendered.
     for (size_t i = 0; i < cases.size(); ++i) {
-        CaseReport& report = reports[i];
         try {
-            if (rendered[i]) report.verdicts = evaluateCase(file, i, rendered);
+            judgeCase(file, i, results);
         } catch (const CheckFileError& e) { // a case compared with lacks the figure
             return fail(e.what());
         }
-        if (goldens[i]) report.verdicts.push_back(*goldens[i]);
-        report.seconds = seconds[i];
-        if (!report.error.empty())
-            std::cerr << "shadowscope: check: " << report.name << ": error: " << report.error << '\n';
-        for (const Verdict& v : report.verdicts)
-            if (!v.passed) std::cerr << "shadowscope: check: " << report.name << ": " << v.text << '\n';
     }
 
-    const fs::path html = fs::path(o.out) / "report.html";
-    writeText(html, htmlReport("shadowscope check " + fs::path(o.file).filename().string(), reports));
-    std::cout << summaryTable(reports) << "report: " << html.string() << '\n';
-    if (!o.junit.empty()) {
-        writeText(o.junit, junitXml(fs::path(o.file).stem().string(), reports));
-        std::cout << "junit: " << o.junit << '\n';
-    }
+    writeReports(o, results.reports);
+    const std::vector<CaseReport>& reports = results.reports;
     return std::all_of(reports.begin(), reports.end(), [](const CaseReport& r) { return r.passed(); }) ? 0 : 1;
 }
 
