@@ -17,7 +17,9 @@
 //   [SECTION] STL ........................ validateStl, readBinaryStlDirect
 //   [SECTION] ASCII STL .................. StlTokens, StlParser, readAsciiStl
 //   [SECTION] OFF ........................ validateOff
-//   [SECTION] PLY ........................ plyTypeSize, readBinaryUint, checkPlyTextRecord, validatePly
+//   [SECTION] PLY ........................ plyTypeSize, readBinaryUint, checkPlyTextRecord, PlyHeader,
+//                                          readPlyHeader, checkPlyCounts, checkPlyBinaryRecord, checkPlyBody,
+//                                          validatePly
 //   [SECTION] Reading .................... QuietOpenMesh, readThroughOpenMesh, readObj, readOpenMeshFile
 //   [SECTION] Saving ..................... toOpenMesh, saveMesh
 #include "geometry/io/model_loader.h"
@@ -555,14 +557,56 @@ void checkPlyTextRecord(const std::string& path, const PlyElement& e, const std:
     if (at != tok.size()) fail(path, where + " has more values than its properties (corrupt file)");
 }
 
-void validatePly(const std::string& path, uint64_t size) {
-    const std::string data = readAll(path, size);
-    LineScanner lines{data};
+/// A PLY header as validated: its format and its elements with their properties.
+struct PlyHeader {
+    std::string format;
+    std::vector<PlyElement> elements;
+};
+
+/// A header's property line: "property TYPE NAME" or "property list COUNT_TYPE ITEM_TYPE NAME".
+PlyProperty parsePlyProperty(const std::string& path, const std::vector<std::string_view>& tok) {
+    PlyProperty p;
+    if (tok.size() >= 5 && tok[1] == "list") {
+        p.countSize = plyTypeSize(tok[2], p.countSigned);
+        p.size = plyTypeSize(tok[3], p.itemSigned);
+        p.name = tok[4];
+        if (p.countSize == 0 || p.countSize > 4 || p.size == 0) fail(path, "bad list type in PLY header");
+    } else if (tok.size() >= 3) {
+        p.size = plyTypeSize(tok[1], p.itemSigned);
+        p.name = tok[2];
+        if (p.size == 0) fail(path, "unknown property type '" + std::string(tok[1]) + "' in PLY header");
+    } else fail(path, "bad property line in PLY header");
+    return p;
+}
+
+/// A header line other than a comment and end_header: the format, an element or a property of the last element.
+void parsePlyHeaderLine(const std::string& path, const std::vector<std::string_view>& tok, PlyHeader& header) {
+    if (tok[0] == "format") {
+        // OpenMesh's header reader loops for ever on a version it cannot parse: accept only
+        // the one version PLY has, exactly.
+        if (tok.size() != 3 || tok[2] != "1.0" ||
+            (tok[1] != "ascii" && tok[1] != "binary_little_endian" && tok[1] != "binary_big_endian"))
+            fail(path, "bad PLY format line (expected 'format ascii|binary_little_endian|binary_big_endian 1.0')");
+        header.format = tok[1];
+    } else if (tok[0] == "element" && tok.size() >= 3) {
+        // OpenMesh's PLY header reader misbehaves (copies without end) on elements it does not
+        // know; CAD meshes need only vertices and faces.
+        if (tok.size() != 3 || (tok[1] != "vertex" && tok[1] != "face"))
+            fail(path, "unsupported PLY element line (only 'element vertex N' and 'element face N')");
+        int64_t n = 0;
+        if (!parseInt(tok[2], n) || n < 0) fail(path, "bad element count in PLY header");
+        header.elements.push_back({std::string(tok[1]), static_cast<uint64_t>(n), {}});
+    } else if (tok[0] == "property" && !header.elements.empty()) {
+        header.elements.back().props.push_back(parsePlyProperty(path, tok));
+    } else fail(path, "unexpected line in PLY header (corrupt file)");
+}
+
+/// Reads the header from the 'ply' magic to end_header, leaving `lines` at the body.
+PlyHeader readPlyHeader(const std::string& path, LineScanner& lines) {
     std::string_view line;
     std::vector<std::string_view> tok;
     if (!lines.nextLine(line) || !line.starts_with("ply")) fail(path, "missing 'ply' magic (corrupt file)");
-    std::string format;
-    std::vector<PlyElement> elements;
+    PlyHeader header;
     bool ended = false;
     while (!ended && lines.nextLine(line)) {
         for (const char c : line)
@@ -574,43 +618,20 @@ void validatePly(const std::string& path, uint64_t size) {
             ended = true;
             break;
         }
-        if (tok[0] == "format") {
-            // OpenMesh's header reader loops for ever on a version it cannot parse: accept only
-            // the one version PLY has, exactly.
-            if (tok.size() != 3 || tok[2] != "1.0" ||
-                (tok[1] != "ascii" && tok[1] != "binary_little_endian" && tok[1] != "binary_big_endian"))
-                fail(path, "bad PLY format line (expected 'format ascii|binary_little_endian|binary_big_endian 1.0')");
-            format = tok[1];
-        } else if (tok[0] == "element" && tok.size() >= 3) {
-            // OpenMesh's PLY header reader misbehaves (copies without end) on elements it does not
-            // know; CAD meshes need only vertices and faces.
-            if (tok.size() != 3 || (tok[1] != "vertex" && tok[1] != "face"))
-                fail(path, "unsupported PLY element line (only 'element vertex N' and 'element face N')");
-            int64_t n = 0;
-            if (!parseInt(tok[2], n) || n < 0) fail(path, "bad element count in PLY header");
-            elements.push_back({std::string(tok[1]), static_cast<uint64_t>(n), {}});
-        } else if (tok[0] == "property" && !elements.empty()) {
-            PlyProperty p;
-            if (tok.size() >= 5 && tok[1] == "list") {
-                p.countSize = plyTypeSize(tok[2], p.countSigned);
-                p.size = plyTypeSize(tok[3], p.itemSigned);
-                p.name = tok[4];
-                if (p.countSize == 0 || p.countSize > 4 || p.size == 0) fail(path, "bad list type in PLY header");
-            } else if (tok.size() >= 3) {
-                p.size = plyTypeSize(tok[1], p.itemSigned);
-                p.name = tok[2];
-                if (p.size == 0) fail(path, "unknown property type '" + std::string(tok[1]) + "' in PLY header");
-            } else fail(path, "bad property line in PLY header");
-            elements.back().props.push_back(p);
-        } else fail(path, "unexpected line in PLY header (corrupt file)");
+        parsePlyHeaderLine(path, tok, header);
     }
     if (!ended) fail(path, "PLY header has no end_header (truncated file)");
-    const bool ascii = format == "ascii";
-    const bool bigEndian = format == "binary_big_endian";
-    if (!ascii && !bigEndian && format != "binary_little_endian") fail(path, "unknown PLY format '" + format + "'");
+    const std::string& format = header.format;
+    if (format != "ascii" && format != "binary_big_endian" && format != "binary_little_endian")
+        fail(path, "unknown PLY format '" + format + "'");
+    return header;
+}
 
+/// Checks the element counts against the limits and the body's size (`available` bytes); returns the vertex count.
+uint64_t checkPlyCounts(const std::string& path, const PlyHeader& header, uint64_t available) {
+    const bool ascii = header.format == "ascii";
     uint64_t nv = 0, nf = 0, minBytes = 0;
-    for (const PlyElement& e : elements) {
+    for (const PlyElement& e : header.elements) {
         if (e.name == "vertex") nv = e.count;
         if (e.name == "face") nf = e.count;
         uint64_t perRecord = 0; // smallest possible record: a token per scalar, a count per list
@@ -619,49 +640,69 @@ void validatePly(const std::string& path, uint64_t size) {
             fail(path, "element '" + e.name + "' count " + std::to_string(e.count) + " over the limit");
         minBytes += std::max<uint64_t>(perRecord, 1) * e.count;
     }
-    checkCounts(path, nv, nf, minBytes, size - lines.pos);
+    checkCounts(path, nv, nf, minBytes, available);
+    return nv;
+}
 
-    // Walk the body and check every face record (valence and indices) before OpenMesh sees it.
-    const char* p = data.data() + lines.pos;
-    const char* end = data.data() + data.size();
-    for (const PlyElement& e : elements) {
-        const bool isFace = e.name == "face";
-        for (uint64_t r = 0; r < e.count; ++r) {
-            if (ascii) {
-                if (!lines.nextDataLine(line, false))
-                    fail(path, "element '" + e.name + "' has " + std::to_string(r) + " of " + std::to_string(e.count) +
-                                   " records (truncated file)");
-                tokenize(line, tok);
-                checkPlyTextRecord(path, e, tok, r, nv);
-                continue;
-            }
-            for (const PlyProperty& prop : e.props) {
-                uint64_t items = 1;
-                if (prop.countSize) {
-                    if (end - p < prop.countSize) fail(path, "truncated PLY body in element '" + e.name + "'");
-                    int64_t k = 0;
-                    readBinaryUint(p, prop.countSize, bigEndian, prop.countSigned, k);
-                    p += prop.countSize;
-                    if (k < 0 || static_cast<uint64_t>(k) > kMaxFaceValence)
-                        fail(path,
-                             "list of " + std::to_string(k) + " items in element '" + e.name + "' (corrupt file)");
-                    items = static_cast<uint64_t>(k);
-                }
-                if (static_cast<uint64_t>(end - p) < items * prop.size)
-                    fail(path, "truncated PLY body in element '" + e.name + "'");
-                if (isFace && prop.countSize && (prop.name == "vertex_indices" || prop.name == "vertex_index")) {
-                    for (uint64_t j = 0; j < items; ++j) {
-                        int64_t idx = 0;
-                        readBinaryUint(p + j * prop.size, prop.size, bigEndian, prop.itemSigned, idx);
-                        if (idx < 0 || static_cast<uint64_t>(idx) >= nv)
-                            fail(path, "face " + std::to_string(r) + " references vertex " + std::to_string(idx) +
-                                           " but the file has only " + std::to_string(nv) + " vertices");
-                    }
-                }
-                p += items * prop.size;
+/// One binary PLY record at `p` (advanced past it): list counts, the bytes left, a face's vertex indices.
+void checkPlyBinaryRecord(const std::string& path, const PlyElement& e, uint64_t record, const char*& p,
+                          const char* end, bool bigEndian, uint64_t vertexCount) {
+    const bool isFace = e.name == "face";
+    for (const PlyProperty& prop : e.props) {
+        uint64_t items = 1;
+        if (prop.countSize) {
+            if (end - p < prop.countSize) fail(path, "truncated PLY body in element '" + e.name + "'");
+            int64_t k = 0;
+            readBinaryUint(p, prop.countSize, bigEndian, prop.countSigned, k);
+            p += prop.countSize;
+            if (k < 0 || static_cast<uint64_t>(k) > kMaxFaceValence)
+                fail(path, "list of " + std::to_string(k) + " items in element '" + e.name + "' (corrupt file)");
+            items = static_cast<uint64_t>(k);
+        }
+        if (static_cast<uint64_t>(end - p) < items * prop.size)
+            fail(path, "truncated PLY body in element '" + e.name + "'");
+        if (isFace && prop.countSize && (prop.name == "vertex_indices" || prop.name == "vertex_index")) {
+            for (uint64_t j = 0; j < items; ++j) {
+                int64_t idx = 0;
+                readBinaryUint(p + j * prop.size, prop.size, bigEndian, prop.itemSigned, idx);
+                if (idx < 0 || static_cast<uint64_t>(idx) >= vertexCount)
+                    fail(path, "face " + std::to_string(record) + " references vertex " + std::to_string(idx) +
+                                   " but the file has only " + std::to_string(vertexCount) + " vertices");
             }
         }
+        p += items * prop.size;
     }
+}
+
+/// Walks the body from `lines` and checks every record (a face's valence and indices) before OpenMesh sees it.
+void checkPlyBody(const std::string& path, const PlyHeader& header, LineScanner& lines, uint64_t vertexCount) {
+    const bool ascii = header.format == "ascii";
+    const bool bigEndian = header.format == "binary_big_endian";
+    const char* p = lines.text.data() + lines.pos;
+    const char* end = lines.text.data() + lines.text.size();
+    std::string_view line;
+    std::vector<std::string_view> tok;
+    for (const PlyElement& e : header.elements) {
+        for (uint64_t r = 0; r < e.count; ++r) {
+            if (!ascii) {
+                checkPlyBinaryRecord(path, e, r, p, end, bigEndian, vertexCount);
+                continue;
+            }
+            if (!lines.nextDataLine(line, false))
+                fail(path, "element '" + e.name + "' has " + std::to_string(r) + " of " + std::to_string(e.count) +
+                               " records (truncated file)");
+            tokenize(line, tok);
+            checkPlyTextRecord(path, e, tok, r, vertexCount);
+        }
+    }
+}
+
+void validatePly(const std::string& path, uint64_t size) {
+    const std::string data = readAll(path, size);
+    LineScanner lines{data};
+    const PlyHeader header = readPlyHeader(path, lines);
+    const uint64_t vertexCount = checkPlyCounts(path, header, size - lines.pos);
+    checkPlyBody(path, header, lines, vertexCount);
 }
 
 // ---- [SECTION] Reading ----------------------------------------------------------------------
