@@ -49,6 +49,116 @@ glm::vec3 flyKeys(GLFWwindow* w) {
             down(GLFW_KEY_W) - down(GLFW_KEY_S)};
 }
 
+/// The config file: --config's, else dashboard.json in the config folder; empty when there is no config folder.
+std::filesystem::path configFilePath(const ViewerOptions& options) {
+    return !options.configPath.empty() ? options.configPath
+           : configDirectory().empty() ? std::filesystem::path()
+                                       : configDirectory() / "dashboard.json";
+}
+
+/// Reads the config file into `state` and `geometry`; returns the status line when it had to be set aside.
+std::string loadStartConfig(const std::filesystem::path& configPath, DashboardState& state, WindowGeometry& geometry) {
+    const auto error = loadDashboardConfig(configPath, state, geometry);
+    if (!error) return "";
+    // Keep the user's broken file next to the fresh one rather than overwriting it.
+    std::error_code ec;
+    const std::filesystem::path bad = configPath.string() + ".bad";
+    std::filesystem::rename(configPath, bad, ec);
+    const std::string status = "ignored the config file (kept as " + bad.filename().string() + "): " + *error;
+    std::cerr << "shadowscope: " << status << '\n';
+    return status;
+}
+
+/// The dashboard's options from the viewer's, at the window's UI scale.
+DashboardOptions dashboardOptions(const ViewerOptions& options, float uiScale) {
+    DashboardOptions dashOptions;
+    dashOptions.screenshotDir = options.screenshotDir;
+    dashOptions.sceneChoices = options.sceneChoices;
+    dashOptions.presetChoices = options.presetChoices;
+    dashOptions.uiScale = uiScale;
+    dashOptions.view = options.view;
+    return dashOptions;
+}
+
+/// Writes the dashboard's state and the window size to the config file when they changed.
+class ConfigSaver {
+public:
+    /// An empty path: nothing is saved (the config file is not used, or there is no config folder).
+    ConfigSaver(std::filesystem::path path, GLFWwindow* window, WindowGeometry geometry)
+        : path_(std::move(path)), window_(window), geometry_(geometry) {}
+
+    /// Whether the state differs from what was last saved.
+    [[nodiscard]] bool unsaved(Dashboard& dashboard) const {
+        return !path_.empty() && dashboardToJson(dashboard.state(), geometry_).dump() != saved_;
+    }
+
+    /// Saves when the state or the window's size changed since the last save, or always when forced.
+    void save(Dashboard& dashboard, bool force) {
+        if (path_.empty()) return;
+        int ww = 0, wh = 0;
+        glfwGetWindowSize(window_, &ww, &wh);
+        if (ww >= 200 && wh >= 150) geometry_ = {ww, wh};
+        const std::string now = dashboardToJson(dashboard.state(), geometry_).dump();
+        if (!force && now == saved_) return;
+        if (auto error = saveDashboardConfig(path_, dashboard.state(), geometry_)) dashboard.setStatus(*error);
+        saved_ = now;
+    }
+
+private:
+    std::filesystem::path path_;
+    GLFWwindow* window_;
+    WindowGeometry geometry_;
+    std::string saved_; // the config as last saved
+};
+
+/// Waits for input, or until a frame is due (at once while settling; no frame due: for as long as it takes).
+void waitForInput(std::optional<double> due, bool settling, bool unsaved, bool ticking) {
+    std::optional<double> wait = settling ? std::optional<double>(0.0) : due;
+    if (unsaved) wait = std::min(wait.value_or(1.0), 1.0); // saved within a second of a change
+    if (ticking) wait = std::min(wait.value_or(0.1), 0.1);
+    if (!wait) glfwWaitEvents();
+    else if (*wait > 0.0) glfwWaitEventsTimeout(*wait);
+    else glfwPollEvents();
+}
+
+/// This frame's input from the keys: the screenshot key, flying, and Ctrl+Q closing the window.
+FrameInput readInput(GLFWwindow* w, float deltaSeconds) {
+    FrameInput input;
+    input.deltaSeconds = deltaSeconds;
+    const bool ctrl =
+        glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+    if (ctrl && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    input.screenshot = f12Presses > 0;
+    f12Presses = 0;
+    if (!ImGui::GetIO().WantTextInput) input.fly = flyKeys(w);
+    return input;
+}
+
+/// Draws the dashboard into the window's framebuffer, then saves the screenshots it asked for.
+void drawFrame(Dashboard& dashboard, const FrameInput& input, int fbW, int fbH) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    dashboard.frame(display.x, display.y, input);
+    ImGui::Render();
+    renderer::beginWindowFrame(fbW, fbH);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (dashboard.screenshotRequested()) {
+        const auto paths = dashboard.saveScreenshots(renderer::readFramebuffer(0, fbW, fbH));
+        for (const auto& p : paths) std::cout << p << '\n';
+        std::cout.flush();
+    }
+}
+
+/// Whether the user is acting (a button held, the wheel turned, typing, flying, a screenshot): ImGui settles after.
+bool userActive(const FrameInput& input) {
+    const ImGuiIO& io = ImGui::GetIO();
+    // (A pointer that only moves needs no extra frame: its hover shows in the frame that took it.)
+    return io.MouseWheel != 0.f || io.WantTextInput || ImGui::IsAnyItemActive() || io.MouseDown[0] || io.MouseDown[1] ||
+           io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
+}
+
 } // namespace
 
 int runViewer(LoadedScene scene, const ViewerOptions& options) {
@@ -57,19 +167,8 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
     state.sun = SunAngles::from(scene.file.scene.light.direction);
     WindowGeometry geometry;
     std::string startStatus;
-    const std::filesystem::path configPath = !options.configPath.empty() ? options.configPath
-                                             : configDirectory().empty() ? std::filesystem::path()
-                                                                         : configDirectory() / "dashboard.json";
-    if (options.persist && !configPath.empty()) {
-        if (auto error = loadDashboardConfig(configPath, state, geometry)) {
-            // Keep the user's broken file next to the fresh one rather than overwriting it.
-            std::error_code ec;
-            const std::filesystem::path bad = configPath.string() + ".bad";
-            std::filesystem::rename(configPath, bad, ec);
-            startStatus = "ignored the config file (kept as " + bad.filename().string() + "): " + *error;
-            std::cerr << "shadowscope: " << startStatus << '\n';
-        }
-    }
+    const std::filesystem::path configPath = configFilePath(options);
+    if (options.persist && !configPath.empty()) startStatus = loadStartConfig(configPath, state, geometry);
     if (options.settings) state.settings[0] = state.settings[1] = *options.settings;
 
     renderer::GlfwWindowContext window(geometry.width, geometry.height, "shadowscope — " + scene.file.scene.name);
@@ -79,27 +178,10 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
     ImGui_ImplGlfw_InitForOpenGL(w, true);
     previousKeyCallback = glfwSetKeyCallback(w, onKey); // ImGui's, called on from onKey
 
-    DashboardOptions dashOptions;
-    dashOptions.screenshotDir = options.screenshotDir;
-    dashOptions.sceneChoices = options.sceneChoices;
-    dashOptions.presetChoices = options.presetChoices;
-    dashOptions.uiScale = imgui.scale();
-    dashOptions.view = options.view;
-    Dashboard dashboard(std::move(scene), state, dashOptions);
+    Dashboard dashboard(std::move(scene), state, dashboardOptions(options, imgui.scale()));
     dashboard.setStatus(startStatus);
-
-    std::string savedConfig;
+    ConfigSaver config(options.persist ? configPath : std::filesystem::path(), w, geometry);
     auto lastSave = std::chrono::steady_clock::now();
-    const auto saveConfig = [&](bool force) {
-        if (!options.persist || configPath.empty()) return;
-        int ww = 0, wh = 0;
-        glfwGetWindowSize(w, &ww, &wh);
-        if (ww >= 200 && wh >= 150) geometry = {ww, wh};
-        const std::string now = dashboardToJson(dashboard.state(), geometry).dump();
-        if (!force && now == savedConfig) return;
-        if (auto error = saveDashboardConfig(configPath, dashboard.state(), geometry)) dashboard.setStatus(*error);
-        savedConfig = now;
-    };
 
     auto last = std::chrono::steady_clock::now();
     std::signal(SIGINT, onQuitSignal);
@@ -111,14 +193,8 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
         // Draw only when something can have changed: input arrived, the dashboard has an undrawn
         // change, a coarse view to refine or background work to poll. Otherwise sleep until input.
         const std::optional<double> due = dashboard.nextFrameIn();
-        const bool unsaved = options.persist && !configPath.empty() &&
-                             dashboardToJson(dashboard.state(), geometry).dump() != savedConfig;
-        std::optional<double> wait = settleFrames > 0 ? std::optional<double>(0.0) : due;
-        if (unsaved) wait = std::min(wait.value_or(1.0), 1.0); // saved within a second of a change
-        if (ticking) wait = std::min(wait.value_or(0.1), 0.1);
-        if (!wait) glfwWaitEvents();
-        else if (*wait > 0.0) glfwWaitEventsTimeout(*wait);
-        else glfwPollEvents();
+        const bool unsaved = config.unsaved(dashboard);
+        waitForInput(due, settleFrames > 0, unsaved, ticking);
         int fbW = 0, fbH = 0;
         glfwGetFramebufferSize(w, &fbW, &fbH);
         if (fbW <= 0 || fbH <= 0 || glfwGetWindowAttrib(w, GLFW_ICONIFIED)) { // minimised or zero-sized
@@ -131,41 +207,17 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
             dashboard.setUiScale(imgui.scale());
         }
         const auto now = std::chrono::steady_clock::now();
-        FrameInput input;
-        input.deltaSeconds = std::chrono::duration<float>(now - last).count();
+        const FrameInput input = readInput(w, std::chrono::duration<float>(now - last).count());
         last = now;
-        const bool ctrl =
-            glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
-        if (ctrl && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
-        input.screenshot = f12Presses > 0;
-        f12Presses = 0;
-        if (!ImGui::GetIO().WantTextInput) input.fly = flyKeys(w);
-
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        const ImVec2 display = ImGui::GetIO().DisplaySize;
-        dashboard.frame(display.x, display.y, input);
-        ImGui::Render();
-        renderer::beginWindowFrame(fbW, fbH);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-        if (dashboard.screenshotRequested()) {
-            const auto paths = dashboard.saveScreenshots(renderer::readFramebuffer(0, fbW, fbH));
-            for (const auto& p : paths) std::cout << p << '\n';
-            std::cout.flush();
-        }
+        drawFrame(dashboard, input, fbW, fbH);
         glfwSwapBuffers(w);
-        const ImGuiIO& io = ImGui::GetIO();
-        // (A pointer that only moves needs no extra frame: its hover shows in the frame that took it.)
-        const bool active = io.MouseWheel != 0.f || io.WantTextInput || ImGui::IsAnyItemActive() || io.MouseDown[0] ||
-                            io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
-        settleFrames = active ? 2 : std::max(0, settleFrames - 1);
+        settleFrames = userActive(input) ? 2 : std::max(0, settleFrames - 1);
         if (now - lastSave > std::chrono::seconds(1)) {
-            saveConfig(false);
+            config.save(dashboard, false);
             lastSave = now;
         }
     }
-    saveConfig(true);
+    config.save(dashboard, true);
     ImGui_ImplGlfw_Shutdown();
     return 0;
 }
