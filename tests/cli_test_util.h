@@ -8,7 +8,9 @@
 #include <iterator>
 #include <string>
 #include <sys/wait.h>
+#include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace testutil {
 
@@ -55,10 +57,24 @@ inline SplitResult runShadowscopeSplit(const std::string& args) {
     return r;
 }
 
-/// An empty folder under the system temp folder, named for the test.
+/// An empty folder under the system temp folder, named for the test and this process, so two test
+/// runs at once (two checkouts, CI next to a developer's run) never write into one folder; removed
+/// when the process ends.
 inline std::filesystem::path freshDir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("shadowscope_test_" + name);
+    struct Cleanup {
+        std::vector<std::filesystem::path> dirs;
+        ~Cleanup() {
+            for (const auto& d : dirs) {
+                std::error_code ec;
+                std::filesystem::remove_all(d, ec);
+            }
+        }
+    };
+    static Cleanup cleanup;
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("shadowscope_test_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
+    cleanup.dirs.push_back(dir);
     return dir;
 }
 

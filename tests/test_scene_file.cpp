@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -22,9 +24,11 @@ namespace {
 
 const fs::path kScenes = fs::path(SHADOWSCOPE_SOURCE_DIR) / "resources" / "scenes";
 
-/// An empty folder under the system temp folder, named for the test.
+/// An empty folder under the system temp folder, named for the test and this process (two runs at
+/// once never share it).
 fs::path freshDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("shadowscope_scene_file_" + name);
+    const fs::path dir =
+        fs::temp_directory_path() / ("shadowscope_scene_file_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
