@@ -4,7 +4,7 @@
 //
 // Index
 //   [SECTION] Fixture and helpers ........ PolygonLoading, shoelace, polygonObj, expectTiles
-//   [SECTION] Polygons ................... concave, star, ring, OFF/PLY, non-planar, fallback
+//   [SECTION] Polygons ................... concave, star, ring, OFF/PLY, non-planar, fallback, spiral
 //   [SECTION] ASCII STL .................. junk, degenerate facets, binary twin
 #include "geometry/io/model_loader.h"
 #include "geometry/io/polygon_triangulation.h"
@@ -221,6 +221,37 @@ TEST(PolygonTriangulation, TiltedConcavePolygonKeepsWinding) {
     EXPECT_NEAR(area, 5.0, 1e-5);
     EXPECT_EQ(stats.nonPlanar, 0u);
     EXPECT_EQ(stats.fallbacks, 0u);
+}
+
+namespace {
+
+/// A band wound `turns` times around a spiral, n corners (out along the outer edge, back along
+/// the inner): ears only at its two ends, the worst case of ear clipping (O(n³)).
+std::vector<glm::vec3> spiralBand(int n, double turns) {
+    const int m = n / 2;
+    std::vector<glm::vec3> pts(static_cast<size_t>(n));
+    for (int k = 0; k < m; ++k) {
+        const double t = turns * 2 * std::numbers::pi * k / (m - 1), r = 1 + t / (2 * std::numbers::pi);
+        pts[static_cast<size_t>(k)] = glm::vec3((r + 0.5) * std::cos(t), (r + 0.5) * std::sin(t), 0);
+        pts[static_cast<size_t>(n - 1 - k)] = glm::vec3(r * std::cos(t), r * std::sin(t), 0);
+    }
+    return pts;
+}
+
+} // namespace
+
+TEST(PolygonTriangulation, HostileSpiralIsFannedWithinItsStepBudget) {
+    // 1000 corners over 100 turns clip exactly; 4000 would need ~6·10⁹ steps (seconds; tens
+    // under ASan): the budget gives up, fans the rest and counts one fallback.
+    PolygonStats small;
+    const auto exact = triangulatePolygon(spiralBand(1000, 100), iota(1000), small);
+    EXPECT_EQ(exact.size(), 998u);
+    EXPECT_EQ(small.fallbacks, 0u);
+    PolygonStats large;
+    const auto fanned = triangulatePolygon(spiralBand(4000, 100), iota(4000), large);
+    EXPECT_EQ(fanned.size(), 3998u);
+    EXPECT_EQ(large.polygons, 1u);
+    EXPECT_EQ(large.fallbacks, 1u);
 }
 
 // ---- [SECTION] ASCII STL --------------------------------------------------------------------

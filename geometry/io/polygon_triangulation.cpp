@@ -25,6 +25,12 @@ using Tri = std::array<uint32_t, 3>;
 
 // Ear clipping costs O(n²) (O(n³) at worst); larger faces are fanned and counted as fallbacks.
 constexpr size_t kMaxEarClipCorners = 4096;
+// The worst case is real (a thin spiral band has ears only at its two ends, so every clip walks
+// the ring testing corners against the ring), and a hostile file can ask for it. Work is capped
+// at this many steps per corner; the rest of the face is then fanned and counted as a fallback.
+// A spiral band of 1000 corners over 100 turns needs 4.2·10⁴ steps per corner; 4000 corners
+// would need 6.2·10⁵ (2.5·10⁹ in all, 6 s) and are fanned (tests/test_polygon_loading.cpp).
+constexpr uint64_t kEarClipStepsPerCorner = 65536;
 constexpr double kNonPlanarFraction = 1e-3;
 
 // ---- [SECTION] Plane and projection ---------------------------------------------------------
@@ -73,13 +79,15 @@ std::vector<glm::dvec2> projectToPlane(const std::vector<glm::dvec3>& p, const g
 
 // ---- [SECTION] Ear clipping -----------------------------------------------------------------
 
-/// The corners still to clip, as a doubly linked ring over positions 0..n-1.
+/// The corners still to clip, as a doubly linked ring over positions 0..n-1, and the work left.
 struct Ring {
     const std::vector<glm::dvec2>& pt;
     std::vector<uint32_t> prev, next;
     size_t size;
+    uint64_t stepsLeft; // corners visited by isEar before the face is given up and fanned
 
-    explicit Ring(const std::vector<glm::dvec2>& points) : pt(points), prev(points.size()), next(points.size()) {
+    explicit Ring(const std::vector<glm::dvec2>& points)
+        : pt(points), prev(points.size()), next(points.size()), stepsLeft(kEarClipStepsPerCorner * points.size()) {
         size = points.size();
         for (uint32_t i = 0; i < size; ++i) {
             prev[i] = static_cast<uint32_t>((i + size - 1) % size);
@@ -103,11 +111,13 @@ bool inTriangle(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, c
 }
 
 /// A convex corner whose triangle holds no reflex (or flat) corner of the rest of the ring.
-bool isEar(const Ring& r, uint32_t ear) {
+/// Each corner visited spends one step of the ring's budget (checked by the caller).
+bool isEar(Ring& r, uint32_t ear) {
     const glm::dvec2 &a = r.pt[r.prev[ear]], &b = r.pt[ear], &c = r.pt[r.next[ear]];
     if (cross(a, b, c) <= 0) return false; // reflex or flat
     const glm::dvec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
     for (uint32_t p = r.next[r.next[ear]]; p != r.prev[ear]; p = r.next[p]) {
+        r.stepsLeft -= r.stepsLeft > 0;
         const glm::dvec2& q = r.pt[p];
         if (q.x < lo.x || q.x > hi.x || q.y < lo.y || q.y > hi.y || q == a) continue;
         if (inTriangle(a, b, c, q) && cross(r.pt[r.prev[p]], q, r.pt[r.next[p]]) <= 0) return false;
@@ -133,11 +143,13 @@ uint32_t filterPoints(Ring& r, uint32_t start) {
     return p;
 }
 
-/// Clips ears into `out` (as positions in the ring); false when it got stuck with corners left.
+/// Clips ears into `out` (as positions in the ring); false when it got stuck, or ran out of
+/// budget, with corners left.
 bool clipEars(Ring& r, uint32_t ear, std::vector<Tri>& out) {
     for (int pass = 0; pass < 2; ++pass) {
         uint32_t stop = ear;
         while (r.size > 3) {
+            if (r.stepsLeft == 0) return false;
             const uint32_t pv = r.prev[ear], nx = r.next[ear];
             if (isEar(r, ear)) {
                 out.push_back({pv, ear, nx});
