@@ -1,4 +1,5 @@
 #include "bench_command.h"
+#include "app/output_folder.h"
 
 #include "app/caster_lod_setup.h"
 #include "app/resources.h"
@@ -277,7 +278,7 @@ int runBench(const BenchOptions& o) {
     const ui::charts::TradeoffY yAxis = ui::charts::parseTradeoffY(o.y).value_or(ui::charts::TradeoffY::P95);
     checkChartAxes(o, yAxis);
     const std::optional<geometry::io::ScenePath> path = benchPath(file, o.path);
-    std::filesystem::create_directories(o.common.out);
+    createOutputFolder(o.common.out);
 
     auto context = renderer::createHeadlessContext(renderer::parseBackend(o.common.backend));
     geometry::scene::Scene& scene = file.scene;

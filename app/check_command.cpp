@@ -5,6 +5,7 @@
 //   [SECTION] The command .... addCheckCommand, runCheck
 
 #include "check_command.h"
+#include "app/output_folder.h"
 
 #include "check_file.h"
 #include "check_report.h"
@@ -355,9 +356,7 @@ int runCheck(const CheckOptions& o) {
         return fail(e.what());
     }
 
-    std::error_code ec;
-    fs::create_directories(o.out, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + o.out + ": " + ec.message());
+    createOutputFolder(o.out);
     CaseResults results(cases.size());
     for (size_t i = 0; i < cases.size(); ++i) {
         try {

@@ -1,4 +1,5 @@
 #include "curves_command.h"
+#include "app/output_folder.h"
 
 #include "render_options.h"
 
@@ -108,9 +109,7 @@ std::vector<double> gammaSamplesDeg(double stepDeg) { return ui::charts::gammaSa
 
 int runCurves(const CurvesOptions& o) {
     validateCurves(o);
-    std::error_code ec;
-    std::filesystem::create_directories(o.out, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + o.out + ": " + ec.message());
+    createOutputFolder(o.out);
     const std::filesystem::path dir(o.out);
 
     const ui::charts::CurveParams p = paramsOf(o);

@@ -1,4 +1,5 @@
 #include "render_command.h"
+#include "app/output_folder.h"
 
 #include "dashboard_setup.h"
 #include "geometry/analysis/ground_truth.h"
@@ -169,9 +170,7 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
     if (e.lightSplit >= int(f.plan.splits.size()))
         throw std::invalid_argument("--light-split " + std::to_string(e.lightSplit) + ": the plan has " +
                                     std::to_string(f.plan.splits.size()) + " split(s)");
-    std::error_code ec;
-    std::filesystem::create_directories(o.out, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + o.out + ": " + ec.message());
+    createOutputFolder(o.out);
     Writer w{std::filesystem::path(o.out), {}};
 
     std::unique_ptr<geometry::analysis::GroundTruth> truth;

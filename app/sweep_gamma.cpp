@@ -1,4 +1,5 @@
 // `shadowscope sweep gamma`: the light turned about the eye, every warp method at every angle.
+#include "app/output_folder.h"
 #include "sweep_command.h"
 #include "sweep_frame.h"
 
@@ -187,9 +188,7 @@ int runSweepGamma(const SweepGammaOptions& o) {
     geometry::shadow::validateOrThrow(o.render.settings);
     const geometry::scene::Scene scene = loadScene(o.render);
     geometry::shadow::validateFrustum(scene.camera.near, scene.camera.far, scene.camera.fovYDeg);
-    std::error_code ec;
-    std::filesystem::create_directories(o.render.out, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + o.render.out + ": " + ec.message());
+    createOutputFolder(o.render.out);
     const std::filesystem::path dir(o.render.out);
 
     SweepRenderer sweeper(scene, o.render.backend);

@@ -1,5 +1,6 @@
 // `shadowscope sweep path`: a camera or light path of a scene file, frame by frame, with the
 // flicker and seam measures of geometry/analysis/stability_metrics.h.
+#include "app/output_folder.h"
 #include "app/resources.h"
 #include "sweep_command.h"
 #include "sweep_frame.h"
@@ -217,9 +218,7 @@ int runSweepPath(const SweepPathOptions& o) {
     geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.render.scene), {}, o.render.up);
     const geometry::io::ScenePath path = findPath(file, o);
     const geometry::scene::Scene scene = startScene(file, o.render);
-    std::error_code ec;
-    std::filesystem::create_directories(o.render.out, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + o.render.out + ": " + ec.message());
+    createOutputFolder(o.render.out);
     const std::filesystem::path dir(o.render.out);
 
     SweepRenderer sweeper(scene, o.render.backend);

@@ -3,13 +3,14 @@
 //   writeCsv, describe ... tune.csv and the figures as printed (modelled cost; measured time apart)
 //   fewestReceivers ...... what decides the screening size
 //   calibrateCost ........ --calibrate-cost: the cost model's fit on this backend
-//   startSettings, tuneViews, createOutputFolder ... what runTune starts from
+//   startSettings, tuneViews ... what runTune starts from
 //   measureRequests ...... measures what the tuner asks for
 //   writeTuneChart ....... tune.svg, tune.png
 //   reportRecommended, reportClosest ... the preset saved, what is printed, the exit code
 //   runTune .............. the search, its files and exit code
 
 #include "tune_command.h"
+#include "app/output_folder.h"
 
 #include "app/caster_lod_setup.h"
 #include "app/resources.h"
@@ -217,13 +218,6 @@ TuneViews tuneViews(const geometry::io::SceneFile& file, const std::vector<std::
         out.line = "the scene's camera";
     }
     return out;
-}
-
-/// Creates the output folder, saying why when it cannot.
-void createOutputFolder(const std::filesystem::path& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw std::runtime_error("cannot create output folder " + dir.string() + ": " + ec.message());
 }
 
 /// Measures what the tuner asks for until it is done; returns each evaluation's figures per view.
