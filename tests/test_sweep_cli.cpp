@@ -115,14 +115,15 @@ TEST(SweepGamma, EveryMethodPassesTheCheckAtCiSize) {
 }
 
 // Fitted to the eye's samples, no caster is lost at any angle: the lost-caster check
-// (false_lit_clipped, clipped_casters) stays 0 over a 15° γ sweep of every method, and --check passes.
+// (false_lit_clipped, clipped_casters) stays 0 over a 30° γ sweep of every method, and --check passes.
+// 30° steps suffice: a planner that loses casters does so over 0°–75° (docs/stability.md, rule 4).
 TEST(SweepGamma, SampleFocusLosesNoCasterAtAnyAngle) {
     const fs::path dir = freshDir("sweep_gamma_samples");
     const CommandResult r =
-        run("sweep gamma " + kSmall + "--step 15 --check --set focus.mode=samples --out " + dir.string());
+        run("sweep gamma " + kSmall + "--step 30 --check --set focus.mode=samples --out " + dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto rows = readCsv(dir / "sweep.csv");
-    ASSERT_EQ(rows.size(), 13u * 5u);
+    ASSERT_EQ(rows.size(), 7u * 5u);
     for (const auto& row : rows) {
         SCOPED_TRACE(row.at("method") + " at " + row.at("angle_deg"));
         EXPECT_EQ(num(row, "false_lit_clipped"), 0);
@@ -133,15 +134,15 @@ TEST(SweepGamma, SampleFocusLosesNoCasterAtAnyAngle) {
 
 // Continuity is judged at 1° steps (docs/stability.md): the window on the dueling side where the
 // gain of every continuity method changes fastest, across γ_lim ≈ 30.5° and φ = 30° (angles 149.5
-// and 150), where GLiSPSM and GMNPR switch formulas.
+// and 150), where GLiSPSM and GMNPR switch formulas; two steps either side of them.
 TEST(SweepGamma, ContinuityMethodsPassAtOneDegreeAcrossTheirSwitchingAngles) {
     const fs::path dir = freshDir("sweep_gamma_window");
     const CommandResult r =
-        run("sweep gamma " + kSmall + "--methods lispsm,glispsm,gmnpr --from 146 --to 156 --step 1 --check --out " +
+        run("sweep gamma " + kSmall + "--methods lispsm,glispsm,gmnpr --from 148 --to 152 --step 1 --check --out " +
             dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const auto rows = readCsv(dir / "sweep.csv");
-    ASSERT_EQ(rows.size(), 11u * 3u);
+    ASSERT_EQ(rows.size(), 5u * 3u);
     for (size_t i = 3; i < rows.size(); ++i) {
         const auto& a = rows[i - 3];
         const auto& b = rows[i];
