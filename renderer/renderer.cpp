@@ -140,9 +140,10 @@ void Renderer::uploadShadowBlock(const geometry::shadow::ShadowPlan& plan) {
     const ShadowBlock block = shadowBlock(plan, firstDepth_.resolution());
     glBindBuffer(GL_UNIFORM_BUFFER, shadowBlockBuffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
-    const std::vector<std::uint32_t> words = settingsBlockWords(plan.settings);
+    settingsBlockWords(plan.settings, settingsWords_);
     glBindBuffer(GL_UNIFORM_BUFFER, settingsBlockBuffer_);
-    glBufferSubData(GL_UNIFORM_BUFFER, 0, GLsizeiptr(words.size() * sizeof words[0]), words.data());
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, GLsizeiptr(settingsWords_.size() * sizeof settingsWords_[0]),
+                    settingsWords_.data());
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlockBuffer_);
     glBindBufferBase(GL_UNIFORM_BUFFER, kSettingsBlockBinding, settingsBlockBuffer_);
@@ -162,8 +163,8 @@ void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::
         depthPrePass(plan, viewport, views.depthPrePass);
     }
     prepassReady_ = false;
-    ShadowMapKey maps = shadowMapKey(plan);
-    stats_.shadowMapsReused = views.reuseShadowMaps && drawnMaps_ && *drawnMaps_ == maps;
+    shadowMapKey(plan, frameKey_);
+    stats_.shadowMapsReused = views.reuseShadowMaps && drawnMaps_ && *drawnMaps_ == frameKey_;
     if (stats_.shadowMapsReused) {
         uploadShadowBlock(plan); // the eye-side values changed; the maps and their triangle counts stay
     } else {
@@ -173,7 +174,7 @@ void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::
         drawnMaps_.reset(); // until the new maps are complete
         timers_.begin(Pass::Shadow);
         shadowPass(plan);
-        drawnMaps_ = std::move(maps);
+        drawnMaps_ = frameKey_; // a copy only when the maps were drawn, which costs far more
         ++stats_.shadowPasses;
     }
     ++stats_.eyePasses;

@@ -174,6 +174,8 @@ private:
     [[nodiscard]] ColorTarget& eyeImage() noexcept { return eyeTargets_[eyeSlot_].image; }
     [[nodiscard]] const ColorTarget& eyeImage() const noexcept { return eyeTargets_[eyeSlot_].image; }
     std::optional<ShadowMapKey> drawnMaps_;            // what the maps hold now; empty: nothing reusable
+    ShadowMapKey frameKey_;                            // this frame's key, filled in place (no allocation)
+    std::vector<std::uint32_t> settingsWords_;         // the settings block's upload, filled in place
     std::unique_ptr<SampleReduction> sampleReduction_; // made on first use
     bool prepassDrawn_ = true;                         // this frame's eye buffers hold the pre-pass depth
     bool prepassReady_ = false;                        // eyeSamples drew the pre-pass for this camera:

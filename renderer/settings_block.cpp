@@ -17,8 +17,14 @@ std::string_view settingGlslType(const geometry::shadow::SettingInfo& info) noex
 }
 
 std::vector<std::uint32_t> settingsBlockWords(const geometry::shadow::ShadowSettings& s) {
-    const auto& rows = geometry::shadow::settingsDeclaration();
     std::vector<std::uint32_t> words;
+    settingsBlockWords(s, words);
+    return words;
+}
+
+void settingsBlockWords(const geometry::shadow::ShadowSettings& s, std::vector<std::uint32_t>& words) {
+    const auto& rows = geometry::shadow::settingsDeclaration();
+    words.clear();
     words.reserve(rows.size() + 3);
     for (const auto& info : rows) {
         const double v = info.get(s);
@@ -30,7 +36,6 @@ std::vector<std::uint32_t> settingsBlockWords(const geometry::shadow::ShadowSett
         }
     }
     words.resize((words.size() + 3) / 4 * 4, 0u); // std140 rounds the block up to 16 bytes
-    return words;
 }
 
 } // namespace renderer

@@ -20,5 +20,7 @@ inline constexpr unsigned kSettingsBlockBinding = 1;
 /// The block's contents for `s`: one word per row (floats as their IEEE bits, ints as two's
 /// complement, flags 0 or 1), padded to a whole number of 16-byte rows.
 [[nodiscard]] std::vector<std::uint32_t> settingsBlockWords(const geometry::shadow::ShadowSettings& s);
+/// The same, written over `words` (which keeps its capacity: the renderer's per-frame upload allocates nothing).
+void settingsBlockWords(const geometry::shadow::ShadowSettings& s, std::vector<std::uint32_t>& words);
 
 } // namespace renderer

@@ -34,5 +34,8 @@ struct ShadowMapKey {
 
 /// The values of `plan` the shadow passes (depth, peeling, combine, moments) depend on.
 [[nodiscard]] ShadowMapKey shadowMapKey(const geometry::shadow::ShadowPlan& plan);
+/// The same, written over `key` (every field; its vectors keep their capacity, so a renderer's
+/// per-frame key allocates nothing once warm).
+void shadowMapKey(const geometry::shadow::ShadowPlan& plan, ShadowMapKey& key);
 
 } // namespace renderer

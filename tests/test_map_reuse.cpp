@@ -150,6 +150,25 @@ TEST_F(MapReuse, EveryEyeSideChangeOnReusedMapsGivesTheFreshPicture) {
     EXPECT_GE(checked, 15);
 }
 
+// The renderer fills one key in place every frame: written over the key of another plan (four
+// splits, caster levels on, a warp), it equals the key made fresh, field for field.
+TEST_F(MapReuse, AKeyWrittenInPlaceEqualsAFreshOne) {
+    ShadowSettings busy;
+    busy.splits.count = 4;
+    busy.casters.lod = CasterLod::Auto;
+    busy.warp.method = WarpMethod::Lispsm;
+    const ShadowPlan stale = plan(busy), simple = plan(ShadowSettings{});
+    renderer::ShadowMapKey key = renderer::shadowMapKey(stale);
+    ASSERT_NE(key, renderer::shadowMapKey(simple));
+    ASSERT_NE(key.lodEye, glm::vec3(0.f));
+    renderer::shadowMapKey(simple, key);
+    EXPECT_EQ(key, renderer::shadowMapKey(simple));
+    EXPECT_EQ(key.splits.size(), simple.splits.size());
+    EXPECT_EQ(key.lodEye, glm::vec3(0.f)) << "no caster levels: the eye is not part of the key";
+    renderer::shadowMapKey(stale, key);
+    EXPECT_EQ(key, renderer::shadowMapKey(stale));
+}
+
 TEST_F(MapReuse, EyeSideChangesKeepTheMapsAndTheSamePixels) {
     ShadowSettings s;
     s.resolution = 512;

@@ -11,7 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -136,4 +138,8 @@ TEST(SettingsBlock, WordsHoldEveryValueAsSet) {
     EXPECT_EQ(word("bias.tangent_plane"), 1u);
     EXPECT_EQ(word("bias.linear_z"), 0u);
     EXPECT_EQ(words.size() % 4, 0u);
+    // The renderer's upload writes over last frame's words: the same words as made fresh.
+    std::vector<std::uint32_t> reused(words.size() + 9, 0xdeadbeefu);
+    renderer::settingsBlockWords(s, reused);
+    EXPECT_EQ(reused, words);
 }
