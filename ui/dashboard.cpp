@@ -127,8 +127,9 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     stepCasterLod();
     applyCameraInput(input);
     renderViews();
-    if (auto status = sweep_.step(measureContext())) status_ = std::move(*status);
-    if (auto status = recommend_.step(measureContext())) status_ = std::move(*status);
+    const MeasureContext measuring = measureContext();
+    if (auto status = sweep_.step(measuring)) status_ = std::move(*status);
+    if (auto status = recommend_.step(measuring)) status_ = std::move(*status);
     pollInspections();
     updateInspection();
     updateHeatmap();
