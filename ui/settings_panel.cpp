@@ -9,12 +9,28 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <type_traits>
 
 namespace ui {
 
 namespace {
 
 using Kind = geometry::shadow::SettingInfo::Kind;
+
+/// An Int or Float row's slider (ImGui's scalar slider on T), logarithmic when the row says so.
+/// No AlwaysClamp: a typed out-of-range value must be refused with a message, not silently turned
+/// into something else.
+template <typename T>
+bool numberSlider(const geometry::shadow::SettingInfo& info, const std::string& label, double& value) {
+    constexpr bool isInt = std::is_same_v<T, int>;
+    T v = static_cast<T>(value);
+    const T lo = static_cast<T>(info.min), hi = static_cast<T>(info.max);
+    const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
+    const bool edited = ImGui::SliderScalar(label.c_str(), isInt ? ImGuiDataType_S32 : ImGuiDataType_Float, &v, &lo,
+                                            &hi, isInt ? "%d" : "%.4g", flags);
+    value = v;
+    return edited;
+}
 
 /// The row's widget; `value` in and out; true when the user changed it this frame.
 bool valueWidget(const geometry::shadow::SettingInfo& info, const std::string& label, double& value) {
@@ -40,23 +56,13 @@ bool valueWidget(const geometry::shadow::SettingInfo& info, const std::string& l
         break;
     }
     case Kind::Int: {
-        int v = static_cast<int>(value);
-        // No AlwaysClamp: a typed out-of-range value must be refused with a message, not
-        // silently turned into something else.
-        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
-        edited = ImGui::SliderInt(label.c_str(), &v, int(info.min), int(info.max), "%d", flags);
+        edited = numberSlider<int>(info, label, value);
+        const int v = static_cast<int>(value);
         if (edited && info.odd && v % 2 == 0 && v >= info.min && v <= info.max)
-            v = v + 1 <= int(info.max) ? v + 1 : v - 1; // odd-only keys snap
-        value = v;
+            value = v + 1 <= int(info.max) ? v + 1 : v - 1; // odd-only keys snap
         break;
     }
-    case Kind::Float: {
-        float v = static_cast<float>(value);
-        const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
-        edited = ImGui::SliderFloat(label.c_str(), &v, float(info.min), float(info.max), "%.4g", flags);
-        value = v;
-        break;
-    }
+    case Kind::Float: edited = numberSlider<float>(info, label, value); break;
     }
     return edited;
 }
