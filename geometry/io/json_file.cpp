@@ -85,4 +85,11 @@ json readJsonFile(const std::string& path, const std::string& label, std::size_t
     return reader.parse(text);
 }
 
+std::string describeJsonValue(const nlohmann::json& v) {
+    if (v.is_object() || v.is_array() || v.is_null()) return v.type_name();
+    std::string text = v.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    return std::string(v.type_name()) + " " + text;
+}
+
 } // namespace geometry::io

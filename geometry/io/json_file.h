@@ -11,4 +11,8 @@ namespace geometry::io {
 [[nodiscard]] nlohmann::json readJsonFile(const std::string& path, const std::string& label, std::size_t maxBytes,
                                           int maxDepth);
 
+/// A value for an error message: its type, plus the value itself for scalars (shortened to 40
+/// characters): "string \"abc\"", "number 1e+30", "object".
+[[nodiscard]] std::string describeJsonValue(const nlohmann::json& v);
+
 } // namespace geometry::io

@@ -11,6 +11,7 @@
 //   [SECTION] Checks per line ............ checkText, vertex, texcoord, face, checkIndex, materialLibrary
 //   [SECTION] Reading the file ........... scanObjFile, validateObjFile, readObjFile
 #include "geometry/io/obj_validate.h"
+#include "geometry/io/mesh_limits.h"
 
 #include <algorithm>
 #include <array>
@@ -29,9 +30,6 @@ namespace geometry::io::detail {
 
 namespace {
 
-// Same caps as the other formats (openmesh_io.cpp), far above any real CAD part.
-constexpr uint64_t kMaxVertices = 50'000'000;
-constexpr uint64_t kMaxTriangles = 50'000'000;
 // OpenMesh removed repeated corners from each polygon in O(k²) time, and ear clipping is
 // O(k²) too: one polygon, and all of them together, stay well under a second.
 constexpr uint64_t kMaxCorners = 32'768;
@@ -260,8 +258,7 @@ private:
         if (corners < 3) fail("face has " + plural(corners, "vertex", "vertices") + ", needs at least 3");
         if (out_) out_->faceStarts.push_back(static_cast<uint32_t>(out_->corners.size()));
         triangles_ += corners - 2;
-        if (triangles_ > kMaxTriangles)
-            fail("more than " + std::to_string(kMaxTriangles) + " triangles, over the limit");
+        if (triangles_ > kMaxFaces) fail("more than " + std::to_string(kMaxFaces) + " triangles, over the limit");
         cornerPairs_ += corners * (corners - 1) / 2;
         if (cornerPairs_ > kMaxCornerPairs)
             fail("too many large polygons for OpenMesh's OBJ reader (its cost grows with the square of "

@@ -22,6 +22,7 @@
 //                                          validatePly
 //   [SECTION] Reading .................... QuietOpenMesh, readThroughOpenMesh, readObj, readOpenMeshFile
 //   [SECTION] Saving ..................... toOpenMesh, saveMesh
+#include "geometry/io/mesh_limits.h"
 #include "geometry/io/model_loader.h"
 #include "geometry/io/obj_validate.h"
 #include "geometry/io/polygon_triangulation.h"
@@ -54,9 +55,7 @@ scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, Cl
 
 namespace {
 
-// Hard caps, far above any real CAD part, so a header can never make us plan for more.
-constexpr uint64_t kMaxVertices = 50'000'000;
-constexpr uint64_t kMaxFaces = 50'000'000;
+// Beside the caps of mesh_limits.h: one face's corners.
 constexpr uint64_t kMaxFaceValence = 1'000'000;
 
 // ---- [SECTION] Files ------------------------------------------------------------------------

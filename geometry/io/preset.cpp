@@ -64,14 +64,6 @@ template <class Json> Json toJson(const shadow::ShadowSettings& s, Json out) {
     return out;
 }
 
-/// A value for an error message: the type, plus the value itself for scalars (shortened).
-std::string describe(const json& v) {
-    if (v.is_object() || v.is_array() || v.is_null()) return v.type_name();
-    std::string text = v.dump(-1, ' ', false, json::error_handler_t::replace);
-    if (text.size() > 40) text = text.substr(0, 37) + "...";
-    return std::string(v.type_name()) + " " + text;
-}
-
 std::string expectedType(const shadow::SettingInfo& info) {
     switch (info.kind) {
     case Kind::Int: return "an integer (" + info.rangeText() + ")";
@@ -87,7 +79,7 @@ std::string expectedType(const shadow::SettingInfo& info) {
 std::string leafText(const shadow::SettingInfo& info, const json& v) {
     const auto wrongType = [&] {
         return std::invalid_argument(std::string(info.key) + ": expected " + expectedType(info) + ", got " +
-                                     describe(v));
+                                     describeJsonValue(v));
     };
     switch (info.kind) {
     case Kind::Int:
@@ -130,7 +122,8 @@ void applyObject(shadow::ShadowSettings& s, const json& object, const std::strin
                                     " levels");
     for (const auto& [name, value] : object.items()) {
         if (depth == 1 && (name == "name" || name == "description")) {
-            if (!value.is_string()) throw std::invalid_argument(name + ": expected a string, got " + describe(value));
+            if (!value.is_string())
+                throw std::invalid_argument(name + ": expected a string, got " + describeJsonValue(value));
             continue;
         }
         const std::string key = prefix.empty() ? name : prefix + "." + name;
@@ -139,7 +132,9 @@ void applyObject(shadow::ShadowSettings& s, const json& object, const std::strin
         else if (!isGroup(key))
             throw std::invalid_argument("unknown setting '" + key + "' (known: " + knownKeys() + ")");
         else if (value.is_object()) applyObject(s, value, key, depth + 1);
-        else throw std::invalid_argument(key + ": expected an object (a group of settings), got " + describe(value));
+        else
+            throw std::invalid_argument(key + ": expected an object (a group of settings), got " +
+                                        describeJsonValue(value));
     }
 }
 

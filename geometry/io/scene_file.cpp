@@ -1,5 +1,5 @@
 // Index
-//   [SECTION] Typed values with key paths ... member, element, describe, Reader
+//   [SECTION] Typed values with key paths ... member, element, Reader (describeJsonValue: json_file.h)
 //   [SECTION] Placement ..................... rotationXyz, readPlacement, reboundChunks, place
 //   [SECTION] Scene pieces .................. makeGround, framedCamera, meshBounds, endsWithIgnoreCase
 //   [SECTION] The scene file ................ budgetParams, builtinEntry, readMeshEntry, readViews,
@@ -62,14 +62,6 @@ std::string text(float v) {
     return out.str();
 }
 
-/// A value for an error message: the type, plus the value itself for scalars (shortened).
-std::string describe(const json& v) {
-    if (v.is_object() || v.is_array() || v.is_null()) return v.type_name();
-    std::string text = v.dump(-1, ' ', false, json::error_handler_t::replace);
-    if (text.size() > 40) text = text.substr(0, 37) + "...";
-    return std::string(v.type_name()) + " " + text;
-}
-
 /// Reads one scene file; every error names the file and the key path.
 class Reader {
 public:
@@ -81,7 +73,7 @@ public:
 
     /// `v` must be an object whose members are all in `allowed`.
     void checkObject(const json& v, const std::string& key, std::initializer_list<std::string_view> allowed) const {
-        if (!v.is_object()) fail(key, "expected an object, got " + describe(v));
+        if (!v.is_object()) fail(key, "expected an object, got " + describeJsonValue(v));
         for (const auto& [name, value] : v.items()) {
             if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
             std::string known;
@@ -91,37 +83,37 @@ public:
     }
 
     float number(const json& v, const std::string& key) const {
-        if (!v.is_number()) fail(key, "expected a number, got " + describe(v));
+        if (!v.is_number()) fail(key, "expected a number, got " + describeJsonValue(v));
         const double d = v.get<double>();
         // Finite doubles beyond float's range would turn into infinities.
         if (!std::isfinite(d) || std::abs(d) > double(std::numeric_limits<float>::max()))
-            fail(key, "number out of range: " + describe(v));
+            fail(key, "number out of range: " + describeJsonValue(v));
         return static_cast<float>(d);
     }
 
     float positive(const json& v, const std::string& key) const {
         const float f = number(v, key);
-        if (!(f > 0.f)) fail(key, "expected a positive number, got " + describe(v));
+        if (!(f > 0.f)) fail(key, "expected a positive number, got " + describeJsonValue(v));
         return f;
     }
 
     uint32_t unsignedInt(const json& v, const std::string& key, uint32_t lo, uint32_t hi) const {
         const std::string range = std::to_string(lo) + ".." + std::to_string(hi);
-        if (!v.is_number_integer()) fail(key, "expected an integer in " + range + ", got " + describe(v));
+        if (!v.is_number_integer()) fail(key, "expected an integer in " + range + ", got " + describeJsonValue(v));
         const bool inRange = v.is_number_unsigned()
                                  ? v.get<uint64_t>() >= lo && v.get<uint64_t>() <= hi
                                  : v.get<int64_t>() >= int64_t(lo) && v.get<int64_t>() <= int64_t(hi);
-        if (!inRange) fail(key, "expected an integer in " + range + ", got " + describe(v));
+        if (!inRange) fail(key, "expected an integer in " + range + ", got " + describeJsonValue(v));
         return static_cast<uint32_t>(v.get<uint64_t>());
     }
 
     std::string string(const json& v, const std::string& key) const {
-        if (!v.is_string()) fail(key, "expected a string, got " + describe(v));
+        if (!v.is_string()) fail(key, "expected a string, got " + describeJsonValue(v));
         return v.get<std::string>();
     }
 
     glm::vec3 vec3(const json& v, const std::string& key) const {
-        if (!v.is_array() || v.size() != 3) fail(key, "expected 3 numbers, got " + describe(v));
+        if (!v.is_array() || v.size() != 3) fail(key, "expected 3 numbers, got " + describeJsonValue(v));
         return {number(v[0], element(key, 0)), number(v[1], element(key, 1)), number(v[2], element(key, 2))};
     }
 
@@ -194,7 +186,7 @@ Placement readPlacement(const Reader& r, const json& e, const std::string& key) 
         if (v.is_number()) s = glm::vec3(r.positive(v, k));
         else if (v.is_array() && v.size() == 3)
             s = {r.positive(v[0], element(k, 0)), r.positive(v[1], element(k, 1)), r.positive(v[2], element(k, 2))};
-        else r.fail(k, "expected a positive number or 3 positive numbers, got " + describe(v));
+        else r.fail(k, "expected a positive number or 3 positive numbers, got " + describeJsonValue(v));
     }
     const glm::mat4 rm = rotationXyz(rot);
     Placement p;
@@ -362,7 +354,7 @@ void readMeshes(const Reader& r, const json& j, const fs::path& folder, const Pr
                 Defaults& defaults) {
     if (!j.contains("meshes")) return;
     const json& list = j["meshes"];
-    if (!list.is_array()) r.fail("meshes", "expected an array, got " + describe(list));
+    if (!list.is_array()) r.fail("meshes", "expected an array, got " + describeJsonValue(list));
     for (size_t i = 0; i < list.size(); ++i)
         readMeshEntry(r, list[i], element("meshes", i), folder, entryProgress(progress, i, list.size()), scene,
                       defaults);
@@ -384,7 +376,7 @@ void readOccluderEdge(const Reader& r, const json& j, scene::Scene& scene) {
     if (!j.contains("occluder_edge")) return;
     const json& v = j["occluder_edge"];
     if (!v.is_array() || v.size() != 2)
-        r.fail("occluder_edge", "expected 2 points [[x,y,z], [x,y,z]], got " + describe(v));
+        r.fail("occluder_edge", "expected 2 points [[x,y,z], [x,y,z]], got " + describeJsonValue(v));
     const std::array<glm::vec3, 2> edge{r.vec3(v[0], element("occluder_edge", 0)),
                                         r.vec3(v[1], element("occluder_edge", 1))};
     if (!(glm::length(edge[1] - edge[0]) > 0.f)) r.fail("occluder_edge", "the two points are the same");
@@ -394,7 +386,7 @@ void readOccluderEdge(const Reader& r, const json& j, scene::Scene& scene) {
 void readViews(const Reader& r, const json& j, SceneFile& f) {
     if (!j.contains("views")) return;
     const json& views = j["views"];
-    if (!views.is_object()) r.fail("views", "expected an object of named views, got " + describe(views));
+    if (!views.is_object()) r.fail("views", "expected an object of named views, got " + describeJsonValue(views));
     for (const auto& [name, v] : views.items()) {
         const std::string key = "views." + name;
         if (name.empty()) r.fail("views", "a view needs a non-empty name");
@@ -413,14 +405,15 @@ ScenePath readPath(const Reader& r, const json& v, const std::string& key, const
     if (v.contains("camera")) {
         const std::string k = member(key, "camera");
         const json& list = v["camera"];
-        if (!list.is_array() || list.empty()) r.fail(k, "expected a non-empty array of cameras, got " + describe(list));
+        if (!list.is_array() || list.empty())
+            r.fail(k, "expected a non-empty array of cameras, got " + describeJsonValue(list));
         for (size_t i = 0; i < list.size(); ++i) path.cameras.push_back(r.camera(list[i], element(k, i), scene.camera));
     }
     if (v.contains("light")) {
         const std::string k = member(key, "light");
         const json& list = v["light"];
         if (!list.is_array() || list.empty())
-            r.fail(k, "expected a non-empty array of light directions, got " + describe(list));
+            r.fail(k, "expected a non-empty array of light directions, got " + describeJsonValue(list));
         for (size_t i = 0; i < list.size(); ++i) path.lights.push_back(r.direction(list[i], element(k, i)));
     }
     return path;
@@ -429,7 +422,7 @@ ScenePath readPath(const Reader& r, const json& v, const std::string& key, const
 void readPaths(const Reader& r, const json& j, SceneFile& f) {
     if (!j.contains("paths")) return;
     const json& paths = j["paths"];
-    if (!paths.is_object()) r.fail("paths", "expected an object of named paths, got " + describe(paths));
+    if (!paths.is_object()) r.fail("paths", "expected an object of named paths, got " + describeJsonValue(paths));
     for (const auto& [name, v] : paths.items()) {
         if (name.empty()) r.fail("paths", "a path needs a non-empty name");
         f.paths[name] = readPath(r, v, "paths." + name, f.scene);
