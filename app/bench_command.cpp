@@ -181,7 +181,8 @@ std::vector<NamedView> benchViews(const geometry::io::SceneFile& file, const std
         if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
         views.emplace_back(*it);
     }
-    if (views.empty()) views.emplace_back("default", geometry::io::CanonicalView{file.scene.camera, file.scene.light});
+    if (views.empty())
+        views.emplace_back("default", geometry::io::CanonicalView{file.scene.camera, file.scene.lights[0]});
     return views;
 }
 
@@ -294,10 +295,10 @@ int runBench(const BenchOptions& o) {
     for (const auto& cfg : configs)
         for (const auto& [viewName, view] : views) {
             scene.camera = view.camera;
-            scene.light = view.light;
+            scene.lights[0] = view.light;
             ensureCasterLod(r, scene, cfg.settings);
             const renderer::Measurement m =
-                renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, scene.light, o.common.size,
+                renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, scene.lights[0], o.common.size,
                                   {.warmup = o.warmup, .frames = o.frames, .truthSamples = o.truth.samples},
                                   o.truth.enabled ? truth.get() : nullptr);
             if (m.gpuFrames == 0) gpuTimes = false;
@@ -309,10 +310,10 @@ int runBench(const BenchOptions& o) {
     if (path)
         for (size_t c = 0; c < configs.size(); ++c) {
             scene.camera = views.front().second.camera;
-            scene.light = views.front().second.light;
-            paths[c] =
-                renderer::measurePath(r, configs[c].settings, scene.bounds(), {path->cameras, path->lights},
-                                      {scene.camera, scene.light}, o.frames, o.common.size, *truth, o.truth.samples);
+            scene.lights[0] = views.front().second.light;
+            paths[c] = renderer::measurePath(r, configs[c].settings, scene.bounds(), {path->cameras, path->lights},
+                                             {scene.camera, scene.lights[0]}, o.frames, o.common.size, *truth,
+                                             o.truth.samples);
             std::cerr << "[path " << o.path << ", " << (c + 1) << "/" << configs.size() << "] " << configs[c].label
                       << ": world-space flicker " << paths[c].flickerMean << ", screen " << paths[c].flickerScreen
                       << ", seam " << paths[c].seam << '\n';

@@ -46,7 +46,7 @@ ui::DashboardState initialDashboardState(const ui::LoadedScene& scene, const Ren
     ui::DashboardState s;
     s.settings[0] = s.settings[1] = options.settings;
     s.camera = ui::OrbitCamera::from(scene.file.scene.camera);
-    s.sun = ui::SunAngles::from(scene.file.scene.light.direction);
+    s.sun = ui::SunAngles::from(scene.file.scene.lights[0].direction);
     return s;
 }
 

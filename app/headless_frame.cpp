@@ -26,8 +26,8 @@ HeadlessFrame renderHeadless(geometry::scene::Scene scene, const RenderOptions& 
     ensureCasterLod(*f.renderer, f.scene, settings);
     for (int i = 0; i <= warmupFrames; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
-        f.plan =
-            renderer::planFrame(*f.renderer, settings, f.scene.bounds(), f.scene.camera, f.scene.light, options.size);
+        f.plan = renderer::planFrame(*f.renderer, settings, f.scene.bounds(), f.scene.camera, f.scene.lights[0],
+                                     options.size);
         f.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
         f.renderer->render(f.plan, options.size, views);
     }

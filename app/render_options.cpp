@@ -271,13 +271,13 @@ void applyView(geometry::io::SceneFile& file, const RenderOptions& o) {
         const auto it = file.views.find(o.view);
         if (it == file.views.end()) throw std::invalid_argument(unknownView(o, file));
         scene.camera = it->second.camera;
-        scene.light = it->second.light;
+        scene.lights[0] = it->second.light;
     }
     if (o.camera) {
         scene.camera.eye = o.camera->eye;
         scene.camera.target = o.camera->target;
     }
-    if (o.light) scene.light.direction = *o.light;
+    if (o.light) scene.lights[0].direction = *o.light;
 }
 
 geometry::io::SceneFile loadSceneFile(const RenderOptions& o) {

@@ -30,7 +30,7 @@ SweepRenderer::SweepRenderer(const geometry::scene::Scene& scene, const std::str
       renderer_(std::make_unique<renderer::Renderer>(scene_)), truth_(scene_) {}
 
 SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& settings,
-                                 const geometry::scene::Camera& camera, const geometry::scene::DirectionalLight& light,
+                                 const geometry::scene::Camera& camera, const geometry::scene::Light& light,
                                  const geometry::shadow::Viewport& viewport) {
     ensureCasterLod(*renderer_, scene_, settings);
     context_->makeCurrent();

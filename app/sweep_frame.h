@@ -28,8 +28,7 @@ public:
     /// previous frame are reused when camera, light and viewport are unchanged (the eye pass, and
     /// so every receiver position, does not depend on the shadow settings).
     [[nodiscard]] SweepFrame render(const geometry::shadow::ShadowSettings& settings,
-                                    const geometry::scene::Camera& camera,
-                                    const geometry::scene::DirectionalLight& light,
+                                    const geometry::scene::Camera& camera, const geometry::scene::Light& light,
                                     const geometry::shadow::Viewport& viewport);
 
     [[nodiscard]] const renderer::GlContext& context() const noexcept { return *context_; }

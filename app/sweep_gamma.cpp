@@ -107,11 +107,11 @@ std::vector<SweepRecord> renderSweep(SweepRenderer& sweeper, const SweepGammaOpt
     const std::vector<geometry::shadow::WarpMethod>& methods = swept.methods;
     const std::vector<std::string>& names = swept.names;
     const glm::vec3 v = scene.camera.viewDir();
-    const glm::vec3 reference = scene.light.l();
+    const glm::vec3 reference = scene.lights[0].l();
     std::vector<SweepRecord> rows;
     SweepProgress progress("sweep gamma", int(angles.size() * methods.size()));
     for (const double angle : angles) {
-        const geometry::scene::DirectionalLight light{geometry::scene::lightAtViewAngle(v, reference, float(angle))};
+        const geometry::scene::Light light{geometry::scene::lightAtViewAngle(v, reference, float(angle))};
         // Uniform at every angle, swept or not: the continuity rule compares each warp with it.
         const auto renderMethod = [&](geometry::shadow::WarpMethod method, const std::string& name) {
             geometry::shadow::ShadowSettings settings = o.render.settings;

@@ -109,10 +109,10 @@ geometry::scene::Scene startScene(geometry::io::SceneFile& file, const RenderOpt
         if (view == file.views.end())
             throw std::invalid_argument("--view " + render.view + ": scene '" + render.scene + "' has no such view");
         scene.camera = view->second.camera;
-        scene.light = view->second.light;
+        scene.lights[0] = view->second.light;
     }
     if (render.camera) scene.camera.eye = render.camera->eye, scene.camera.target = render.camera->target;
-    if (render.light) scene.light.direction = *render.light;
+    if (render.light) scene.lights[0].direction = *render.light;
     return scene;
 }
 
@@ -150,8 +150,8 @@ std::vector<PathRow> walkPath(SweepRenderer& sweeper, const SweepPathOptions& o,
         const double t = geometry::scene::pathParameter(i, o.frames);
         const geometry::scene::Camera camera =
             path.cameras.empty() ? scene.camera : geometry::scene::cameraAlongPath(path.cameras, t);
-        const geometry::scene::DirectionalLight light{
-            path.lights.empty() ? scene.light.direction : geometry::scene::lightAlongPath(path.lights, t)};
+        const geometry::scene::Light light{path.lights.empty() ? scene.lights[0].direction
+                                                               : geometry::scene::lightAlongPath(path.lights, t)};
         geometry::shadow::validateFrustum(camera.near, camera.far, camera.fovYDeg);
         SweepFrame f = sweeper.render(o.render.settings, camera, light, o.render.size);
         const PathRow& r = rows.emplace_back(pathRow(i, t, f, previous, camera, o.render.size));

@@ -214,7 +214,7 @@ TuneViews tuneViews(const geometry::io::SceneFile& file, const std::vector<std::
         out.line += (out.line.empty() ? "" : ", ") + name;
     }
     if (out.views.empty()) {
-        out.views.push_back({file.scene.camera, file.scene.light});
+        out.views.push_back({file.scene.camera, file.scene.lights[0]});
         out.line = "the scene's camera";
     }
     return out;

@@ -15,7 +15,7 @@ namespace renderer {
 
 Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
                     const geometry::scene::Aabb& S, const geometry::scene::Camera& camera,
-                    const geometry::scene::DirectionalLight& light, const geometry::shadow::Viewport& viewport,
+                    const geometry::scene::Light& light, const geometry::shadow::Viewport& viewport,
                     const MeasureOptions& options, const geometry::analysis::GroundTruth* truth) {
     ViewOptions views;
     views.lightViewSize = 16;
@@ -78,8 +78,8 @@ PathFigures measurePath(Renderer& renderer, const geometry::shadow::ShadowSettin
         const double t = geometry::scene::pathParameter(i, frames);
         const geometry::scene::Camera camera =
             path.cameras.empty() ? start.camera : geometry::scene::cameraAlongPath(path.cameras, t);
-        const geometry::scene::DirectionalLight light{
-            path.lights.empty() ? start.light.direction : geometry::scene::lightAlongPath(path.lights, t)};
+        const geometry::scene::Light light{path.lights.empty() ? start.light.direction
+                                                               : geometry::scene::lightAlongPath(path.lights, t)};
         Measurement m = measure(renderer, settings, S, camera, light, size,
                                 {.warmup = 0, .frames = 1, .timed = false, .truthSamples = truthSamples}, &truth);
         geometry::analysis::Inspection& in = m.inspection;

@@ -39,14 +39,14 @@ struct Measurement {
 /// The light views are drawn at 16² without overlays: they are not what is measured.
 [[nodiscard]] Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
                                   const geometry::scene::Aabb& S, const geometry::scene::Camera& camera,
-                                  const geometry::scene::DirectionalLight& light,
-                                  const geometry::shadow::Viewport& viewport, const MeasureOptions& options,
+                                  const geometry::scene::Light& light, const geometry::shadow::Viewport& viewport,
+                                  const MeasureOptions& options,
                                   const geometry::analysis::GroundTruth* truth = nullptr);
 
 /// A camera and its light: one view a configuration is measured on.
 struct MeasureView {
     geometry::scene::Camera camera;
-    geometry::scene::DirectionalLight light;
+    geometry::scene::Light light;
 };
 
 /// Measures a tune request (geometry/analysis/tuner.h) on every view with truth: the figures tune

@@ -6,8 +6,8 @@ namespace renderer {
 
 geometry::shadow::ShadowPlan planFrame(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
                                        const geometry::scene::Aabb& S, const geometry::scene::Camera& camera,
-                                       const geometry::scene::DirectionalLight& light,
-                                       const geometry::shadow::Viewport& viewport, double* planMicroseconds) {
+                                       const geometry::scene::Light& light, const geometry::shadow::Viewport& viewport,
+                                       double* planMicroseconds) {
     using Clock = std::chrono::steady_clock;
     double us = 0;
     const auto plan = [&](const geometry::shadow::SampleBounds* samples) {

@@ -11,7 +11,7 @@ namespace renderer {
 /// `planMicroseconds`, when given, receives the CPU time of the planner alone (not the pre-pass).
 [[nodiscard]] geometry::shadow::ShadowPlan
 planFrame(Renderer& renderer, const geometry::shadow::ShadowSettings& settings, const geometry::scene::Aabb& S,
-          const geometry::scene::Camera& camera, const geometry::scene::DirectionalLight& light,
+          const geometry::scene::Camera& camera, const geometry::scene::Light& light,
           const geometry::shadow::Viewport& viewport, double* planMicroseconds = nullptr);
 
 } // namespace renderer

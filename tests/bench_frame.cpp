@@ -51,7 +51,7 @@ ShadowSettings preset(const std::string& name) {
 /// Renders one frame and waits for it; returns GPU times per pass.
 renderer::PassTimes frame(const ShadowSettings& s, const Viewport& vp) {
     Setup& st = setup();
-    const ShadowPlan plan = planShadows(s, st.scene.bounds(), st.scene.camera, st.scene.light, vp);
+    const ShadowPlan plan = planShadows(s, st.scene.bounds(), st.scene.camera, st.scene.lights[0], vp);
     renderer::ViewOptions views;
     views.lightViewSize = 64;
     views.overlays = views.unwarped = false; // time the shadowing, not the inspection views

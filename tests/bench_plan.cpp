@@ -15,7 +15,7 @@ static void BM_PlanShadows(benchmark::State& state) {
     settings.splits.count = int(state.range(0));
     settings.splits.scheme = SplitScheme::Practical;
     for (auto _ : state) {
-        ShadowPlan plan = planShadows(settings, S, scene.camera, scene.light, {1920, 1080});
+        ShadowPlan plan = planShadows(settings, S, scene.camera, scene.lights[0], {1920, 1080});
         benchmark::DoNotOptimize(plan);
     }
 }

@@ -53,7 +53,7 @@ static void BM_Occluded(benchmark::State& state) {
     const Fixture& f = fixture();
     const int threads = static_cast<int>(state.range(0));
     for (auto _ : state) {
-        auto shadow = f.truth.occluded(f.hits.points, f.hits.normals, f.scene.light.l(), threads);
+        auto shadow = f.truth.occluded(f.hits.points, f.hits.normals, f.scene.lights[0].l(), threads);
         benchmark::DoNotOptimize(shadow.data());
     }
     reportRays(state, f.hits.hitCount());
@@ -76,7 +76,7 @@ BENCHMARK(BM_PrimaryHits)->Apply(timed);
 static void BM_SunVisibility(benchmark::State& state) {
     const Fixture& f = fixture();
     static const PrimaryHits small = f.truth.primaryHits(f.scene.camera, 320, 180);
-    const glm::vec3 l = f.scene.light.l();
+    const glm::vec3 l = f.scene.lights[0].l();
     std::vector<glm::vec3> normals = small.normals;
     size_t receivers = 0;
     for (glm::vec3& n : normals) {

@@ -20,7 +20,7 @@ struct SceneBench {
     geometry::shadow::ShadowPlan render(const geometry::shadow::ShadowSettings& settings,
                                         geometry::shadow::Viewport vp) {
         context->makeCurrent();
-        const auto plan = geometry::shadow::planShadows(settings, scene.bounds(), scene.camera, scene.light, vp);
+        const auto plan = geometry::shadow::planShadows(settings, scene.bounds(), scene.camera, scene.lights[0], vp);
         r->render(plan, vp, 64);
         return plan;
     }

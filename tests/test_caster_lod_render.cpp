@@ -41,7 +41,7 @@ Scene barScene() {
     scene.camera.target = {0.45f, 0.f, 0.15f};
     scene.camera.near = 0.1f;
     scene.camera.far = 2000.f;
-    scene.light.direction = {0.15f, -1.f, 0.05f};
+    scene.lights[0].direction = {0.15f, -1.f, 0.05f};
     return scene;
 }
 
@@ -71,7 +71,7 @@ TEST(CasterLod, AThinBarKeepsItsShadow) {
     settings.filter.type = FilterType::None;
     settings.focus = FocusMode::Samples;
     const Viewport vp{320, 240};
-    const ShadowPlan off = renderer::planFrame(r, settings, scene.bounds(), scene.camera, scene.light, vp);
+    const ShadowPlan off = renderer::planFrame(r, settings, scene.bounds(), scene.camera, scene.lights[0], vp);
     r.render(off, vp, 16);
     const size_t shadowOff = barShadow(r.readShadowMask(), r.readPositions());
     geometry::scene::Aabb under;
@@ -81,7 +81,7 @@ TEST(CasterLod, AThinBarKeepsItsShadow) {
     EXPECT_LT(texel, 0.05f);
     settings.casters.lod = CasterLod::Auto;
     settings.casters.lodTexels = 4.f;
-    const ShadowPlan on = renderer::planFrame(r, settings, scene.bounds(), scene.camera, scene.light, vp);
+    const ShadowPlan on = renderer::planFrame(r, settings, scene.bounds(), scene.camera, scene.lights[0], vp);
     r.render(on, vp, 16);
     ASSERT_GT(shadowOff, 50u);
     EXPECT_EQ(barShadow(r.readShadowMask(), r.readPositions()), shadowOff);
@@ -98,7 +98,7 @@ TEST(CasterLod, WithoutLevelsEveryTriangleIsDrawnWithAWarning) {
     settings.resolution = 256;
     settings.casters.lod = CasterLod::Auto;
     const Viewport vp{64, 48};
-    r.render(planShadows(settings, scene.bounds(), scene.camera, scene.light, vp), vp, 16);
+    r.render(planShadows(settings, scene.bounds(), scene.camera, scene.lights[0], vp), vp, 16);
     EXPECT_EQ(sum(r.stats().splitTriangles), sum(r.stats().splitTrianglesFull));
     ASSERT_EQ(r.stats().warnings.size(), 1u);
     EXPECT_NE(r.stats().warnings[0].find("casters.lod"), std::string::npos);
@@ -118,7 +118,7 @@ TEST(CasterLod, PiperackHalvesShadowTrianglesAtTheSameAccuracy) {
     settings.resolution = 1024;
     const Viewport vp{320, 180};
     const auto run = [&] {
-        const auto m = renderer::measure(r, settings, scene.bounds(), scene.camera, scene.light, vp,
+        const auto m = renderer::measure(r, settings, scene.bounds(), scene.camera, scene.lights[0], vp,
                                          {.warmup = 0, .frames = 1, .timed = false}, &truth);
         const auto& t = *m.inspection.truth;
         return std::pair{t.falseLit + t.falseShadow, sum(r.stats().splitTriangles)};

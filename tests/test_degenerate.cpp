@@ -94,7 +94,7 @@ Frame renderAll(const Scene& scene, ShadowSettings settings, WarpMethod keep = W
         settings.warp.method = m;
         const std::string what(warpMethodName(m));
         Frame f;
-        f.plan = planShadows(settings, scene.bounds(), scene.camera, scene.light, vp);
+        f.plan = planShadows(settings, scene.bounds(), scene.camera, scene.lights[0], vp);
         expectFinitePlan(f.plan, what);
         r.render(f.plan, vp, 64);
         f.in = renderer::inspect(r, f.plan, &truth);
@@ -122,12 +122,12 @@ double misclassified(const Frame& f) { return f.in.truth->falseLit + f.in.truth-
 // eye ray, is lit.
 TEST(Degenerate, LightExactlyParallelToTheView) {
     Scene scene = makePlaneScene();
-    scene.light.direction = scene.camera.viewDir();
+    scene.lights[0].direction = scene.camera.viewDir();
     for (const WarpMethod m : kMethods) {
         ShadowSettings s = small();
         s.warp.method = m;
         s.splits.count = 3;
-        const ShadowPlan p = planShadows(s, scene.bounds(), scene.camera, scene.light, kSize);
+        const ShadowPlan p = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], kSize);
         EXPECT_EQ(p.gammaDeg, 0.f);
         EXPECT_EQ(p.lightViewAngleDeg, 0.f);
         for (const auto& split : p.splits) EXPECT_FALSE(split.warped()) << warpMethodName(m);
@@ -146,7 +146,7 @@ TEST(Degenerate, LightExactlyParallelToTheView) {
 // darker than the same pixel lit from behind the eye.
 TEST(Degenerate, LightExactlyAntiParallelToTheView) {
     Scene scene = makePlaneScene();
-    scene.light.direction = -scene.camera.viewDir();
+    scene.lights[0].direction = -scene.camera.viewDir();
     const Frame f = renderAll(scene, small());
     EXPECT_EQ(f.plan.gammaDeg, 0.f);
     EXPECT_EQ(f.plan.lightViewAngleDeg, 180.f);
@@ -156,7 +156,7 @@ TEST(Degenerate, LightExactlyAntiParallelToTheView) {
     EXPECT_LT(f.in.truth->count, 200u) << "nothing the camera sees faces a light that shines into it";
 
     Scene behind = scene;
-    behind.light.direction = scene.camera.viewDir();
+    behind.lights[0].direction = scene.camera.viewDir();
     const Frame lit = renderAll(behind, small());
     const glm::ivec2 px{f.in.width / 2, f.in.height / 2};
     EXPECT_LT(testutil::luminance(f.eye, px) + 0.1f, testutil::luminance(lit.eye, px));
@@ -170,7 +170,7 @@ TEST(Degenerate, LightAndCameraStraightDown) {
     scene.camera.eye = {0.5f, 30.f, 0.5f};
     scene.camera.target = {0.5f, 0.f, 0.5f};
     scene.camera.up = {0.f, 1.f, 0.f};
-    scene.light.direction = {0.f, -1.f, 0.f};
+    scene.lights[0].direction = {0.f, -1.f, 0.f};
     const Frame f = renderAll(scene, small());
     EXPECT_EQ(f.plan.gammaDeg, 0.f);
     for (const auto& split : f.plan.splits) EXPECT_FALSE(split.warped());
@@ -213,7 +213,7 @@ TEST(Degenerate, TinyNearHugeFar) {
     const Frame f = renderAll(scene, s);
     for (const auto& split : f.plan.splits) EXPECT_TRUE(std::isfinite(split.nPrime) || !split.warped());
     // Pole 0 stands at the origin, 4 high: 1.5 m along its shadow is shadowed ground.
-    const glm::vec3 l = glm::normalize(scene.light.direction);
+    const glm::vec3 l = glm::normalize(scene.lights[0].direction);
     const glm::vec3 p = 1.5f * glm::normalize(glm::vec3(l.x, 0.f, l.z));
     const auto px = testutil::project(f.plan, p, f.in.width, f.in.height);
     ASSERT_TRUE(px);
@@ -255,7 +255,7 @@ TEST(Degenerate, OneTriangleScene) {
     chunkMesh(m);
     scene.meshes.push_back(m);
     scene.camera = makePlaneScene().camera;
-    scene.light = makePlaneScene().light;
+    scene.lights[0] = makePlaneScene().lights[0];
     const Frame f = renderAll(scene, small());
     const size_t c = f.centre();
     ASSERT_TRUE(f.in.receiver[c]);
@@ -277,14 +277,14 @@ TEST(Degenerate, ZeroSizeViewport) {
             ShadowSettings s = small();
             s.warp.method = m;
             s.splits.count = 2;
-            expectFinitePlan(planShadows(s, scene.bounds(), scene.camera, scene.light, vp),
+            expectFinitePlan(planShadows(s, scene.bounds(), scene.camera, scene.lights[0], vp),
                              std::string(warpMethodName(m)) + " at " + std::to_string(vp.width) + "x" +
                                  std::to_string(vp.height));
         }
     context();
     ShadowSettings s = small();
     const Viewport zero{0, 0};
-    const ShadowPlan p = planShadows(s, scene.bounds(), scene.camera, scene.light, zero);
+    const ShadowPlan p = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], zero);
     {
         renderer::Renderer fresh(scene);
         fresh.render(p, zero, 64);
@@ -292,11 +292,11 @@ TEST(Degenerate, ZeroSizeViewport) {
         EXPECT_EQ(renderer::takeGlErrors(), "");
     }
     renderer::Renderer r(scene);
-    const ShadowPlan ok = planShadows(s, scene.bounds(), scene.camera, scene.light, kSize);
+    const ShadowPlan ok = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], kSize);
     r.render(ok, kSize, 64);
     for (const Viewport vp : {zero, Viewport{0, 120}, Viewport{160, 0}}) {
         try {
-            r.render(planShadows(s, scene.bounds(), scene.camera, scene.light, vp), vp, 64);
+            r.render(planShadows(s, scene.bounds(), scene.camera, scene.lights[0], vp), vp, 64);
             ADD_FAILURE() << "a " << vp.width << "x" << vp.height << " view rendered";
         } catch (const std::runtime_error& e) {
             EXPECT_NE(std::string(e.what()).find("at least 1x1"), std::string::npos) << e.what();

@@ -107,8 +107,8 @@ TEST(Filters, Evsm4AndMsmBleedLessThanVsmWhereCastersOverlap) {
 TEST(Filters, ReceiverPlaneBiasRemovesAcneForThePcfFamily) {
     Scene scene = makePlaneScene();
     scene.camera.eye = {22.f, 4.f, 22.f};
-    scene.camera.target = {32.f, 0.f, 32.f};       // a corner no pole shadow reaches
-    scene.light.direction = {-1.f, -0.2f, -0.15f}; // about 11° above the horizon
+    scene.camera.target = {32.f, 0.f, 32.f};           // a corner no pole shadow reaches
+    scene.lights[0].direction = {-1.f, -0.2f, -0.15f}; // about 11° above the horizon
     Bench b(scene);
     const auto dark = [&](FilterType filter, BiasType bias) {
         ShadowSettings s;
@@ -136,7 +136,7 @@ TEST(Filters, PcssPenumbraMatchesTheSunAndBeatsPcf) {
         geometry::io::resolveScene(std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/penumbra.json");
     Scene scene = file.scene;
     scene.camera = file.views.at("closeup").camera;
-    scene.light = file.views.at("closeup").light;
+    scene.lights[0] = file.views.at("closeup").light;
     ASSERT_TRUE(scene.occluderEdge.has_value());
     Bench b(scene);
     const geometry::analysis::GroundTruth truth(scene);

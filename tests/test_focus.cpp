@@ -49,7 +49,7 @@ TEST(Focus, EmptyWhenTheFrustumMissesTheScene) {
     S.add({110, 110, 110});
     const auto body = focusBody(frustumCorners(cam, 1.5f, 0.5f, 20.f), S, glm::normalize(glm::vec3(0, -1, 0.2f)));
     EXPECT_TRUE(body.empty());
-    const ShadowPlan plan = planShadows({}, S, cam, DirectionalLight{}, Viewport{320, 240});
+    const ShadowPlan plan = planShadows({}, S, cam, Light{}, Viewport{320, 240});
     ASSERT_EQ(plan.splits.size(), 1u);
     EXPECT_TRUE(plan.splits[0].empty());
     for (int i = 0; i < 4; ++i)
@@ -71,7 +71,7 @@ TEST(Focus, RandomCamerasAndLightsKeepReceiversAndCastersInTheUnitCube) {
         cam.fovYDeg = uniform(rng, 20, 90);
         cam.near = uniform(rng, 0.1f, 2.f);
         cam.far = uniform(rng, 20.f, 300.f);
-        DirectionalLight light;
+        Light light;
         light.direction = randomUnit(rng);
         const float aspect = uniform(rng, 0.5f, 2.5f);
         const ShadowPlan plan = planShadows({}, S, cam, light, Viewport{int(aspect * 480), 480});

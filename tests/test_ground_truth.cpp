@@ -163,14 +163,14 @@ TEST(GroundTruthPlane, CountsEveryTriangle) {
 }
 
 TEST(GroundTruthPlane, GroundInsideEachPoleShadowIsOccluded) {
-    const glm::vec3 l = planeScene().light.l();
+    const glm::vec3 l = planeScene().lights[0].l();
     for (size_t i = 0; i < planeScenePoles().size(); ++i)
         for (const glm::vec3& p : shadowPoints(planeScenePoles()[i], l))
             EXPECT_EQ(occludedAt(planeTruth(), p, kUp, l), 1) << "pole " << i << " at " << p.x << ", " << p.z;
 }
 
 TEST(GroundTruthPlane, GroundBesideEachPoleShadowIsLit) {
-    const glm::vec3 l = planeScene().light.l();
+    const glm::vec3 l = planeScene().lights[0].l();
     for (size_t i = 0; i < planeScenePoles().size(); ++i)
         for (const glm::vec3& p : shadowPoints(planeScenePoles()[i], l))
             for (float side : {-0.6f, 0.6f}) {
@@ -180,7 +180,7 @@ TEST(GroundTruthPlane, GroundBesideEachPoleShadowIsLit) {
 }
 
 TEST(GroundTruthPlane, GroundFarFromPolesIsLit) {
-    const glm::vec3 l = planeScene().light.l();
+    const glm::vec3 l = planeScene().lights[0].l();
     const std::vector<glm::vec3> far{
         {15.f, 0.f, 15.f}, {-20.f, 0.f, 20.f}, {25.f, 0.f, -25.f}, {-30.f, 0.f, -30.f}, {10.f, 0.f, 3.f}};
     const std::vector<glm::vec3> normals(far.size(), kUp);
@@ -189,7 +189,7 @@ TEST(GroundTruthPlane, GroundFarFromPolesIsLit) {
 
 TEST(GroundTruthPlane, PoleFacesTowardsTheLightAreLit) {
     // No self-intersection acne: the cap and the side facing the light see the sky.
-    const glm::vec3 l = planeScene().light.l();
+    const glm::vec3 l = planeScene().lights[0].l();
     for (size_t i = 0; i < planeScenePoles().size(); ++i) {
         const Face top = poleFace(i, kUp);
         ASSERT_GT(top.normal.y, 0.99f);
@@ -203,7 +203,7 @@ TEST(GroundTruthPlane, PoleFacesTowardsTheLightAreLit) {
 TEST(GroundTruthPlane, PoleSideAwayFromTheLightIsOccludedByItsOwnPole) {
     // The side facing away (n·(−l) < 0): the ray starts just inside the pole and leaves through
     // its lit side, so the pole itself occludes it, as the geometry says (an attached shadow).
-    const glm::vec3 l = planeScene().light.l();
+    const glm::vec3 l = planeScene().lights[0].l();
     for (size_t i = 0; i < planeScenePoles().size(); ++i) {
         const Face dark = poleFace(i, shadowDir(l));
         ASSERT_LT(glm::dot(dark.normal, -l), -0.5f);
@@ -236,12 +236,12 @@ TEST(GroundTruthPlane, MatchesBruteForceOverTheCameraImage) {
     const Scene& scene = planeScene();
     const PrimaryHits hits = planeTruth().primaryHits(scene.camera, 120, 68);
     ASSERT_GT(hits.hitCount(), hits.points.size() / 2);
-    const auto fast = planeTruth().occluded(hits.points, hits.normals, scene.light.l());
+    const auto fast = planeTruth().occluded(hits.points, hits.normals, scene.lights[0].l());
     const std::vector<glm::vec3> tris = worldTriangles(scene);
     std::vector<uint8_t> slow(hits.points.size());
     size_t shadowed = 0;
     for (size_t i = 0; i < slow.size(); ++i) {
-        slow[i] = bruteOccluded(tris, planeTruth(), hits.points[i], hits.normals[i], scene.light.l());
+        slow[i] = bruteOccluded(tris, planeTruth(), hits.points[i], hits.normals[i], scene.lights[0].l());
         shadowed += slow[i];
     }
     EXPECT_GT(shadowed, 20u); // the poles' shadows are in view
@@ -254,11 +254,11 @@ TEST(GroundTruthPlane, ReceiverOrderDoesNotMatter) {
     // 130 × 71 image is not a whole number of packets) but must not change any answer.
     const Scene& scene = planeScene();
     const PrimaryHits hits = planeTruth().primaryHits(scene.camera, 130, 71);
-    const auto forward = planeTruth().occluded(hits.points, hits.normals, scene.light.l());
+    const auto forward = planeTruth().occluded(hits.points, hits.normals, scene.lights[0].l());
     EXPECT_GT(std::count(forward.begin(), forward.end(), 1), 0);
     const std::vector<glm::vec3> pts(hits.points.rbegin(), hits.points.rend() - 3),
         nrm(hits.normals.rbegin(), hits.normals.rend() - 3);
-    const auto backward = planeTruth().occluded(pts, nrm, scene.light.l());
+    const auto backward = planeTruth().occluded(pts, nrm, scene.lights[0].l());
     EXPECT_EQ(backward, std::vector<uint8_t>(forward.rbegin(), forward.rend() - 3));
 }
 
@@ -381,7 +381,7 @@ glm::vec2 toPixel(const glm::vec3& p) {
 // A pixel whose centre lies on a pole shadow's edge (the line the pole's extreme vertex casts, which
 // bounds the shadow of the faceted pole exactly) is partly lit: 4 × 4 samples give 0.3 ≤ c ≤ 0.7.
 TEST(GroundTruthCoverage, APixelOnAPoleShadowEdgeIsPartlyLit) {
-    const glm::vec3 l = glm::normalize(planeScene().light.direction);
+    const glm::vec3 l = glm::normalize(planeScene().lights[0].direction);
     const auto c = planeTruth().coverage(planeViewProj(), kCoverageW, kCoverageH, l, 4);
     ASSERT_EQ(c.size(), size_t(kCoverageW * kCoverageH));
     const Pole& pole = planeScenePoles().at(0);
@@ -418,7 +418,7 @@ TEST(GroundTruthCoverage, APixelOnAPoleShadowEdgeIsPartlyLit) {
 // eight neighbours' centres on its other side): their coverage is exactly 0 or 1. Seen from 6 m
 // above pole 0's shadow, so the 0.3 m wide shadow spans ~16 pixels.
 TEST(GroundTruthCoverage, PixelsAwayFromEdgesAreWhollyLitOrShadowed) {
-    const glm::vec3 l = glm::normalize(planeScene().light.direction);
+    const glm::vec3 l = glm::normalize(planeScene().lights[0].direction);
     const Pole& pole = planeScenePoles().at(0);
     Camera cam = planeScene().camera;
     cam.target = pole.base + 0.5f * pole.height * glm::vec3(l.x, 0.f, l.z) / -l.y;
@@ -451,7 +451,7 @@ TEST(GroundTruthCoverage, PixelsAwayFromEdgesAreWhollyLitOrShadowed) {
 }
 
 TEST(GroundTruthCoverage, OneSampleIsTheCentreRayAndBadInputsThrow) {
-    const glm::vec3 l = glm::normalize(planeScene().light.direction);
+    const glm::vec3 l = glm::normalize(planeScene().lights[0].direction);
     const Camera& cam = planeScene().camera;
     const glm::mat4 vp = cam.projection(80.f / 60.f) * cam.view();
     const auto same = planeTruth().coverage(vp, 80, 60, l, 1);
@@ -481,7 +481,7 @@ TEST(GroundTruthCoverage, OneSampleIsTheCentreRayAndBadInputsThrow) {
 // a metre, a point 2 m down its shadow does not (the pole is 3.5 m along its ray); the distance found
 // is the occluder's.
 TEST(GroundTruthContact, OccluderDistanceStopsAtTheDistance) {
-    const glm::vec3 l = glm::normalize(planeScene().light.direction);
+    const glm::vec3 l = glm::normalize(planeScene().lights[0].direction);
     const Pole& pole = planeScenePoles().at(0);
     const glm::vec3 nearBase = pole.base + shadowDir(l) * (pole.radius + 0.02f);
     const glm::vec3 down = pole.base + shadowDir(l) * 2.f;
@@ -578,7 +578,7 @@ TEST(GroundTruthSun, APointSunIsOneMinusOccluded) {
     const Scene& scene = testutil::platformScene();
     const GroundTruth& truth = testutil::platformTruth();
     const PrimaryHits hits = truth.primaryHits(scene.camera, 96, 54);
-    const glm::vec3 l = scene.light.l();
+    const glm::vec3 l = scene.lights[0].l();
     const std::vector<uint8_t> occ = truth.occluded(hits.points, hits.normals, l);
     ASSERT_GT(std::count(occ.begin(), occ.end(), 1), 500);
     for (const int samples : {1, 3, 8}) {
@@ -597,7 +597,7 @@ TEST(GroundTruthSun, ResultDoesNotDependOnThreadsOrOrder) {
     const Scene& scene = testutil::platformScene();
     const GroundTruth& truth = testutil::platformTruth();
     const PrimaryHits hits = truth.primaryHits(scene.camera, 96, 54);
-    const glm::vec3 l = scene.light.l();
+    const glm::vec3 l = scene.lights[0].l();
     const float theta = glm::radians(2.f);
     const std::vector<float> one = truth.sunVisibility(hits.points, hits.normals, l, theta, 8, 1);
     const std::vector<float> two = truth.sunVisibility(hits.points, hits.normals, l, theta, 8, 2);
@@ -707,7 +707,7 @@ TEST(GroundTruthPlatform, DefaultViewHasLitAndShadowedReceiversAndIsDeterministi
     EXPECT_EQ(truth.triangleCount(), scene.triangleCount());
     const PrimaryHits hits = truth.primaryHits(scene.camera, 160, 90);
     ASSERT_GT(hits.hitCount(), hits.points.size() / 2);
-    const glm::vec3 l = scene.light.l();
+    const glm::vec3 l = scene.lights[0].l();
     const auto one = truth.occluded(hits.points, hits.normals, l, 1);
     const auto two = truth.occluded(hits.points, hits.normals, l, 2);
     EXPECT_EQ(one, two);
@@ -748,7 +748,7 @@ std::vector<uint32_t> bits(const std::vector<float>& v) {
 TEST(GroundTruthCancel, AStopRequestedBeforeTheCallThrowsCancelled) {
     const GroundTruth& truth = platformTruth();
     const Scene& scene = platformScene();
-    const glm::vec3 l = scene.light.l();
+    const glm::vec3 l = scene.lights[0].l();
     const PrimaryHits hits = truth.primaryHits(scene.camera, 64, 36);
     const std::vector<float> reach(hits.points.size(), 1.f);
     std::stop_source source;
@@ -776,7 +776,7 @@ TEST(GroundTruthCancel, AStopFromAnotherThreadEndsCoverageEarly) {
     constexpr int kW = 384, kH = 216, kSamples = 8, kThreads = 2;
     const GroundTruth& truth = platformTruth();
     const glm::mat4 vp = platformViewProj(kW, kH);
-    const glm::vec3 l = platformScene().light.l();
+    const glm::vec3 l = platformScene().lights[0].l();
     size_t size = 0;
     const testutil::CancelTiming t = testutil::timeCancellation(
         [&](std::stop_token stop) { size = truth.coverage(vp, kW, kH, l, kSamples, kThreads, stop).size(); });
@@ -788,7 +788,7 @@ TEST(GroundTruthCancel, AStopFromAnotherThreadEndsCoverageEarly) {
 TEST(GroundTruthCancel, ANeverStoppedTokenGivesTheSameResults) {
     const GroundTruth& truth = platformTruth();
     const Scene& scene = platformScene();
-    const glm::vec3 l = scene.light.l();
+    const glm::vec3 l = scene.lights[0].l();
     const PrimaryHits hits = truth.primaryHits(scene.camera, 160, 90);
     const std::stop_source source; // can be stopped, never is
     const std::stop_token live = source.get_token();

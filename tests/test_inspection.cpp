@@ -34,7 +34,7 @@ struct GammaNinety {
         MeshBuilder mast("mast", glm::vec3(0.5f));
         mast.addCylinder({38, -300, 38}, {38, 300, 38}, 0.2f, 8);
         scene.meshes.push_back(mast.build());
-        scene.light.direction = {0, -1, 1};
+        scene.lights[0].direction = {0, -1, 1};
         scene.camera.near = 1;
         scene.camera.far = 30;
         scene.camera.fovYDeg = 60;
@@ -47,7 +47,7 @@ struct GammaNinety {
         ShadowSettings s;
         s.warp.method = method;
         const Viewport vp{64, 128};
-        ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+        ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], vp);
         r->render(plan, vp, 64);
         return {r->readPositions()[64 * 64 + 32].w, plan};
     }
@@ -142,7 +142,7 @@ struct TruthRig {
     GroundTruth truth{scene};
     explicit TruthRig(Scene s) : scene(std::move(s)) {}
     [[nodiscard]] ShadowPlan plan(const ShadowSettings& s, Viewport vp) const {
-        return planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+        return planShadows(s, scene.bounds(), scene.camera, scene.lights[0], vp);
     }
     [[nodiscard]] Inspection inspect(const ShadowPlan& plan, Viewport vp, int truthSamples = 1) {
         r.render(plan, vp, renderer::ViewOptions{});
@@ -196,7 +196,7 @@ Scene slabScene() {
     scene.camera.fovYDeg = 40.f;
     scene.camera.near = 1.f;
     scene.camera.far = 20.f;
-    scene.light.direction = {0.3f, -1.f, 0.f};
+    scene.lights[0].direction = {0.3f, -1.f, 0.f};
     return scene;
 }
 

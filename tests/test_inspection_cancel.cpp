@@ -35,7 +35,8 @@ using Frame = testutil::TracedFrame;
 /// some pixels disagree), and m varying from pixel to pixel.
 Frame platformFrame(int w, int h) {
     const Scene& scene = platformScene();
-    const ShadowPlan plan = planShadows(ShadowSettings{}, scene.bounds(), scene.camera, scene.light, Viewport{w, h});
+    const ShadowPlan plan =
+        planShadows(ShadowSettings{}, scene.bounds(), scene.camera, scene.lights[0], Viewport{w, h});
     const PrimaryHits hits = platformTruth().primaryHits(scene.camera, w, h);
     const auto occ = platformTruth().occluded(hits.points, hits.normals, plan.l);
     return testutil::tracedFrame(scene.camera, platformTruth(), plan, w, h, [&](size_t i, const glm::vec3&) {

@@ -22,7 +22,7 @@ class MapReuse : public ::testing::Test {
 protected:
     void SetUp() override { context_ = renderer::createOSMesaContext(); }
     ShadowPlan plan(const ShadowSettings& s, Viewport vp = {320, 240}) const {
-        return planShadows(s, scene_.bounds(), scene_.camera, scene_.light, vp);
+        return planShadows(s, scene_.bounds(), scene_.camera, scene_.lights[0], vp);
     }
     static renderer::ViewOptions views(bool reuse) {
         renderer::ViewOptions v;
@@ -108,7 +108,7 @@ std::vector<SettingChange> everyDeclaredChange() {
 }
 
 ShadowPlan planePlan(const Scene& scene, const ShadowSettings& s) {
-    return planShadows(s, scene.bounds(), scene.camera, scene.light, Viewport{96, 64});
+    return planShadows(s, scene.bounds(), scene.camera, scene.lights[0], Viewport{96, 64});
 }
 
 TEST(MapKey, EveryMapSideSettingChangesTheKeyAndNoEyeSideOneDoes) {

@@ -57,7 +57,7 @@ TEST(Plan, WarpedSplitsKeepReceiversAndCastersInTheirUnitCube) {
         cam.fovYDeg = uniform(rng, 20, 90);
         cam.near = uniform(rng, 0.1f, 2.f);
         cam.far = uniform(rng, 30.f, 300.f);
-        DirectionalLight light{randomUnit(rng)};
+        Light light{randomUnit(rng)};
         const Viewport vp{640, 480};
         const ShadowPlan plan = planShadows(settings, S, cam, light, vp);
         ASSERT_EQ(int(plan.splits.size()), settings.splits.count);
@@ -90,7 +90,7 @@ TEST(Plan, SplitsAreContiguousAndFollowTheScheme) {
     ShadowSettings s;
     s.splits.count = 3;
     s.splits.scheme = SplitScheme::Log;
-    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, {640, 480});
+    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], {640, 480});
     ASSERT_EQ(plan.splits.size(), 3u);
     EXPECT_FLOAT_EQ(plan.splits[0].near, scene.camera.near);
     EXPECT_FLOAT_EQ(plan.splits[2].far, scene.camera.far);
@@ -107,7 +107,7 @@ TEST(Plan, DuelingFrustaFallBackToUniform) {
             ShadowSettings s;
             s.warp.method = method;
             s.splits.count = 2;
-            DirectionalLight light{sign * scene.camera.viewDir()};
+            Light light{sign * scene.camera.viewDir()};
             const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, light, {320, 240});
             EXPECT_NEAR(plan.gammaDeg, 0.f, 0.05f);
             for (const auto& split : plan.splits) {
@@ -123,7 +123,7 @@ TEST(Plan, LispsmGivesNearReceiversMoreTexels) {
     const auto texelsAcross = [&](WarpMethod method, float viewDistance) {
         ShadowSettings s;
         s.warp.method = method;
-        const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, {640, 480});
+        const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], {640, 480});
         const glm::vec3 p = scene.camera.eye + scene.camera.viewDir() * viewDistance;
         const glm::vec3 ground(p.x, 0.f, p.z);
         const auto uv = [&](glm::vec3 q) {
@@ -148,7 +148,7 @@ TEST(Plan, EmptyWhenTheViewMissesTheScene) {
         ShadowSettings s;
         s.warp.method = method;
         s.splits.count = 4;
-        const ShadowPlan plan = planShadows(s, S, cam, DirectionalLight{}, {320, 240});
+        const ShadowPlan plan = planShadows(s, S, cam, Light{}, {320, 240});
         for (const auto& split : plan.splits) {
             EXPECT_TRUE(split.empty());
             EXPECT_TRUE(finite(split.lightViewProj));
@@ -167,7 +167,7 @@ TEST(Plan, BiasTypesBecomeTheOffsetsTheRendererApplies) {
     s.bias.normalOffset = 1.5f;
     const auto plan = [&](BiasType type) {
         s.bias.type = type;
-        return planShadows(s, scene.bounds(), scene.camera, scene.light, {320, 240});
+        return planShadows(s, scene.bounds(), scene.camera, scene.lights[0], {320, 240});
     };
     const ShadowPlan constant = plan(BiasType::Constant), slope = plan(BiasType::Slope),
                      normal = plan(BiasType::NormalOffset), both = plan(BiasType::SlopeNormalOffset);
@@ -204,8 +204,8 @@ TEST(Plan, SnapHoldsTheUniformMapsTexelGridStill) {
     const Viewport vp{320, 240};
     const std::vector<glm::vec3> probes{{0, 0, 0}, {5, 0, -3}, {-7, 2, 4}, {12, 0, 9}};
     const auto shifts = [&](const Camera& a, const Camera& b) {
-        const ShadowPlan pa = planShadows(s, scene.bounds(), a, scene.light, vp);
-        const ShadowPlan pb = planShadows(s, scene.bounds(), b, scene.light, vp);
+        const ShadowPlan pa = planShadows(s, scene.bounds(), a, scene.lights[0], vp);
+        const ShadowPlan pb = planShadows(s, scene.bounds(), b, scene.lights[0], vp);
         std::vector<glm::dvec3> out;
         for (const auto& p : probes) out.push_back(texelOf(pb, p, s.resolution) - texelOf(pa, p, s.resolution));
         return out;
@@ -234,9 +234,9 @@ TEST(Plan, SnapHoldsTheUniformMapsTexelGridStill) {
     EXPECT_GT(fraction, 0.01) << "unsnapped, the grid slides by fractions of a texel";
     // Warped splits are left alone by snap (their frame follows the warp).
     s.warp.method = WarpMethod::Lispsm;
-    const ShadowPlan off = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    const ShadowPlan off = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], vp);
     s.stabilize = StabilizeMode::Snap;
-    const ShadowPlan on = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
+    const ShadowPlan on = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], vp);
     for (size_t i = 0; i < on.splits.size(); ++i) {
         if (!on.splits[i].warped()) continue;
         EXPECT_EQ(on.splits[i].lightViewProj, off.splits[i].lightViewProj) << i;
@@ -256,8 +256,8 @@ TEST(Plan, QuantizeHoldsAWarpedFrameForSmallMoves) {
     moved.target += glm::vec3(2e-4f, 0.f, -1e-4f);
     const auto same = [&](StabilizeMode mode) {
         s.stabilize = mode;
-        const ShadowPlan a = planShadows(s, scene.bounds(), scene.camera, scene.light, vp);
-        const ShadowPlan b = planShadows(s, scene.bounds(), moved, scene.light, vp);
+        const ShadowPlan a = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], vp);
+        const ShadowPlan b = planShadows(s, scene.bounds(), moved, scene.lights[0], vp);
         EXPECT_TRUE(a.splits[0].warped());
         return a.splits[0].lightViewProj == b.splits[0].lightViewProj;
     };
@@ -275,7 +275,7 @@ TEST(Plan, MapsBeyondTheMemoryBudgetArePlannedSmallerWithAWarning) {
     s.splits.scheme = SplitScheme::Log;
     s.resolution = 8192; // 8 × 8192² × 4 B = 2 GiB
     const auto plan = [&](const ShadowSettings& x) {
-        return planShadows(x, scene.bounds(), scene.camera, scene.light, {320, 240});
+        return planShadows(x, scene.bounds(), scene.camera, scene.lights[0], {320, 240});
     };
     const ShadowPlan big = plan(s);
     ASSERT_EQ(big.splits.size(), 8u);

@@ -89,7 +89,7 @@ TEST(PlatformScene, CameraHasHugeDepthRange) {
 }
 
 TEST(PlatformScene, LightIsAnElevatedSun) {
-    const glm::vec3 l = defaultScene().light.l();
+    const glm::vec3 l = defaultScene().lights[0].l();
     const float elevationDeg = glm::degrees(std::asin(-l.y));
     EXPECT_GE(elevationDeg, 35.f);
     EXPECT_LE(elevationDeg, 55.f);

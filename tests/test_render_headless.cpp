@@ -57,10 +57,10 @@ TEST(HeadlessRender, PoleShadowLiesWhereGeometryPutsIt) {
 TEST(HeadlessRender, PoleShadowFollowsTheLight) {
     app::RenderOptions o = smallOptions("plane");
     const Scene scene = makePlaneScene();
-    o.light = glm::vec3(-scene.light.direction.x, scene.light.direction.y, -scene.light.direction.z);
+    o.light = glm::vec3(-scene.lights[0].direction.x, scene.lights[0].direction.y, -scene.lights[0].direction.z);
     const app::HeadlessFrame f = app::renderHeadless(o);
     const geometry::analysis::Image eye = f.renderer->readEye();
-    const glm::vec3 l0 = scene.light.l();
+    const glm::vec3 l0 = scene.lights[0].l();
     const Pole& pole = planeScenePoles()[0];
     const glm::vec3 oldTip = pole.base + glm::vec3(l0.x, 0.f, l0.z) * (pole.height / -l0.y);
     const glm::vec3 side = glm::normalize(glm::cross(glm::vec3(0, 1, 0), oldTip - pole.base));

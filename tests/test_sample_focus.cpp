@@ -140,7 +140,7 @@ TEST(SampleFocus, SamplesAndTheirCastersStayInTheirSplitsMap) {
         cam.target = {uniform(rng, -150, 150), 0.f, uniform(rng, -150, 150)};
         cam.near = uniform(rng, 0.1f, 2.f);
         cam.far = uniform(rng, 300.f, 3000.f);
-        DirectionalLight light{randomUnit(rng)};
+        Light light{randomUnit(rng)};
         if (light.direction.y > -0.05f) light.direction.y = -light.direction.y - 0.1f; // the sun is up
         const Viewport vp{640, 360};
         const Samples samples = groundSamples(cam, vp, S, 3000, rng);
@@ -186,12 +186,12 @@ TEST(SampleFocus, ASplitWithoutSamplesIsSkipped) {
         if (all.depth[i] < 30.f || all.depth[i] > 700.f)
             clustered.world.push_back(all.world[i]), clustered.depth.push_back(all.depth[i]);
     ASSERT_GT(clustered.world.size(), 100u);
-    const SampleBounds bounds = reduceSamples(clustered.world, clustered.depth, cam.near, cam.far, scene.light.l());
+    const SampleBounds bounds = reduceSamples(clustered.world, clustered.depth, cam.near, cam.far, scene.lights[0].l());
     ShadowSettings settings;
     settings.focus = FocusMode::Samples;
     settings.splits.count = 3;
     settings.splits.scheme = SplitScheme::Uniform;
-    const ShadowPlan plan = planShadows(settings, S, cam, scene.light, vp, &bounds);
+    const ShadowPlan plan = planShadows(settings, S, cam, scene.lights[0], vp, &bounds);
     ASSERT_EQ(plan.splits.size(), 3u);
     EXPECT_FALSE(plan.splits[0].skipped);
     EXPECT_GT(plan.splits[0].samples, 0u);
@@ -208,18 +208,19 @@ TEST(SampleFocus, GeometryModeIgnoresSamples) {
     std::mt19937 rng(4);
     const Viewport vp{320, 240};
     const Samples s = groundSamples(scene.camera, vp, scene.bounds(), 2000, rng);
-    const SampleBounds bounds = reduceSamples(s.world, s.depth, scene.camera.near, scene.camera.far, scene.light.l());
+    const SampleBounds bounds =
+        reduceSamples(s.world, s.depth, scene.camera.near, scene.camera.far, scene.lights[0].l());
     ShadowSettings settings;
     settings.splits.count = 2;
-    const ShadowPlan a = planShadows(settings, scene.bounds(), scene.camera, scene.light, vp);
-    const ShadowPlan b = planShadows(settings, scene.bounds(), scene.camera, scene.light, vp, &bounds);
+    const ShadowPlan a = planShadows(settings, scene.bounds(), scene.camera, scene.lights[0], vp);
+    const ShadowPlan b = planShadows(settings, scene.bounds(), scene.camera, scene.lights[0], vp, &bounds);
     EXPECT_FALSE(b.fittedToSamples);
     for (size_t i = 0; i < a.splits.size(); ++i) {
         EXPECT_EQ(a.splits[i].lightViewProj, b.splits[i].lightViewProj);
         EXPECT_EQ(a.splits[i].far, b.splits[i].far);
     }
     settings.focus = FocusMode::Samples;
-    const ShadowPlan c = planShadows(settings, scene.bounds(), scene.camera, scene.light, vp, &bounds);
+    const ShadowPlan c = planShadows(settings, scene.bounds(), scene.camera, scene.lights[0], vp, &bounds);
     EXPECT_TRUE(c.fittedToSamples);
     EXPECT_GT(c.splits.front().near, a.splits.front().near); // the nearest ground point is beyond n
 }
@@ -259,12 +260,12 @@ TEST(SampleFocus, PracticalSplitsFollowTheSamples) {
     const auto& [scene, cam, vp, S] = g;
     std::mt19937 rng(5);
     const Samples s = groundSamples(cam, vp, S, 20000, rng);
-    const SampleBounds bounds = reduceSamples(s.world, s.depth, cam.near, cam.far, scene.light.l());
+    const SampleBounds bounds = reduceSamples(s.world, s.depth, cam.near, cam.far, scene.lights[0].l());
     ShadowSettings settings;
     settings.focus = FocusMode::Samples;
     settings.splits.count = 3;
     settings.splits.lambda = 0.5;
-    const ShadowPlan plan = planShadows(settings, S, cam, scene.light, vp, &bounds);
+    const ShadowPlan plan = planShadows(settings, S, cam, scene.lights[0], vp, &bounds);
     ASSERT_EQ(plan.splits.size(), 3u);
     const double zLo = plan.splits.front().near, zHi = plan.splits.back().far;
     const auto q = sampleQuantiles(bounds, zLo, zHi, 3);
@@ -275,7 +276,7 @@ TEST(SampleFocus, PracticalSplitsFollowTheSamples) {
     }
     // λ = 0: the boundaries are the quantiles alone, so each split holds about a third of the samples.
     settings.splits.lambda = 0.0;
-    const ShadowPlan even = planShadows(settings, S, cam, scene.light, vp, &bounds);
+    const ShadowPlan even = planShadows(settings, S, cam, scene.lights[0], vp, &bounds);
     for (const auto& split : even.splits) {
         EXPECT_GT(double(split.samples), 0.25 * double(s.world.size())) << split.near;
         EXPECT_LT(double(split.samples), 0.42 * double(s.world.size())) << split.near;

@@ -84,7 +84,7 @@ TEST(SceneFile, ShippedPlatformHasItsCanonicalViews) {
     const CanonicalView& deck = f.views.at("deck");
     expectNear(deck.camera.eye, builtin.camera.eye);
     expectNear(deck.camera.target, builtin.camera.target);
-    expectNear(deck.light.direction, builtin.light.direction);
+    expectNear(deck.light.direction, builtin.lights[0].direction);
     const auto gamma = [&](const char* n) { return gammaDeg(f.views.at(n).camera.viewDir(), f.views.at(n).light.l()); };
     EXPECT_GT(gamma("overview"), 70.f);
     EXPECT_GT(f.views.at("overview").camera.eye.y, 80.f);                   // well above the top deck (47 m)
@@ -107,7 +107,7 @@ TEST(SceneFile, ShippedPiperackHasItsCanonicalViews) {
     const CanonicalView& walk = f.views.at("walk");
     expectNear(walk.camera.eye, builtin.camera.eye);
     expectNear(walk.camera.target, builtin.camera.target);
-    expectNear(walk.light.direction, builtin.light.direction);
+    expectNear(walk.light.direction, builtin.lights[0].direction);
     EXPECT_FLOAT_EQ(walk.camera.far, builtin.camera.far);
     const auto gamma = [&](const char* n) { return gammaDeg(f.views.at(n).camera.viewDir(), f.views.at(n).light.l()); };
     const CanonicalView& overview = f.views.at("overview");
@@ -194,7 +194,7 @@ TEST(SceneFile, ReferencesAModelFileRelativeToItsFolder) {
     const Aabb ground = f.scene.meshes[2].worldBounds();
     EXPECT_FLOAT_EQ(ground.lo.y, -1.f);
     EXPECT_FLOAT_EQ(ground.hi.x - ground.lo.x, 50.f);
-    expectNear(f.scene.light.direction, {0, -1, 0});
+    expectNear(f.scene.lights[0].direction, {0, -1, 0});
     // No camera given and no built-in: framed on the models.
     Aabb models = f.scene.meshes[0].worldBounds();
     models.add(f.scene.meshes[1].worldBounds());
@@ -214,7 +214,7 @@ TEST(SceneFile, ViewsAndPathsArePartialOverTheSceneCamera) {
     const CanonicalView& top = f.views.at("top");
     expectNear(top.camera.eye, {0, 50, 0.1f});
     EXPECT_FLOAT_EQ(top.camera.far, 300.f);
-    expectNear(top.light.direction, plane.light.direction);
+    expectNear(top.light.direction, plane.lights[0].direction);
     expectNear(f.views.at("sun").camera.eye, plane.camera.eye);
     const ScenePath& orbit = f.paths.at("orbit");
     ASSERT_EQ(orbit.cameras.size(), 2u);
@@ -447,7 +447,7 @@ TEST(SceneFile, ResolveModelFileAddsGroundAndFramesIt) {
     // far reaches the ground's far corners too.
     for (const auto& corner : ground.corners()) EXPECT_LT(glm::length(corner - f.scene.camera.eye), f.scene.camera.far);
     EXPECT_TRUE(f.views.count("default"));
-    expectNear(f.scene.light.direction, defaultLight().direction);
+    expectNear(f.scene.lights[0].direction, defaultLight().direction);
 }
 
 TEST(SceneFile, ResolveUnknownNameListsWhatIsAccepted) {

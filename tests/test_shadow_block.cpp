@@ -77,7 +77,7 @@ TEST(ShadowBlock, CopiesThePlanAsItIs) {
     s.bias.linearZ = true;
     s.filter.type = FilterType::Pcf;
     s.filter.kernel = 5;
-    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.light, Viewport{320, 240});
+    const ShadowPlan plan = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], Viewport{320, 240});
     ASSERT_EQ(plan.splits.size(), 3u);
     const ShadowBlock b = renderer::shadowBlock(plan, 1024);
     EXPECT_EQ(b.splitCount, 3);

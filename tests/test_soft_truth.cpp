@@ -52,7 +52,7 @@ Scene edgeScene(bool withEdge) {
     s.camera.fovYDeg = 20.f;
     s.camera.near = 0.05f;
     s.camera.far = 200.f;
-    s.light.direction = kLight;
+    s.lights[0].direction = kLight;
     if (withEdge)
         s.occluderEdge = std::array<glm::vec3, 2>{glm::vec3(0.f, kHeight, -50.f), glm::vec3(0.f, kHeight, 50.f)};
     return s;
@@ -78,7 +78,7 @@ Frame edgeFrame(const Scene& scene, const GroundTruth& truth, float sunDeg, int 
                 const std::function<float(const glm::vec3&)>& shadow) {
     ShadowSettings settings;
     settings.light.angularDiameterDeg = sunDeg;
-    const ShadowPlan plan = planShadows(settings, scene.bounds(), scene.camera, scene.light, Viewport{w, h});
+    const ShadowPlan plan = planShadows(settings, scene.bounds(), scene.camera, scene.lights[0], Viewport{w, h});
     return testutil::tracedFrame(scene.camera, truth, plan, w, h,
                                  [&](size_t, const glm::vec3& p) { return glm::vec2(shadow(p), 0.5f); });
 }

@@ -242,7 +242,7 @@ struct GroundView {
         ShadowSettings s;
         s.warp.method = method;
         s.splits.count = 3;
-        plan = planShadows(s, scene.bounds(), scene.camera, scene.light, {160, 120});
+        plan = planShadows(s, scene.bounds(), scene.camera, scene.lights[0], {160, 120});
         const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
         for (float x = -39.5f; x < 40.f; x += 1.f)
             for (float z = -39.5f; z < 40.f; z += 1.f) {

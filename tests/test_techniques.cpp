@@ -90,8 +90,8 @@ TEST(Techniques, EveryWarpBiasAndFilterRendersWithoutGlError) {
 TEST(Techniques, BiasRemovesAcneUnderGrazingLight) {
     Scene scene = makePlaneScene();
     scene.camera.eye = {22.f, 4.f, 22.f};
-    scene.camera.target = {32.f, 0.f, 32.f};       // a corner no pole shadow reaches
-    scene.light.direction = {-1.f, -0.2f, -0.15f}; // about 11° above the horizon, shadows go to −x
+    scene.camera.target = {32.f, 0.f, 32.f};           // a corner no pole shadow reaches
+    scene.lights[0].direction = {-1.f, -0.2f, -0.15f}; // about 11° above the horizon, shadows go to −x
     Bench b(scene);
     const auto acne = [&](BiasType type) {
         ShadowSettings s = small(512);
@@ -210,7 +210,8 @@ TEST(Techniques, ResolutionBeyondTheBudgetIsReducedWithAWarning) {
     shared.context->makeCurrent();
     renderer::Renderer r(shared.scene, limits);
     ShadowSettings s = small(4096);
-    const ShadowPlan plan = planShadows(s, shared.scene.bounds(), shared.scene.camera, shared.scene.light, {64, 48});
+    const ShadowPlan plan =
+        planShadows(s, shared.scene.bounds(), shared.scene.camera, shared.scene.lights[0], {64, 48});
     r.render(plan, {64, 48}, 64);
     EXPECT_EQ(r.stats().shadowResolution, 1024);
     ASSERT_FALSE(r.stats().warnings.empty());

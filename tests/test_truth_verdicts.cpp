@@ -28,7 +28,7 @@ const std::string kResources = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources
 struct ViewRig {
     geometry::io::SceneFile file;
     geometry::scene::Camera camera;
-    geometry::scene::DirectionalLight light;
+    geometry::scene::Light light;
     std::unique_ptr<renderer::GlContext> context = renderer::createOSMesaContext();
     std::unique_ptr<renderer::Renderer> r;
     std::unique_ptr<GroundTruth> truth;

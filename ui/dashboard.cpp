@@ -74,7 +74,7 @@ void Dashboard::adoptScene(LoadedScene loaded) {
     for (Side& s : sides_)
         if (s.renderer) s.renderer->setScene(scene_.file.scene);
     state_.camera = OrbitCamera::from(scene_.file.scene.camera);
-    state_.sun = SunAngles::from(scene_.file.scene.light.direction);
+    state_.sun = SunAngles::from(scene_.file.scene.lights[0].direction);
     ++sceneGeneration_;
     viewChoice_.clear();
     hovered_.reset();

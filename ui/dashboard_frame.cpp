@@ -87,7 +87,7 @@ void Dashboard::renderViews() {
     drewThisFrame_ = false;
     geometry::scene::Scene& scene = scene_.file.scene;
     state_.camera.applyTo(scene.camera);
-    scene.light.direction = state_.sun.direction();
+    scene.lights[0].direction = state_.sun.direction();
 
     const bool sideBySide = state_.views.compare == CompareMode::SideBySide;
     eyeSize_ = {std::max(16, int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w)),
@@ -137,7 +137,7 @@ void Dashboard::drawSide(int i, const PassInputs& in, int divisor) {
         // Planned for the full view, so the full frame that refines a coarse one keeps its maps; with
         // focus.mode = samples the plan comes from the samples of the pre-pass at the drawn size.
         const bool samples = in.settings.focus == geometry::shadow::FocusMode::Samples;
-        side.plan = renderer::planFrame(*side.renderer, in.settings, scene.bounds(), in.camera, scene.light,
+        side.plan = renderer::planFrame(*side.renderer, in.settings, scene.bounds(), in.camera, scene.lights[0],
                                         samples ? size : full, &us);
         side.planMicroseconds.add(us);
         renderer::ViewOptions v;

@@ -25,7 +25,7 @@ bool Dashboard::startRecommend(const std::string& target, int budgetEvals) {
             std::make_unique<geometry::analysis::Tuner>(
                 state_.settings[size_t(shownSide())], geometry::analysis::defaultTuneSpace(), t,
                 geometry::analysis::TuneOptions{.size = size, .budgetEvals = budgetEvals, .receiverPixels = receivers}),
-            scene_.file.scene.camera, scene_.file.scene.light);
+            scene_.file.scene.camera, scene_.file.scene.lights[0]);
     } catch (const std::exception& e) {
         status_ = std::string("Recommend: ") + e.what();
         return false;

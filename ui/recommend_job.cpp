@@ -8,7 +8,7 @@
 namespace ui {
 
 void RecommendJob::start(std::unique_ptr<geometry::analysis::Tuner> tuner, const geometry::scene::Camera& camera,
-                         const geometry::scene::DirectionalLight& light) {
+                         const geometry::scene::Light& light) {
     tuner_ = std::move(tuner);
     camera_ = camera;
     light_ = light;

@@ -22,7 +22,7 @@ public:
 
     /// Starts `tuner`'s search at the view (`camera`, `light`); forgets the last result.
     void start(std::unique_ptr<geometry::analysis::Tuner> tuner, const geometry::scene::Camera& camera,
-               const geometry::scene::DirectionalLight& light);
+               const geometry::scene::Light& light);
     /// Measures the tuner's next request; when the search ends (or fails) returns its summary line.
     std::optional<std::string> step(const MeasureContext& c);
     /// Stops the search, keeping the best settings so far.
@@ -43,7 +43,7 @@ private:
     std::optional<geometry::shadow::ShadowSettings> result_;
     std::string summary_;
     geometry::scene::Camera camera_;
-    geometry::scene::DirectionalLight light_;
+    geometry::scene::Light light_;
     MeasureRenderer renderer_;
 };
 

@@ -164,7 +164,7 @@ bool userActive(const FrameInput& input) {
 int runViewer(LoadedScene scene, const ViewerOptions& options) {
     DashboardState state;
     state.camera = OrbitCamera::from(scene.file.scene.camera);
-    state.sun = SunAngles::from(scene.file.scene.light.direction);
+    state.sun = SunAngles::from(scene.file.scene.lights[0].direction);
     WindowGeometry geometry;
     std::string startStatus;
     const std::filesystem::path configPath = configFilePath(options);

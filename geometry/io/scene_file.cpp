@@ -149,7 +149,7 @@ public:
         return c;
     }
 
-    scene::DirectionalLight light(const json& v, const std::string& key, scene::DirectionalLight l) const {
+    scene::Light light(const json& v, const std::string& key, scene::Light l) const {
         checkObject(v, key, {"direction"});
         if (v.contains("direction")) l.direction = direction(v["direction"], member(key, "direction"));
         return l;
@@ -262,7 +262,7 @@ bool endsWithIgnoreCase(std::string_view s, std::string_view suffix) {
 /// What the mesh entries contribute besides meshes: the first built-in scene's camera and light.
 struct Defaults {
     std::optional<scene::Camera> camera;
-    std::optional<scene::DirectionalLight> light;
+    std::optional<scene::Light> light;
     std::optional<UpAxis> up; // for model files without "up" (--up); else their format's default
 };
 
@@ -330,7 +330,7 @@ void readMeshEntry(const Reader& r, const json& e, const std::string& key, const
         scene::Scene builtin = builtinEntry(r, e, key);
         if (progress) progress(1.f, "building");
         if (!defaults.camera) defaults.camera = place(builtin.camera, placement);
-        if (!defaults.light) defaults.light = scene::DirectionalLight{placement.rotation * builtin.light.direction};
+        if (!defaults.light) defaults.light = scene::Light{placement.rotation * builtin.lights[0].direction};
         meshes = std::move(builtin.meshes);
     } else {
         meshes = fileEntry(r, e, key, folder, progress, defaults.up);
@@ -391,9 +391,9 @@ void readViews(const Reader& r, const json& j, SceneFile& f) {
         const std::string key = "views." + name;
         if (name.empty()) r.fail("views", "a view needs a non-empty name");
         r.checkObject(v, key, {"camera", "light"});
-        CanonicalView view{f.scene.camera, f.scene.light};
+        CanonicalView view{f.scene.camera, f.scene.lights[0]};
         if (v.contains("camera")) view.camera = r.camera(v["camera"], member(key, "camera"), f.scene.camera);
-        if (v.contains("light")) view.light = r.light(v["light"], member(key, "light"), f.scene.light);
+        if (v.contains("light")) view.light = r.light(v["light"], member(key, "light"), f.scene.lights[0]);
         f.views[name] = view;
     }
 }
@@ -446,8 +446,8 @@ SceneFile readSceneFile(const std::string& path, const json& j, const Progress& 
 
     const scene::Camera base = defaults.camera ? *defaults.camera : framedCamera(models, f.scene.bounds());
     f.scene.camera = j.contains("camera") ? r.camera(j["camera"], "camera", base) : base;
-    const scene::DirectionalLight light = defaults.light ? *defaults.light : defaultLight();
-    f.scene.light = j.contains("light") ? r.light(j["light"], "light", light) : light;
+    const scene::Light light = defaults.light ? *defaults.light : defaultLight();
+    f.scene.lights[0] = j.contains("light") ? r.light(j["light"], "light", light) : light;
     readOccluderEdge(r, j, f.scene);
     readViews(r, j, f);
     readPaths(r, j, f);
@@ -456,7 +456,7 @@ SceneFile readSceneFile(const std::string& path, const json& j, const Progress& 
 
 SceneFile withDefaultView(scene::Scene scene) {
     SceneFile f;
-    f.views["default"] = CanonicalView{scene.camera, scene.light};
+    f.views["default"] = CanonicalView{scene.camera, scene.lights[0]};
     f.scene = std::move(scene);
     return f;
 }
@@ -468,7 +468,7 @@ SceneFile modelScene(const std::string& path, const Progress& progress, std::opt
     const scene::Aabb models = meshBounds(scene.meshes);
     scene.meshes.push_back(makeGround(models, std::nullopt, std::nullopt, kGroundColor));
     scene.camera = framedCamera(models, scene.bounds());
-    scene.light = defaultLight();
+    scene.lights[0] = defaultLight();
     return withDefaultView(std::move(scene));
 }
 
@@ -497,9 +497,9 @@ scene::Camera frameCamera(const scene::Aabb& bounds, float fovYDeg) {
     return c;
 }
 
-scene::DirectionalLight defaultLight() {
+scene::Light defaultLight() {
     // From the left of frameCamera()'s view: shadows fall to the right, visible from the eye.
-    return scene::DirectionalLight{{0.6f, -1.f, -0.2f}};
+    return scene::Light{{0.6f, -1.f, -0.2f}};
 }
 
 SceneFile loadSceneFile(const std::string& path, const Progress& progress, std::optional<UpAxis> up) {

@@ -39,7 +39,7 @@ inline constexpr int kMaxSceneFileDepth = 16;
 /// A named camera + light pair, for benchmarks and sweeps that must see the same thing every run.
 struct CanonicalView {
     scene::Camera camera;
-    scene::DirectionalLight light;
+    scene::Light light;
 };
 
 /// A sequence of cameras or of light directions (or both), for animated sweeps.
@@ -78,6 +78,6 @@ struct SceneFile {
 [[nodiscard]] scene::Camera frameCamera(const scene::Aabb& bounds, float fovYDeg = 60.f);
 
 /// A sun at ~55° elevation shining across frameCamera()'s view (γ ≈ 75°), so shadows are seen.
-[[nodiscard]] scene::DirectionalLight defaultLight();
+[[nodiscard]] scene::Light defaultLight();
 
 } // namespace geometry::io

@@ -20,7 +20,7 @@ Scene makeOverlapScene() {
     scene.camera.fovYDeg = 70.f;
     scene.camera.near = 0.05f;
     scene.camera.far = 60.f;
-    scene.light.direction = {0.05f, -1.f, 0.03f};
+    scene.lights[0].direction = {0.05f, -1.f, 0.03f};
     return scene;
 }
 

@@ -554,8 +554,8 @@ Camera defaultCamera() {
 
 /// Sun at ~46° elevation from the +z side, a little behind the camera: the pipes' shadows fall
 /// across the lower tiers and onto the ground beside the rack, in view.
-DirectionalLight defaultLight() {
-    DirectionalLight l;
+Light defaultLight() {
+    Light l;
     l.direction = {0.35f, -0.72f, -0.6f};
     return l;
 }
@@ -601,7 +601,7 @@ Scene makePiperackScene(const PiperackParams& params) {
     scene.name = "piperack";
     for (MeshBuilder* mb : {&ground, &steel, &pipes, &elbows, &flanges, &valves}) scene.meshes.push_back(mb->build());
     scene.camera = defaultCamera();
-    scene.light = defaultLight();
+    scene.lights[0] = defaultLight();
     return scene;
 }
 

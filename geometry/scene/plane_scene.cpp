@@ -30,7 +30,7 @@ Scene makePlaneScene() {
     scene.camera.fovYDeg = 60.f;
     scene.camera.near = 0.5f;
     scene.camera.far = 100.f;
-    scene.light.direction = {-0.6f, -1.f, -0.35f};
+    scene.lights[0].direction = {-0.6f, -1.f, -0.35f};
     return scene;
 }
 

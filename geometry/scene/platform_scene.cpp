@@ -413,8 +413,8 @@ Camera defaultCamera() {
 /// Sun at ~49° elevation, ahead and to the left of the default view (~110° between view and
 /// light): shadows of pipes, railings and modules fall across the deck towards the camera,
 /// and the lower decks seen through the grating are dappled by the grating above.
-DirectionalLight defaultLight() {
-    DirectionalLight l;
+Light defaultLight() {
+    Light l;
     l.direction = {-0.55f, -0.75f, -0.35f};
     return l;
 }
@@ -469,7 +469,7 @@ Scene makePlatformScene(const PlatformParams& params) {
     for (MeshBuilder* mb : structure) scene.meshes.push_back(mb->build());
     scene.meshes.push_back(grating.build());
     scene.camera = defaultCamera();
-    scene.light = defaultLight();
+    scene.lights[0] = defaultLight();
     return scene;
 }
 

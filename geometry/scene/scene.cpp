@@ -35,9 +35,24 @@ glm::mat4 Camera::projection(float aspect) const noexcept {
     return glm::perspective(glm::radians(fovYDeg), aspect > 0.f ? aspect : 1.f, near, far);
 }
 
-glm::vec3 DirectionalLight::l() const noexcept {
+glm::vec3 Light::l() const noexcept {
     const float len = glm::length(direction);
     return len > 0.f && std::isfinite(len) ? direction / len : glm::vec3(0.f, -1.f, 0.f);
+}
+
+glm::vec3 Light::lAt(const glm::vec3& x) const noexcept {
+    if (!positional()) return l();
+    const glm::vec3 d = x - position;
+    const float len = glm::length(d);
+    return len > 0.f && std::isfinite(len) ? d / len : l();
+}
+
+const char* lightTypeName(LightType t) noexcept {
+    switch (t) {
+    case LightType::Spot: return "spot";
+    case LightType::Point: return "point";
+    default: return "directional";
+    }
 }
 
 Aabb Scene::bounds() const noexcept {

@@ -1,6 +1,6 @@
 #pragma once
-// The scene model: a flat list of meshes, one camera, one directional light. Nothing more
-// (docs/design.md §2: "model no more of a scene than it needs").
+// The scene model: a flat list of meshes, one camera, 1 to kMaxLights lights (directional, spot or
+// point). Nothing more (docs/design.md §2: "model no more of a scene than it needs"; §3.10 for lights).
 #include "geometry/scene/aabb.h"
 
 #include <array>
@@ -58,17 +58,42 @@ struct Camera {
     [[nodiscard]] glm::mat4 projection(float aspect) const noexcept;
 };
 
-/// Directional light; `direction` is l, pointing from the light into the scene.
-struct DirectionalLight {
-    glm::vec3 direction{-0.4f, -1.f, -0.3f};
+enum class LightType { Directional, Spot, Point };
+
+/// A light (docs/design.md §3.10). Directional: `direction` is l, from the light into the scene.
+/// Spot: at `position`, shining along `direction` within a cone of full angle `coneDeg`, reaching
+/// `range`. Point: at `position`, in every direction up to `range` (`direction` only orients its
+/// cube faces' report). `radius`: the emitter's size for the soft truth (positional lights; the sun's
+/// size is the setting light.angular_diameter_deg).
+struct Light {
+    glm::vec3 direction{-0.4f, -1.f, -0.3f}; // first: Light{l} is a directional light along l
+    LightType type = LightType::Directional;
+    glm::vec3 position{0.f};
+    float coneDeg = 60.f;
+    float range = 100.f;
+    float radius = 0.f;
+    [[nodiscard]] bool operator==(const Light&) const = default;
+    [[nodiscard]] bool positional() const noexcept { return type != LightType::Directional; }
+    /// The unit direction (directional: l; spot: the cone's axis); (0, −1, 0) when degenerate.
     [[nodiscard]] glm::vec3 l() const noexcept;
+    /// The unit direction light travels to reach x: l for a directional light, from the position
+    /// to x otherwise (l() where x is the position).
+    [[nodiscard]] glm::vec3 lAt(const glm::vec3& x) const noexcept;
 };
+
+/// Lights a scene may hold: each has its own maps and eye pass (docs/design.md §3.10).
+inline constexpr size_t kMaxLights = 8;
+
+/// "directional", "spot", "point".
+[[nodiscard]] const char* lightTypeName(LightType t) noexcept;
 
 struct Scene {
     std::string name;
     std::vector<Mesh> meshes;
     Camera camera;
-    DirectionalLight light;
+    /// Never empty in a valid scene; lights[0] is the light single-light commands use unless told
+    /// otherwise (--light).
+    std::vector<Light> lights{Light{}};
     /// A straight occluder edge (two distinct points, world space) whose shadow the truth's
     /// penumbra-width metric measures (docs/design.md §4 "Soft truth"); none by default.
     std::optional<std::array<glm::vec3, 2>> occluderEdge;

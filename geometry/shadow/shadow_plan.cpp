@@ -276,7 +276,7 @@ struct SplitContext {
 
 /// The plan's values that do not depend on the splits: l, v, γ, the eye's matrices, the offsets.
 ShadowPlan planFrame(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
-                     const scene::DirectionalLight& light, const Viewport& viewport) {
+                     const scene::Light& light, const Viewport& viewport) {
     ShadowPlan plan;
     plan.l = light.l();
     plan.v = camera.viewDir();
@@ -431,7 +431,7 @@ void finishPlan(const ShadowSettings& settings, ShadowPlan& plan) {
 } // namespace
 
 ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
-                       const scene::DirectionalLight& light, const Viewport& viewport, const SampleBounds* samples) {
+                       const scene::Light& light, const Viewport& viewport, const SampleBounds* samples) {
     ShadowPlan plan = planFrame(settings, S, camera, light, viewport);
     const bool fit = settings.focus == FocusMode::Samples && samples != nullptr;
     plan.fittedToSamples = fit;

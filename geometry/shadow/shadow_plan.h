@@ -95,7 +95,7 @@ struct ShadowPlan {
 /// `samples` given (this frame's, for this camera and light), splits and focus bodies are fitted
 /// to them (docs/design.md §3.7); without, the plan is the geometric one.
 [[nodiscard]] ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
-                                     const scene::DirectionalLight& light, const Viewport& viewport,
+                                     const scene::Light& light, const Viewport& viewport,
                                      const SampleBounds* samples = nullptr);
 
 /// The warp direction V_P ⊥ l: the view direction projected onto the light's plane ("standard"), or
