@@ -9,6 +9,7 @@
 
 #include "geometry/shadow/focus.h"
 #include "geometry/shadow/memory_budget.h"
+#include "geometry/shadow/positional_plan.h"
 #include "geometry/shadow/setting_relevance.h"
 
 #include <algorithm>
@@ -97,6 +98,7 @@ glm::mat4 unwarpedView(const ShadowPlan& plan) noexcept {
     Box box;
     const auto add = [&](const glm::vec3& p) { box.add(dvec3(view * dvec4(dvec3(p), 1.0))); };
     add(plan.eye);
+    if (plan.light.positional()) add(plan.light.position);
     for (const auto& s : plan.splits) {
         for (const auto& p : s.body) add(p);
         if (s.warped()) add(s.warpCentre);
@@ -278,6 +280,7 @@ struct SplitContext {
 ShadowPlan planFrame(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
                      const scene::Light& light, const Viewport& viewport) {
     ShadowPlan plan;
+    plan.light = light;
     plan.l = light.l();
     plan.v = camera.viewDir();
     plan.gammaDeg = scene::gammaDeg(plan.v, plan.l);
@@ -428,11 +431,38 @@ void finishPlan(const ShadowSettings& settings, ShadowPlan& plan) {
                                 "maps in whole texels; quantize holds warped ones)");
 }
 
+/// How far lookups reach past the sample they are for (filter taps, normal offset), in texels: a
+/// margin of that many texels keeps them on the map.
+double lookupReachTexels(const ShadowSettings& settings) noexcept {
+    return settings.filter.kernel / 2 + settings.filter.radius + settings.bias.normalOffset + 2.0;
+}
+
+/// A spot or point light's plan (docs/design.md §3.10): its maps, what it does not apply, and the
+/// values every plan derives.
+ShadowPlan planPositional(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
+                          const scene::Light& light, const Viewport& viewport, ShadowPlan plan) {
+    plan.casterLodTexels = 0.f;
+    ShadowSettings maps = settings; // the budget counts the maps this light draws
+    maps.splits.count = light.type == scene::LightType::Point ? kCubeFaces : 1;
+    const int resolution = budgetedResolution(maps);
+    if (resolution < settings.resolution)
+        plan.warnings.push_back("shadow_map.resolution " + std::to_string(settings.resolution) + " x " +
+                                std::to_string(maps.splits.count) + " maps is over the " +
+                                std::to_string(int(kShadowMemoryBudgetBytes / (1 << 20))) +
+                                " MiB shadow-memory budget: drawn at " + std::to_string(resolution));
+    for (std::string& w : inertSettingWarnings(settings)) plan.warnings.push_back(std::move(w));
+    for (std::string& w : positionalLightWarnings(settings, light)) plan.warnings.push_back(std::move(w));
+    planPositionalSplits(S, camera, viewport.aspect(), light, resolution, lookupReachTexels(settings), plan);
+    finishPlan(settings, plan);
+    return plan;
+}
+
 } // namespace
 
 ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
                        const scene::Light& light, const Viewport& viewport, const SampleBounds* samples) {
     ShadowPlan plan = planFrame(settings, S, camera, light, viewport);
+    if (light.positional()) return planPositional(settings, S, camera, light, viewport, std::move(plan));
     const bool fit = settings.focus == FocusMode::Samples && samples != nullptr;
     plan.fittedToSamples = fit;
     // Beyond the memory budget the maps are drawn smaller, and the plan says so (splits[i].resolution).
@@ -446,7 +476,7 @@ ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, con
     for (std::string& w : inertSettingWarnings(settings)) plan.warnings.push_back(std::move(w));
     // Lookups reach past the sample they are for: filter taps, normal offset; a margin of that many
     // texels (as a fraction of the map) keeps them on the map.
-    const double reachTexels = settings.filter.kernel / 2 + settings.filter.radius + settings.bias.normalOffset + 2.0;
+    const double reachTexels = lookupReachTexels(settings);
     const SplitContext k{settings,
                          S,
                          camera,

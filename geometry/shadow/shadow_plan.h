@@ -52,7 +52,10 @@ struct SplitPlan {
 };
 
 struct ShadowPlan {
-    glm::vec3 l{0.f, -1.f, 0.f};   // light direction, unit
+    /// The light planned for: a directional light's splits are view-depth ranges; a spot light has one
+    /// map, a point light six cube faces (+X, −X, +Y, −Y, +Z, −Z; positional_plan.h).
+    scene::Light light;
+    glm::vec3 l{0.f, -1.f, 0.f};   // light direction, unit (a spot light's axis; a point light: towards its focus)
     glm::vec3 v{0.f, 0.f, -1.f};   // view direction, unit
     float gammaDeg = 0.f;          // γ = acos(|v·l|)
     float lightViewAngleDeg = 0.f; // acos(v·l): 0 light behind the eye, 180 facing it
