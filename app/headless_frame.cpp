@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace app {
@@ -24,12 +26,19 @@ HeadlessFrame renderHeadless(geometry::scene::Scene scene, const RenderOptions& 
     f.renderer = std::make_unique<renderer::Renderer>(f.scene);
     if (views.lightViewSize <= 0) views.lightViewSize = lightViewSize(settings.resolution);
     ensureCasterLod(*f.renderer, f.scene, settings);
+    f.light = options.lightIndex;
+    if (f.light >= f.scene.lights.size())
+        throw std::runtime_error("--light " + std::to_string(f.light) + ": the scene has " +
+                                 std::to_string(f.scene.lights.size()) + " light(s), numbered from 0");
     for (int i = 0; i <= warmupFrames; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
-        f.plan = renderer::planFrame(*f.renderer, settings, f.scene.bounds(), f.scene.camera, f.scene.lights[0],
-                                     options.size);
+        f.plans.clear();
+        for (const auto& light : f.scene.lights)
+            f.plans.push_back(
+                renderer::planFrame(*f.renderer, settings, f.scene.bounds(), f.scene.camera, light, options.size));
+        f.plan = f.plans[f.light];
         f.planMicroseconds = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
-        f.renderer->render(f.plan, options.size, views);
+        f.renderer->render(f.plans, options.size, views, f.light);
     }
     f.renderer->waitForTimings();
     return f;

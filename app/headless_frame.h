@@ -5,18 +5,22 @@
 #include "renderer/renderer.h"
 
 #include <memory>
+#include <vector>
 
 namespace app {
 
 struct HeadlessFrame {
     std::unique_ptr<renderer::GlContext> context;
     geometry::scene::Scene scene;
-    geometry::shadow::ShadowPlan plan;
+    std::vector<geometry::shadow::ShadowPlan> plans; // one per scene light
+    size_t light = 0;                                // the inspected light (RenderOptions::light)
+    geometry::shadow::ShadowPlan plan;               // plans[light]
     double planMicroseconds = 0;
     std::unique_ptr<renderer::Renderer> renderer;
 };
 
-/// Renders `warmupFrames` + 1 frames of the options' scene and waits for GPU timings.
+/// Renders `warmupFrames` + 1 frames of the options' scene (every light; the read-backs describe
+/// options.light) and waits for GPU timings.
 [[nodiscard]] HeadlessFrame renderHeadless(const RenderOptions& options, int warmupFrames = 1,
                                            renderer::ViewOptions views = {});
 /// The same for a scene already loaded (and seen from the options' view): options.scene is not read.

@@ -6,6 +6,7 @@
 #include "geometry/analysis/heatmap.h"
 #include "geometry/analysis/view_images.h"
 #include "headless_frame.h"
+#include "light_metrics.h"
 #include "renderer/inspection.h"
 #include "ui/dashboard_headless.h"
 
@@ -166,7 +167,7 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
     views.lightSplit = e.lightSplit;
     views.unwarped = wants(e, "light_unwarped");
     views.depthRange = e.depthRange;
-    const HeadlessFrame f = renderHeadless(std::move(scene), o, 1, views);
+    HeadlessFrame f = renderHeadless(std::move(scene), o, 1, views);
     if (e.lightSplit >= int(f.plan.splits.size()))
         throw std::invalid_argument("--light-split " + std::to_string(e.lightSplit) + ": the plan has " +
                                     std::to_string(f.plan.splits.size()) + " split(s)");
@@ -217,6 +218,9 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
     }
     nlohmann::json j = frameMetrics(f, o);
     addInspectionMetrics(j, in);
+    if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
+        throw std::runtime_error("GL error: " + errors);
+    addLightMetrics(j, f, o.size, views, in); // draws the other lights again: after every export
     const std::string metrics = (w.dir / "metrics.json").string();
     std::ofstream out(metrics);
     out << j.dump(2) << '\n';

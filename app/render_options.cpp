@@ -225,12 +225,21 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
     cmd.add_option_function<std::string>(
         "--light",
         [&o](const std::string& s) {
+            if (!s.empty() && s.find_first_not_of("0123456789") == std::string::npos) {
+                if (s.size() > 2 || std::stoul(s) >= geometry::scene::kMaxLights)
+                    throw std::invalid_argument("--light " + s + ": a scene holds at most " +
+                                                std::to_string(geometry::scene::kMaxLights) +
+                                                " lights, numbered from 0");
+                o.lightIndex = std::stoul(s);
+                return;
+            }
             const auto v = parseFloats(s, 3, "--light");
             const glm::vec3 l(v[0], v[1], v[2]);
             if (!(glm::length(l) > 0.f)) throw std::invalid_argument("--light: direction must not be zero");
             o.light = l;
         },
-        "Light direction dx,dy,dz, from the light into the scene (default: the scene's)");
+        "N: the light to inspect (light view, reports; default 0), or dx,dy,dz: the light's direction, from the "
+        "light into the scene (default: the scene's)");
     addSettingSources(cmd, o);
 }
 
@@ -277,7 +286,10 @@ void applyView(geometry::io::SceneFile& file, const RenderOptions& o) {
         scene.camera.eye = o.camera->eye;
         scene.camera.target = o.camera->target;
     }
-    if (o.light) scene.lights[0].direction = *o.light;
+    if (o.lightIndex >= scene.lights.size())
+        throw std::invalid_argument("--light " + std::to_string(o.lightIndex) + ": the scene has " +
+                                    std::to_string(scene.lights.size()) + " light(s), numbered from 0");
+    if (o.light) scene.lights[o.lightIndex].direction = *o.light;
 }
 
 geometry::io::SceneFile loadSceneFile(const RenderOptions& o) {

@@ -23,7 +23,8 @@ struct RenderOptions {
     std::string out = "out";
     std::string backend = "auto";
     std::optional<geometry::scene::Camera> camera; // eye + target overrides
-    std::optional<glm::vec3> light;                // l overrides
+    std::optional<glm::vec3> light;                // --light dx,dy,dz: the inspected light's l overrides
+    size_t lightIndex = 0;                         // --light N: the light inspected (light view, reports)
     geometry::shadow::ShadowSettings settings;     // --preset FILE, --shadow-res, --set
     bool settingsGiven = false;                    // any of those three was on the command line key=value
     // OptionUse::Bench only: every --view, every --preset (each one configuration), every --set.

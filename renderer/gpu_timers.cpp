@@ -9,19 +9,19 @@ double PassTimes::total() const noexcept {
 }
 
 GpuTimers::GpuTimers() {
-    for (auto& s : slots_) glGenQueries(kPasses, s.queries);
+    for (auto& s : slots_) glGenQueries(kPasses * kRuns, &s.queries[0][0]);
 }
 
 GpuTimers::~GpuTimers() {
-    for (auto& s : slots_) glDeleteQueries(kPasses, s.queries);
+    for (auto& s : slots_) glDeleteQueries(kPasses * kRuns, &s.queries[0][0]);
 }
 
 void GpuTimers::begin(Pass p) noexcept {
     Slot& s = slots_[current_];
     if (open_) end();
     const int i = static_cast<int>(p);
-    glBeginQuery(GL_TIME_ELAPSED, s.queries[i]);
-    s.used[i] = true;
+    if (s.used[i] >= kRuns) return;
+    glBeginQuery(GL_TIME_ELAPSED, s.queries[i][s.used[i]++]);
     open_ = true;
 }
 
@@ -34,19 +34,20 @@ void GpuTimers::end() noexcept {
 void GpuTimers::collect(Slot& s, bool wait) noexcept {
     if (!s.pending) return;
     PassTimes t;
+    for (int i = 0; i < kPasses; ++i)
+        for (int r = 0; r < s.used[i]; ++r) {
+            GLint available = GL_FALSE;
+            glGetQueryObjectiv(s.queries[i][r], GL_QUERY_RESULT_AVAILABLE, &available);
+            if (!available && !wait) return;
+        }
     for (int i = 0; i < kPasses; ++i) {
-        if (!s.used[i]) continue;
-        GLint available = GL_FALSE;
-        glGetQueryObjectiv(s.queries[i], GL_QUERY_RESULT_AVAILABLE, &available);
-        if (!available && !wait) return;
-    }
-    for (int i = 0; i < kPasses; ++i) {
-        if (!s.used[i]) continue;
-        GLuint64 ns = 0;
-        glGetQueryObjectui64v(s.queries[i], GL_QUERY_RESULT, &ns);
-        t.ms[i] = static_cast<double>(ns) * 1e-6;
-        t.drawn[i] = true;
-        s.used[i] = false;
+        for (int r = 0; r < s.used[i]; ++r) {
+            GLuint64 ns = 0;
+            glGetQueryObjectui64v(s.queries[i][r], GL_QUERY_RESULT, &ns);
+            t.ms[i] += static_cast<double>(ns) * 1e-6;
+            t.drawn[i] = true;
+        }
+        s.used[i] = 0;
     }
     t.valid = true;
     s.pending = false;

@@ -40,9 +40,12 @@ public:
 private:
     static constexpr int kFrames = 4;
     static constexpr int kPasses = static_cast<int>(Pass::Count);
+    /// A pass may run several times a frame (once per light); its times add up. Beyond this many
+    /// runs the rest goes untimed.
+    static constexpr int kRuns = 8;
     struct Slot {
-        GLuint queries[kPasses] = {};
-        bool used[kPasses] = {};
+        GLuint queries[kPasses][kRuns] = {};
+        int used[kPasses] = {}; // runs begun this frame
         bool pending = false;
     };
     void collect(Slot& s, bool wait) noexcept;

@@ -17,7 +17,7 @@ geometry::shadow::ShadowPlan planFrame(Renderer& renderer, const geometry::shado
         return p;
     };
     geometry::shadow::ShadowPlan result = plan(nullptr);
-    if (settings.focus == geometry::shadow::FocusMode::Samples) {
+    if (settings.focus == geometry::shadow::FocusMode::Samples && !light.positional()) { // positional: geometric
         const geometry::shadow::SampleBounds samples = renderer.eyeSamples(result, viewport);
         result = plan(&samples);
     }

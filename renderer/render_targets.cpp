@@ -87,11 +87,12 @@ void ColorTarget::release() noexcept {
     width_ = height_ = 0;
 }
 
-void ColorTarget::ensure(int width, int height) {
-    if (width == width_ && height == height_) return;
+void ColorTarget::ensure(int width, int height, GLenum format) {
+    if (width == width_ && height == height_ && format == format_) return;
     if (width < 1 || height < 1) throw std::runtime_error("view size must be at least 1x1");
     release();
-    color_ = makeTexture2D(GL_RGBA8, width, height, GL_LINEAR);
+    format_ = format;
+    color_ = makeTexture2D(format, width, height, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     depth_ = makeTexture2D(GL_DEPTH_COMPONENT32F, width, height, GL_NEAREST);
     glGenFramebuffers(1, &fbo_);

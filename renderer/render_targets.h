@@ -32,14 +32,14 @@ private:
     bool hasDepth_ = false;
 };
 
-/// RGBA8 colour + depth target (views, exports).
+/// Colour (RGBA8 unless told otherwise) + depth target (views, exports, the lights' sum).
 class ColorTarget {
 public:
     ColorTarget() = default;
     ~ColorTarget();
     ColorTarget(const ColorTarget&) = delete;
     ColorTarget& operator=(const ColorTarget&) = delete;
-    void ensure(int width, int height);
+    void ensure(int width, int height, GLenum format = GL_RGBA8);
     void bind() const noexcept;
     /// Binds and clears to an opaque colour (off-screen UI frames: the dashboard, chart PNGs).
     void bindAndClear(float r, float g, float b) const noexcept;
@@ -53,6 +53,7 @@ public:
 private:
     void release() noexcept;
     GLuint fbo_ = 0, color_ = 0, depth_ = 0;
+    GLenum format_ = GL_RGBA8; // of the texture made (a 0 × 0 target has none)
     int width_ = 0, height_ = 0;
 };
 

@@ -3,8 +3,8 @@
 //   [SECTION] Set-up and shared state ... Renderer, ~Renderer, setScene, warnOnce, depthProgram, uploadShadowBlock
 //                                         (the shadow and settings blocks)
 //   [SECTION] The frame ................. render, eyeSamples, waitForTimings
-//   [SECTION] Shadow maps ............... drawCasters, shadowPass, peelAndCombine, momentsPass
-//   [SECTION] Eye view .................. depthPrePass, eyePass, eyeBlurAndCompose
+//   [SECTION] Shadow maps ............... drawMaps, drawCasters, shadowPass, peelAndCombine, momentsPass
+//   [SECTION] Eye view .................. depthPrePass, eyePass, blurredMask, addLight, compose
 //   [SECTION] Light views ............... lightViewPass, unwarpedViewPass
 //   [SECTION] Reading back .............. readShadowMask, readShadowDepth, readShadowMap, readShadowSamples,
 //                                         readAux, readPositions, readNormals
@@ -153,37 +153,54 @@ void Renderer::uploadShadowBlock(const geometry::shadow::ShadowPlan& plan) {
 
 void Renderer::render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
                       const ViewOptions& options) {
+    render(std::span<const geometry::shadow::ShadowPlan>(&plan, 1), viewport, options, 0);
+}
+
+void Renderer::render(std::span<const geometry::shadow::ShadowPlan> plans, const geometry::shadow::Viewport& viewport,
+                      const ViewOptions& options, size_t inspected) {
     ViewOptions views = options;
     if (views.lightViewSize <= 0) views.lightViewSize = 1024;
-    if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
+    if (plans.empty()) throw std::runtime_error("no light to render");
+    if (inspected >= plans.size()) throw std::invalid_argument("the inspected light is not among the plans");
+    for (const auto& plan : plans)
+        if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
+    const bool several = plans.size() > 1;
+    if (several) views.depthPrePass = true; // every light's eye pass tests against the pre-pass depth
+    const geometry::shadow::ShadowPlan& shown = plans[inspected];
     stats_.eyeTriangles = 0;
-    const glm::mat4 viewProj = plan.eyeProj * plan.eyeView;
-    if (!prepassReady_ || prepassViewProj_ != viewProj || prepassSize_ != glm::ivec2(viewport.width, viewport.height)) {
+    const glm::mat4 viewProj = shown.eyeProj * shown.eyeView;
+    if (!prepassReady_ || prepassViewProj_ != viewProj || prepassSize_ != glm::ivec2(viewport.width, viewport.height) ||
+        (several && !prepassDrawn_)) {
         timers_.begin(Pass::Prepass);
-        depthPrePass(plan, viewport, views.depthPrePass);
+        depthPrePass(shown, viewport, views.depthPrePass);
     }
     prepassReady_ = false;
-    shadowMapKey(plan, frameKey_);
-    stats_.shadowMapsReused = views.reuseShadowMaps && drawnMaps_ && *drawnMaps_ == frameKey_;
-    if (stats_.shadowMapsReused) {
-        uploadShadowBlock(plan); // the eye-side values changed; the maps and their triangle counts stay
-    } else {
+    if (several) {
         stats_.shadowTriangles = 0;
-        stats_.splitTriangles.assign(plan.splits.size(), 0);
-        stats_.splitTrianglesFull.assign(plan.splits.size(), 0);
-        drawnMaps_.reset(); // until the new maps are complete
-        timers_.begin(Pass::Shadow);
-        shadowPass(plan);
-        drawnMaps_ = frameKey_; // a copy only when the maps were drawn, which costs far more
-        ++stats_.shadowPasses;
+        lightSum_.ensure(viewport.width, viewport.height, GL_RGBA16F);
+        lightSum_.bind();
+        const float zero[4] = {0.f, 0.f, 0.f, 0.f};
+        glClearBufferfv(GL_COLOR, 0, zero);
     }
+    // The other lights first, the inspected one last: the maps, eye buffers and light views it leaves
+    // are what every read-back describes (docs/design.md §3.10).
+    uint64_t memory = 0;
+    for (size_t k = 0; k < plans.size(); ++k) {
+        const size_t i = k + 1 == plans.size() ? inspected : (k < inspected ? k : k + 1);
+        const geometry::shadow::ShadowPlan& plan = plans[i];
+        drawMaps(plan, views.reuseShadowMaps && !several, !several);
+        memory = std::max(memory, stats_.shadowMemoryBytes);
+        timers_.begin(Pass::Eye);
+        eyePass(plan);
+        const GLuint mask = blurredMask(plan);
+        if (i != inspected) addLight(mask);
+        else compose(mask, several);
+    }
+    stats_.shadowMemoryBytes = memory;
     ++stats_.eyePasses;
-    timers_.begin(Pass::Eye);
-    eyePass(plan);
-    eyeBlurAndCompose(plan);
     timers_.begin(Pass::LightView);
-    lightViewPass(plan, views);
-    if (views.unwarped) unwarpedViewPass(plan, views);
+    lightViewPass(shown, views);
+    if (views.unwarped) unwarpedViewPass(shown, views);
     timers_.endFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     for (int unit = 0; unit < 4; ++unit) glBindSampler(unit, 0);
@@ -209,6 +226,23 @@ const PassTimes& Renderer::waitForTimings() noexcept {
 }
 
 // ---- [SECTION] Shadow maps ------------------------------------------------------------------
+
+void Renderer::drawMaps(const geometry::shadow::ShadowPlan& plan, bool reuse, bool countAlone) {
+    shadowMapKey(plan, frameKey_);
+    stats_.shadowMapsReused = reuse && drawnMaps_ && *drawnMaps_ == frameKey_;
+    if (stats_.shadowMapsReused) {
+        uploadShadowBlock(plan); // the eye-side values changed; the maps and their triangle counts stay
+        return;
+    }
+    if (countAlone) stats_.shadowTriangles = 0; // several lights: render() sums over them
+    stats_.splitTriangles.assign(plan.splits.size(), 0);
+    stats_.splitTrianglesFull.assign(plan.splits.size(), 0);
+    drawnMaps_.reset(); // until the new maps are complete
+    timers_.begin(Pass::Shadow);
+    shadowPass(plan);
+    drawnMaps_ = frameKey_; // a copy only when the maps were drawn, which costs far more
+    ++stats_.shadowPasses;
+}
 
 void Renderer::drawCasters(const geometry::shadow::ShadowPlan& plan, int index, Program& program, bool backFacesOnly) {
     const geometry::shadow::SplitPlan& split = plan.splits[size_t(index)];
@@ -446,7 +480,7 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
     glDepthFunc(GL_LESS);
 }
 
-void Renderer::eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan) {
+GLuint Renderer::blurredMask(const geometry::shadow::ShadowPlan& plan) {
     glDisable(GL_DEPTH_TEST);
     GLuint mask = eyeBuffers().texture(EyeBuffers::Mask);
     const int w = eyeBuffers().width(), h = eyeBuffers().height();
@@ -466,6 +500,28 @@ void Renderer::eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan) {
                 target ^= 1;
             }
     }
+    glEnable(GL_DEPTH_TEST);
+    return mask;
+}
+
+void Renderer::addLight(GLuint mask) {
+    lightSum_.bind();
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    addLightProgram_.use();
+    bindTexture(0, GL_TEXTURE_2D, eyeBuffers().texture(EyeBuffers::Direct), nearestSampler_);
+    bindTexture(1, GL_TEXTURE_2D, mask, nearestSampler_);
+    addLightProgram_.set("uDirect", 0);
+    addLightProgram_.set("uMask", 1);
+    fullscreen();
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+}
+
+void Renderer::compose(GLuint mask, bool addLights) {
+    glDisable(GL_DEPTH_TEST);
+    const int w = eyeBuffers().width(), h = eyeBuffers().height();
     eyeImage().ensure(w, h);
     eyeImage().bind();
     composeProgram_.use();
@@ -476,6 +532,9 @@ void Renderer::eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan) {
     composeProgram_.set("uDirect", 1);
     composeProgram_.set("uMask", 2);
     composeProgram_.set("uSky", kSky);
+    bindTexture(3, GL_TEXTURE_2D, addLights ? lightSum_.texture() : 0, nearestSampler_);
+    composeProgram_.set("uOtherLights", 3);
+    composeProgram_.set("uAddOtherLights", addLights ? 1 : 0);
     fullscreen();
     glEnable(GL_DEPTH_TEST);
 }

@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,12 @@ public:
     /// Renders the eye view at `viewport` and the light views into textures.
     void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
                 const ViewOptions& views);
+    /// Several lights (docs/design.md §3.10), one plan each, all for the same camera: each light's
+    /// maps and eye pass in turn, their direct terms added. The light `inspected` is drawn last, so
+    /// the read-backs (mask, aux, positions, maps), the light views and the per-split stats describe
+    /// it; shadowTriangles counts every light's. Never reuses maps across frames.
+    void render(std::span<const geometry::shadow::ShadowPlan> plans, const geometry::shadow::Viewport& viewport,
+                const ViewOptions& views, size_t inspected = 0);
     void render(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
                 int lightViewSize) {
         ViewOptions v;
@@ -125,6 +132,9 @@ public:
     const PassTimes& waitForTimings() noexcept;
 
 private:
+    /// The plan's maps, unless `reuse` and the maps drawn last are this plan's; `countAlone`: the
+    /// triangle count restarts (one light per frame).
+    void drawMaps(const geometry::shadow::ShadowPlan& plan, bool reuse, bool countAlone);
     void shadowPass(const geometry::shadow::ShadowPlan& plan);
     void drawCasters(const geometry::shadow::ShadowPlan& plan, int index, Program& program, bool backFacesOnly);
     void peelAndCombine(const geometry::shadow::ShadowPlan& plan);
@@ -132,7 +142,12 @@ private:
     void depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
                       bool draw = true);
     void eyePass(const geometry::shadow::ShadowPlan& plan);
-    void eyeBlurAndCompose(const geometry::shadow::ShadowPlan& plan);
+    /// The eye pass's shadow factor, blurred in eye space when the plan asks (Scherzer §4.3).
+    [[nodiscard]] GLuint blurredMask(const geometry::shadow::ShadowPlan& plan);
+    /// Adds this light's direct term · `mask` to the lights' sum (several lights).
+    void addLight(GLuint mask);
+    /// The eye image: ambient + direct · `mask` (+ the other lights' sum when `addLights`).
+    void compose(GLuint mask, bool addLights);
     void lightViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views);
     void unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views);
     [[nodiscard]] std::vector<glm::vec4> readFloat4(EyeBuffers::Attachment a) const;
@@ -149,6 +164,7 @@ private:
     Program momentsBlurProgram_{"fullscreen.vert", "moments_blur.frag"};
     Program eyeBlurProgram_{"fullscreen.vert", "eye_blur.frag"};
     Program composeProgram_{"fullscreen.vert", "compose.frag"};
+    Program addLightProgram_{"fullscreen.vert", "add_light.frag"};
     Program lightViewProgram_{"fullscreen.vert", "light_view.frag"};
     Program unlitProgram_{"eye.vert", "unlit.frag"};
     LineRenderer lines_;
@@ -182,6 +198,7 @@ private:
     glm::mat4 prepassViewProj_{1.f};                   // …
     glm::ivec2 prepassSize_{0};                        // … at this size
     ColorTarget light_, lightUnwarped_;
+    ColorTarget lightSum_; // several lights: Σ direct · s of the lights drawn before the inspected one (linear)
     GpuTimers timers_;
     FrameStats stats_;
 };

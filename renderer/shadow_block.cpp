@@ -37,6 +37,18 @@ ShadowBlock shadowBlock(const geometry::shadow::ShadowPlan& plan, int arrayResol
     b.linearDepth = plan.linearDepth ? 1 : 0;
     b.slopeBias = plan.polygonOffset;
     b.sunTanHalfAngle = float(std::tan(glm::radians(double(plan.settings.light.angularDiameterDeg)) * 0.5));
+    const geometry::scene::Light& light = plan.light;
+    b.lightType = int(light.type);
+    b.lightPos = light.position;
+    b.lightRange = light.range;
+    b.lightRadius = light.radius;
+    b.spotCosOuter = b.spotCosInner = -2.f;
+    if (light.type == geometry::scene::LightType::Spot) {
+        // A smooth edge over the outer 5 % of the half angle (at least 0.5°), inside the cone.
+        const double half = 0.5 * double(light.coneDeg), edge = std::max(0.05 * half, 0.5);
+        b.spotCosOuter = float(std::cos(glm::radians(half)));
+        b.spotCosInner = float(std::cos(glm::radians(std::max(half - edge, 0.0))));
+    }
     return b;
 }
 

@@ -30,6 +30,10 @@ std::string glsl() {
     out << "const int MAX_SPLITS = " << geometry::shadow::kMaxSplits << ";\n";
     out << "const int SAMPLE_BINS = " << geometry::shadow::kSampleBins << ";\n";
     out << "const int SAMPLE_DIRECTIONS = " << geometry::shadow::kSampleDirections << ";\n";
+    // Light types (geometry/scene/scene.h).
+    for (const auto t :
+         {geometry::scene::LightType::Directional, geometry::scene::LightType::Spot, geometry::scene::LightType::Point})
+        out << "const int LIGHT_" << upper(geometry::scene::lightTypeName(t)) << " = " << int(t) << ";\n";
     // Every choice's values by their names, in declaration order (= the C++ enum's values).
     const auto& rows = geometry::shadow::settingsDeclaration();
     for (const auto& info : rows)

@@ -4,6 +4,9 @@
 //   Goals (issue 4): paper/ssm ≤ 1.3 on llvmpipe, ≤ 1.15 on a GPU; 5×5 PCF eye pass ≤ 1.1× hard test.
 //   Issue 16: focus.mode samples/geometry ≤ 1.1 per preset and canonical view (480×270, as
 //   docs/performance.md's accuracy figures).
+//   Issue 29: two lights ≤ 2.1× one light's frame; a point light's six faces ≤ 3× one spot light's
+//   shadow pass; Barroso's Table 2 (1 and 2 lights circling the platform's close-up, standard shadow
+//   map against the recommended presets).
 #include "geometry/io/preset.h"
 #include "geometry/io/scene_file.h"
 #include "geometry/scene/builtin_scenes.h"
@@ -180,8 +183,101 @@ const bool kSamplesOverGeometryRegistered = [] {
     return true;
 }();
 
+/// One frame of every light in `lights` (docs/design.md §3.10), seen from `camera`.
+renderer::PassTimes lightsFrame(const ShadowSettings& s, const std::vector<Light>& lights, const Camera& camera,
+                                const Viewport& vp) {
+    Setup& st = setup();
+    std::vector<ShadowPlan> plans;
+    for (const Light& light : lights) plans.push_back(planShadows(s, st.scene.bounds(), camera, light, vp));
+    renderer::ViewOptions views;
+    views.lightViewSize = 64;
+    views.overlays = views.unwarped = false;
+    st.r->render(plans, vp, views);
+    return st.r->waitForTimings();
+}
+
+/// A light far off circling the scene (Barroso §5: "circled around the scene at a far distance"):
+/// directional, from azimuth `deg` at 40° elevation.
+Light circling(double deg) {
+    const double a = glm::radians(deg), e = glm::radians(40.0);
+    return Light{-glm::vec3(float(std::cos(e) * std::cos(a)), float(std::sin(e)), float(std::cos(e) * std::sin(a)))};
+}
+
+/// Two lights over one, the paper preset, the platform's own view: the whole frame.
+void BM_TwoLightsOverOne(benchmark::State& state) {
+    const Viewport vp{800, 600};
+    const ShadowSettings s = preset("paper");
+    const Camera& camera = setup().scene.camera;
+    const std::vector<Light> one{setup().scene.lights[0]}, two{setup().scene.lights[0], circling(200.0)};
+    alternate(
+        state, [&](bool isB) { return lightsFrame(s, isB ? two : one, camera, vp); },
+        [](const renderer::PassTimes& t) { return t.frame(); });
+}
+
+/// A point light's six cube faces (per-face culling) over one spot light at the same place: the
+/// shadow pass, on the platform, from above its deck.
+void BM_PointFacesOverSpot(benchmark::State& state) {
+    const Viewport vp{800, 600};
+    ShadowSettings s = preset("ssm");
+    const Scene& scene = setup().scene;
+    const Aabb S = scene.bounds();
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = S.center() + glm::vec3(0.f, 0.6f * S.extent().y, 0.f);
+    spot.direction = {0.f, -1.f, 0.f};
+    spot.coneDeg = 90.f;
+    spot.range = 2.f * glm::length(S.extent());
+    Light point = spot;
+    point.type = LightType::Point;
+    alternate(
+        state, [&](bool isB) { return lightsFrame(s, {isB ? point : spot}, scene.camera, vp); },
+        [](const renderer::PassTimes& t) { return t.of(renderer::Pass::Shadow); });
+}
+
+/// Barroso Table 2: the platform's close-up (`deck`), `lights` (1 or 2) directional lights circling
+/// in 45° steps, the standard shadow map (ssm) against preset `name`. Reported: fps_ratio = ssm's frame
+/// time over the preset's (the paper's fps of the technique over the standard map's), median and
+/// range over the circle.
+void table2(benchmark::State& state, const std::string& name) {
+    static const geometry::io::SceneFile file =
+        geometry::io::loadSceneFile(std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/platform.json");
+    const Camera camera = file.views.at("deck").camera;
+    const int lightCount = int(state.range(0));
+    const Viewport vp{800, 600};
+    const ShadowSettings standard = preset("ssm"), recommended = preset(name);
+    int step = 0;
+    std::vector<Light> lights;
+    std::vector<double> fpsRatios;
+    alternate(
+        state,
+        [&](bool isB) {
+            if (!isB) { // A then B at the same light positions; then the lights move on
+                lights = {circling(45.0 * step)};
+                if (lightCount > 1) lights.push_back(circling(45.0 * step + 180.0));
+                ++step;
+            }
+            return lightsFrame(isB ? recommended : standard, lights, camera, vp);
+        },
+        [](const renderer::PassTimes& t) { return t.frame(); });
+    state.counters["fps_ratio"] = 1.0 / state.counters["B_over_A_wall"];
+    state.counters["lights"] = lightCount;
+}
+
+const bool kTable2Registered = [] {
+    for (const char* p : {"paper", "lispsm", "pssm3"})
+        benchmark::RegisterBenchmark(("Table2/" + std::string(p)).c_str(), table2, std::string(p))
+            ->Arg(1)
+            ->Arg(2)
+            ->Iterations(8)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+    return true;
+}();
+
 } // namespace
 
+BENCHMARK(BM_TwoLightsOverOne)->Unit(benchmark::kMillisecond)->Iterations(9)->UseRealTime();
+BENCHMARK(BM_PointFacesOverSpot)->Unit(benchmark::kMillisecond)->Iterations(9)->UseRealTime();
 BENCHMARK(BM_PaperOverSsm)->Unit(benchmark::kMillisecond)->Iterations(9)->UseRealTime();
 BENCHMARK(BM_Pcf5EyeOverHard)->Unit(benchmark::kMillisecond)->Iterations(9)->UseRealTime();
 BENCHMARK(BM_PcfKernelEyeOverHard)->Arg(3)->Arg(7)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();

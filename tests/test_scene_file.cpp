@@ -318,6 +318,19 @@ TEST(SceneFile, EveryErrorIsOneLineNamingTheFileAndTheKey) {
         {R"({"ground": {}, "light": {"direction": [0, 0, 0]}})", "light.direction: direction must not be zero"},
         {R"({"ground": {}, "light": {"direction": [0, -1]}})", "light.direction: expected 3 numbers"},
         {R"({"ground": {}, "light": [0, -1, 0]})", "light: expected an object"},
+        {R"({"ground": {}, "lights": []})", "lights: expected an array of 1 to 8 lights"},
+        {R"({"ground": {}, "lights": [{}, {}, {}, {}, {}, {}, {}, {}, {}]})", "lights: expected an array of 1 to 8"},
+        {R"({"ground": {}, "light": {}, "lights": [{}]})", "lights: give \"light\" or \"lights\", not both"},
+        {R"({"ground": {}, "lights": [{}, {"type": "area"}]})", "lights[1].type: unknown light type \"area\""},
+        {R"({"ground": {}, "lights": [{"type": "spot", "cone_deg": 0}]})", "lights[0].cone_deg: expected a cone angle"},
+        {R"({"ground": {}, "lights": [{"type": "spot", "cone_deg": 180}]})", "lights[0].cone_deg: expected a cone"},
+        {R"({"ground": {}, "lights": [{"type": "point", "position": [0, null, 0]}]})",
+         "lights[0].position[1]: expected a number"},
+        {R"({"ground": {}, "lights": [{"type": "point", "position": [1e39, 0, 0]}]})",
+         "lights[0].position[0]: number out of range"},
+        {R"({"ground": {}, "lights": [{"type": "point", "range": 0}]})", "lights[0].range: expected a positive"},
+        {R"({"ground": {}, "lights": [{"type": "point", "radius": -1}]})", "lights[0].radius: expected a radius"},
+        {R"({"ground": {}, "lights": [{"colour": [1, 1, 1]}]})", "lights[0].colour: unknown key"},
         {R"({"ground": {}, "views": []})", "views: expected an object"},
         {R"({"ground": {}, "views": {"a": {"camera": {"eye": [1, 2]}}}})", "views.a.camera.eye: expected 3 numbers"},
         {R"({"ground": {}, "views": {"a": {"light": {"direction": [0, 0, 0]}}}})", "views.a.light.direction"},
@@ -462,4 +475,28 @@ TEST(SceneFile, ResolveUnknownNameListsWhatIsAccepted) {
     }
     EXPECT_THROW((void)resolveScene("/nonexistent/scene.json"), std::runtime_error);
     EXPECT_THROW((void)resolveScene("/nonexistent/model.stl"), std::runtime_error);
+}
+
+// "lights": a directional, a spot and a point light, members read as given, the rest defaulted.
+TEST(SceneFile, LightsArrayReadsEveryType) {
+    const fs::path file = writeFile(freshDir("lights") / "lights.json", R"({"ground": {}, "lights": [
+        {"direction": [0, -1, 0]},
+        {"type": "spot", "position": [1, 8, 2], "direction": [0, -1, 0.5], "cone_deg": 45, "range": 30},
+        {"type": "point", "position": [0, 3, 0], "range": 12, "radius": 0.25}]})");
+    const SceneFile f = loadSceneFile(file.string());
+    ASSERT_EQ(f.scene.lights.size(), 3u);
+    EXPECT_EQ(f.scene.lights[0].type, LightType::Directional);
+    EXPECT_EQ(f.scene.lights[1].type, LightType::Spot);
+    expectNear(f.scene.lights[1].position, {1, 8, 2});
+    EXPECT_FLOAT_EQ(f.scene.lights[1].coneDeg, 45.f);
+    EXPECT_FLOAT_EQ(f.scene.lights[1].range, 30.f);
+    EXPECT_EQ(f.scene.lights[2].type, LightType::Point);
+    EXPECT_FLOAT_EQ(f.scene.lights[2].radius, 0.25f);
+    EXPECT_FLOAT_EQ(f.scene.lights[2].range, 12.f);
+    // The old single "light" still loads, as one directional light.
+    const fs::path old =
+        writeFile(freshDir("light") / "light.json", R"({"ground": {}, "light": {"direction": [1, -1, 0]}})");
+    const SceneFile g = loadSceneFile(old.string());
+    ASSERT_EQ(g.scene.lights.size(), 1u);
+    EXPECT_EQ(g.scene.lights[0].type, LightType::Directional);
 }

@@ -77,6 +77,10 @@ Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, c
         throwIfStopped(stop);
         in.utilization.push_back(texelUtilization(in.aux, in.receiver, s, in.resolutions[s]));
     }
+    if (truth && plan.light.positional())
+        throw std::invalid_argument(
+            std::string("ground truth traces directional lights only; the inspected light is a ") +
+            scene::lightTypeName(plan.light.type) + " light (docs/design.md §3.10)");
     if (truth) addTruth(in, plan, *truth, truthSamples, stop);
     return in;
 }

@@ -149,10 +149,39 @@ public:
         return c;
     }
 
+    /// A light object; members it does not give keep `l`'s (docs/design.md §3.10).
     scene::Light light(const json& v, const std::string& key, scene::Light l) const {
-        checkObject(v, key, {"direction"});
+        checkObject(v, key, {"type", "direction", "position", "cone_deg", "range", "radius"});
+        if (v.contains("type")) {
+            const std::string type = string(v["type"], member(key, "type"));
+            if (type == "directional") l.type = scene::LightType::Directional;
+            else if (type == "spot") l.type = scene::LightType::Spot;
+            else if (type == "point") l.type = scene::LightType::Point;
+            else fail(member(key, "type"), "unknown light type \"" + type + "\" (known: directional, spot, point)");
+        }
         if (v.contains("direction")) l.direction = direction(v["direction"], member(key, "direction"));
+        if (v.contains("position")) l.position = vec3(v["position"], member(key, "position"));
+        if (v.contains("cone_deg")) {
+            l.coneDeg = number(v["cone_deg"], member(key, "cone_deg"));
+            if (!(l.coneDeg > 0.f && l.coneDeg < 180.f))
+                fail(member(key, "cone_deg"), "expected a cone angle in (0, 180) degrees, got " + text(l.coneDeg));
+        }
+        if (v.contains("range")) l.range = positive(v["range"], member(key, "range"));
+        if (v.contains("radius")) {
+            l.radius = number(v["radius"], member(key, "radius"));
+            if (!(l.radius >= 0.f)) fail(member(key, "radius"), "expected a radius ≥ 0, got " + text(l.radius));
+        }
         return l;
+    }
+
+    /// `"lights": [...]`: 1 to kMaxLights light objects, each starting from `base`.
+    std::vector<scene::Light> lights(const json& v, const std::string& key, const scene::Light& base) const {
+        if (!v.is_array() || v.empty() || v.size() > scene::kMaxLights)
+            fail(key, "expected an array of 1 to " + std::to_string(scene::kMaxLights) + " lights, got " +
+                          describeJsonValue(v));
+        std::vector<scene::Light> out;
+        for (size_t i = 0; i < v.size(); ++i) out.push_back(light(v[i], element(key, i), base));
+        return out;
     }
 
 private:
@@ -431,8 +460,9 @@ void readPaths(const Reader& r, const json& j, SceneFile& f) {
 
 SceneFile readSceneFile(const std::string& path, const json& j, const Progress& progress, std::optional<UpAxis> up) {
     const Reader r(path);
-    r.checkObject(j, "",
-                  {"name", "description", "meshes", "ground", "camera", "light", "occluder_edge", "views", "paths"});
+    r.checkObject(
+        j, "",
+        {"name", "description", "meshes", "ground", "camera", "light", "lights", "occluder_edge", "views", "paths"});
     SceneFile f;
     f.scene.name = j.contains("name") ? r.string(j["name"], "name") : fs::path(path).stem().string();
     if (j.contains("description")) (void)r.string(j["description"], "description");
@@ -447,7 +477,9 @@ SceneFile readSceneFile(const std::string& path, const json& j, const Progress& 
     const scene::Camera base = defaults.camera ? *defaults.camera : framedCamera(models, f.scene.bounds());
     f.scene.camera = j.contains("camera") ? r.camera(j["camera"], "camera", base) : base;
     const scene::Light light = defaults.light ? *defaults.light : defaultLight();
-    f.scene.lights[0] = j.contains("light") ? r.light(j["light"], "light", light) : light;
+    if (j.contains("light") && j.contains("lights")) r.fail("lights", "give \"light\" or \"lights\", not both");
+    if (j.contains("lights")) f.scene.lights = r.lights(j["lights"], "lights", light);
+    else f.scene.lights = {j.contains("light") ? r.light(j["light"], "light", light) : light};
     readOccluderEdge(r, j, f.scene);
     readViews(r, j, f);
     readPaths(r, j, f);

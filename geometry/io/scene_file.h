@@ -12,7 +12,9 @@
 //                   "color": [r,g,b] } ],
 //     "ground": { "size": 200, "height": 0, "color": [r,g,b] },
 //     "camera": { "eye": [..], "target": [..], "up": [..], "fov_y": 60, "near": 0.5, "far": 1000 },
-//     "light": { "direction": [..] },
+//     "light": { "type": "directional" | "spot" | "point", "direction": [..], "position": [..],
+//                "cone_deg": 60, "range": 100, "radius": 0 },   (spot: cone in (0, 180); docs/design.md §3.10)
+//     "lights": [ {light}, ... ],                 (1 to scene::kMaxLights, instead of "light")
 //     "occluder_edge": [ [x,y,z], [x,y,z] ],      (a straight occluder edge, world space: the truth's
 //                                                  penumbra_width_error measures its shadow)
 //     "views": { "NAME": { "camera": {...}, "light": {...} } },

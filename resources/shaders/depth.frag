@@ -4,6 +4,7 @@
 // MOMENTS writes the moment filter's moments of linear depth (vsm, esm, evsm2, evsm4, msm:
 // docs/filters.md); EYE_DEPTH is the eye pass's depth pre-pass.
 #include "shadow_block.glsl"
+#include "light.glsl"
 #if defined(LINEAR_Z) || defined(MOMENTS)
 in vec3 vWorldPos;
 #endif
@@ -19,7 +20,7 @@ layout(location = 0) out vec4 oMoments;
 #endif
 
 #if defined(LINEAR_Z) || defined(MOMENTS)
-float linearDepth() { return (dot(vWorldPos, shadow.lightDir) - shadow.splits[uSplit].linearLo) * shadow.splits[uSplit].linearScale; }
+float linearDepth() { return (lightDistance(vWorldPos) - shadow.splits[uSplit].linearLo) * shadow.splits[uSplit].linearScale; }
 #endif
 
 void main() {

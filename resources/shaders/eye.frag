@@ -4,6 +4,7 @@
 // plan derives comes in the shadow block (renderer/shadow_block.inc), the settings as set in the
 // settings block (`settings.<key with _ for .>`, renderer/settings_block.h).
 #include "shadow_block.glsl"
+#include "light.glsl"
 #include "moments.glsl"
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -23,24 +24,19 @@ layout(location = 5) out vec4 oNormal;   // facing normal, N·L
 const float kAmbient = 0.28;
 const float kGoldenAngle = 2.39996323;
 
-int splitOf(float viewDepth) {
-    int split = 0;
-    while (split < shadow.splitCount - 1 && viewDepth > shadow.splits[split].splitFar) ++split;
-    return split;
-}
-
 /// Map coordinates (u, v in [0,1]) and depth of a world point in a split, in the depth space the map stores.
 vec3 mapCoords(vec3 world, int split) {
     vec4 clip = shadow.splits[split].lightViewProj * vec4(world, 1.0);
     vec3 p = clip.xyz / clip.w * 0.5 + 0.5;
-    if (shadow.linearDepth == 1) p.z = (dot(world, shadow.lightDir) - shadow.splits[split].linearLo) * shadow.splits[split].linearScale;
+    if (shadow.linearDepth == 1) p.z = (lightDistance(world) - shadow.splits[split].linearLo) * shadow.splits[split].linearScale;
     return p;
 }
 
 /// World-space size of one texel at `world` (for normal offset): the map's local scale across l.
 float texelWorldSize(vec3 world, int split, float res) {
-    vec3 e1 = normalize(cross(shadow.lightDir, abs(shadow.lightDir.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
-    vec3 e2 = cross(shadow.lightDir, e1);
+    vec3 l = lightDirAt(world);
+    vec3 e1 = normalize(cross(l, abs(l.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+    vec3 e2 = cross(l, e1);
     float h = 0.01 * max(1.0, length(world - shadow.eye));
     vec2 p0 = mapCoords(world, split).xy;
     float du = length(mapCoords(world + e1 * h, split).xy - p0);
@@ -80,33 +76,37 @@ float pixelAngle() {
 
 /// A PCSS tap: the point `offset` (⊥ l) away on the receiver's plane (normal n, nl = n·l < 0), as
 /// (its depth in this split's map − eps, the depth the map stores there).
-vec2 pcssTap(vec3 receiver, vec3 n, float nl, vec3 offset, int split, float res, vec2 shift, float eps) {
-    vec3 q = mapCoords(receiver + offset - shadow.lightDir * (dot(n, offset) / nl), split);
+vec2 pcssTap(vec3 receiver, vec3 l, vec3 n, float nl, vec3 offset, int split, float res, vec2 shift, float eps) {
+    vec3 q = mapCoords(receiver + offset - l * (dot(n, offset) / nl), split);
     ivec2 t = clamp(ivec2(floor(q.xy * res + shift)), ivec2(0), ivec2(int(res) - 1));
     return vec2(q.z - eps, texelFetch(uShadowMap, ivec3(t, split), 0).r);
 }
 
-/// PCSS (Fernando 2005) for a sun of angular radius atan(sunTanHalfAngle), with taps on the receiver's
+/// PCSS (Fernando 2005) for a sun of angular radius atan(sunTanHalfAngle) or a positional light of
+/// radius lightRadius (its angular radius seen from the blockers), with taps on the receiver's
 /// plane in world space, so the kernel keeps its size and shape in scene units under any warp:
 /// 1. blocker search over the disk a blocker at the map's near end could shade from;
 /// 2. penumbra radius = (receiver - mean blocker distance along l) * tan(half angle);
 /// 3. PCF over a disk of that radius (uniform over the disk: a straight edge gives the sun's profile).
 float pcss(vec3 receiver, vec3 n, float z, int split, float res) {
     float scale = shadow.splits[split].linearScale; // linear map depth per scene unit along l
-    vec3 e1 = normalize(cross(shadow.lightDir, abs(shadow.lightDir.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
-    vec3 e2 = cross(shadow.lightDir, e1);
+    vec3 l = lightDirAt(receiver);
+    vec3 e1 = normalize(cross(l, abs(l.y) < 0.9 ? vec3(0, 1, 0) : vec3(1, 0, 0)));
+    vec3 e2 = cross(l, e1);
     float texel = texelWorldSize(receiver, split, res);
-    float nl = min(dot(n, shadow.lightDir), -0.05); // the receiver faces the light; bounded at grazing
+    float nl = min(dot(n, l), -0.05); // the receiver faces the light; bounded at grazing
     float slope = sqrt(max(1.0 - nl * nl, 0.0)) / -nl; // scene units along l per unit across it
     float eps = scale * texel * slope + 1e-6;           // one texel of the receiver's slope
     float maxRadius = settings.filter_pcss_max_radius * texel;
     float angle = pixelAngle();
     vec2 shift = vec2(shadow.splits[split].lookupShiftX, shadow.splits[split].lookupShiftY);
-    float searchRadius = clamp(z / scale * shadow.sunTanHalfAngle, texel, maxRadius);
+    // A positional light's receiver is lightDistance(receiver) from it; blockers half-way set the search.
+    float receiverDistance = positionalLight() ? lightDistance(receiver) : 0.0;
+    float searchRadius = clamp(z / scale * lightTanHalfAngle(0.5 * receiverDistance), texel, maxRadius);
     float blockers = 0.0, blockerDepth = 0.0;
     for (int k = 0; k < settings.filter_taps; ++k) {
         vec2 o = vogel(k, settings.filter_taps, angle) * searchRadius;
-        vec2 tap = pcssTap(receiver, n, nl, e1 * o.x + e2 * o.y, split, res, shift, eps);
+        vec2 tap = pcssTap(receiver, l, n, nl, e1 * o.x + e2 * o.y, split, res, shift, eps);
         if (tap.y < tap.x) {
             blockers += 1.0;
             blockerDepth += tap.y;
@@ -114,11 +114,11 @@ float pcss(vec3 receiver, vec3 n, float z, int split, float res) {
     }
     if (blockers == 0.0) return 1.0;
     float distance = max(z - blockerDepth / blockers, 0.0) / scale; // receiver to blockers, scene units
-    float radius = clamp(distance * shadow.sunTanHalfAngle, 0.5 * texel, maxRadius);
+    float radius = clamp(distance * lightTanHalfAngle(receiverDistance - distance), 0.5 * texel, maxRadius);
     float lit = 0.0;
     for (int k = 0; k < settings.filter_taps; ++k) {
         vec2 o = vogel(k, settings.filter_taps, angle + 1.0) * radius;
-        vec2 tap = pcssTap(receiver, n, nl, e1 * o.x + e2 * o.y, split, res, shift, eps);
+        vec2 tap = pcssTap(receiver, l, n, nl, e1 * o.x + e2 * o.y, split, res, shift, eps);
         lit += tap.x > tap.y ? 0.0 : 1.0;
     }
     return lit / float(settings.filter_taps);
@@ -219,13 +219,14 @@ float aliasingM(Lookup L) {
 void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n; // CAD surfaces are seen from both sides
-    float ndotl = max(dot(n, -shadow.lightDir), 0.0);
+    vec3 l = lightDirAt(vWorldPos);
+    float ndotl = max(dot(n, -l), 0.0) * lightReach(vWorldPos); // 0 outside a spot's cone or beyond range
     float viewDepth = dot(vWorldPos - shadow.eye, shadow.viewDir);
-    int split = splitOf(viewDepth);
+    int split = mapOf(vWorldPos, viewDepth);
     float res = float(shadow.arrayResolution) * shadow.splits[split].mapScale;
 
     vec3 receiver = vWorldPos;
-    if (settings.bias_type == BIAS_CONSTANT) receiver -= shadow.lightDir * shadow.receiverOffset;
+    if (settings.bias_type == BIAS_CONSTANT) receiver -= l * shadow.receiverOffset;
     if (shadow.normalOffset > 0.0) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
     vec3 dPdx = dFdx(receiver), dPdy = dFdy(receiver); // in uniform control flow
 
@@ -236,7 +237,7 @@ void main() {
     // its m, the texel density the blend delivers); the next split's map covers the band (the plan
     // focuses it that much earlier).
     float blendStart = shadow.splits[split].blendStart, splitFar = shadow.splits[split].splitFar;
-    if (split < shadow.splitCount - 1 && viewDepth > blendStart && splitFar > blendStart) {
+    if (!positionalLight() && split < shadow.splitCount - 1 && viewDepth > blendStart && splitFar > blendStart) {
         float t = clamp((viewDepth - blendStart) / (splitFar - blendStart), 0.0, 1.0);
         Lookup next = lookUp(split + 1, receiver, n, dPdx, dPdy, ndotl);
         s = mix(s, next.s, t);
