@@ -278,6 +278,7 @@ int runBench(const BenchOptions& o) {
     const ui::charts::TradeoffX xAxis = ui::charts::parseTradeoffX(o.x).value_or(ui::charts::TradeoffX::GpuMs);
     const ui::charts::TradeoffY yAxis = ui::charts::parseTradeoffY(o.y).value_or(ui::charts::TradeoffY::P95);
     checkChartAxes(o, yAxis);
+    checkLightIndex(o.common.lightIndex, file.scene);
     const std::optional<geometry::io::ScenePath> path = benchPath(file, o.path);
     createOutputFolder(o.common.out);
 
@@ -295,12 +296,13 @@ int runBench(const BenchOptions& o) {
     for (const auto& cfg : configs)
         for (const auto& [viewName, view] : views) {
             scene.camera = view.camera;
-            scene.lights[0] = view.light;
+            scene.lights[0] = view.light; // a view names the first light (geometry/io/scene_file.h)
             ensureCasterLod(r, scene, cfg.settings);
+            const renderer::MeasureView measured = renderer::measureView(scene, o.common.lightIndex);
             const renderer::Measurement m =
-                renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, scene.lights[0], o.common.size,
+                renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, measured.light, o.common.size,
                                   {.warmup = o.warmup, .frames = o.frames, .truthSamples = o.truth.samples},
-                                  o.truth.enabled ? truth.get() : nullptr);
+                                  o.truth.enabled ? truth.get() : nullptr, measured.others);
             if (m.gpuFrames == 0) gpuTimes = false;
             const Row& row = rows.emplace_back(benchRow(cfg, viewName, m));
             std::cerr << "[" << rows.size() << "/" << total << "] " << cfg.label << " @ " << viewName << ": GPU "
@@ -311,9 +313,10 @@ int runBench(const BenchOptions& o) {
         for (size_t c = 0; c < configs.size(); ++c) {
             scene.camera = views.front().second.camera;
             scene.lights[0] = views.front().second.light;
-            paths[c] = renderer::measurePath(r, configs[c].settings, scene.bounds(), {path->cameras, path->lights},
-                                             {scene.camera, scene.lights[0]}, o.frames, o.common.size, *truth,
-                                             o.truth.samples);
+            paths[c] =
+                renderer::measurePath(r, configs[c].settings, scene.bounds(),
+                                      {path->cameras, {path->lights, path->lightPositions}, path->lightIndex}, scene,
+                                      o.common.lightIndex, o.frames, o.common.size, *truth, o.truth.samples);
             std::cerr << "[path " << o.path << ", " << (c + 1) << "/" << configs.size() << "] " << configs[c].label
                       << ": world-space flicker " << paths[c].flickerMean << ", screen " << paths[c].flickerScreen
                       << ", seam " << paths[c].seam << '\n';

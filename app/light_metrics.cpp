@@ -43,29 +43,43 @@ nlohmann::json lightBlock(const HeadlessFrame& f, size_t k, const geometry::anal
 } // namespace
 
 void addLightMetrics(nlohmann::json& j, HeadlessFrame& f, const geometry::shadow::Viewport& size,
-                     const renderer::ViewOptions& views, const geometry::analysis::Inspection& inspected) {
+                     const renderer::ViewOptions& views, const geometry::analysis::Inspection& inspected,
+                     const geometry::analysis::GroundTruth* truth, int truthSamples) {
     const size_t count = f.plans.size();
     std::vector<nlohmann::json> blocks(count);
     blocks[f.light] = lightBlock(f, f.light, inspected);
     // Per pixel, the largest m of the lights that pixel receives (docs/design.md §4 "Aliasing error m").
     std::vector<float> worst(inspected.m.size(), 0.f);
     std::vector<uint8_t> receiver(inspected.m.size(), 0);
+    // Every (pixel, light) pair a light reaches, for the pooled truth.
+    std::vector<float> allS;
+    std::vector<uint8_t> allOccluded, allReceiver;
     const auto fold = [&](const geometry::analysis::Inspection& in) {
         for (size_t i = 0; i < worst.size() && i < in.m.size(); ++i)
             if (in.receiver[i] && std::isfinite(in.m[i])) {
                 worst[i] = std::max(worst[i], in.m[i]);
                 receiver[i] = 1;
             }
+        if (!in.occluded) return;
+        allS.insert(allS.end(), in.shadow.begin(), in.shadow.end());
+        allOccluded.insert(allOccluded.end(), in.occluded->begin(), in.occluded->end());
+        allReceiver.insert(allReceiver.end(), in.receiver.begin(), in.receiver.end());
     };
     fold(inspected);
     for (size_t k = 0; k < count; ++k) {
         if (k == f.light) continue;
         f.renderer->render(f.plans, size, views, k);
-        const geometry::analysis::Inspection in = renderer::inspect(*f.renderer, f.plans[k], nullptr);
+        const geometry::analysis::Inspection in =
+            renderer::inspect(*f.renderer, f.plans[k], inspected.occluded ? truth : nullptr, truthSamples);
         blocks[k] = lightBlock(f, k, in);
         fold(in);
     }
     j["lights"] = blocks;
+    if (inspected.occluded && !allS.empty()) {
+        const geometry::analysis::TruthStats t = geometry::analysis::truthStats(allS, allOccluded, allReceiver);
+        j["truth_all_lights"] = {
+            {"false_shadow", t.falseShadow}, {"false_lit", t.falseLit}, {"mean_abs", t.meanAbs}, {"pairs", t.count}};
+    }
     const geometry::analysis::AliasingStats a = geometry::analysis::aliasingStats(worst, receiver);
     j["aliasing_worst_light"] = {{"mean", a.mean}, {"p50", a.p50},      {"p95", a.p95},
                                  {"max", a.max},   {"pixels", a.count}, {"undersampled", a.undersampled}};

@@ -14,8 +14,10 @@ namespace app {
 
 /// Fills j["lights"] (one block per scene light) and j["aliasing_worst_light"]. `inspected` is the
 /// inspection of f.light (already made, with the truth if any). Every other light is drawn again as the
-/// inspected one and measured without the truth, so f's read-backs describe the last of them after.
+/// inspected one and measured, with `truth` (truthSamples² samples) when given, so f's read-backs
+/// describe the last of them after. With truth, j["truth_all_lights"] pools every light's receivers.
 void addLightMetrics(nlohmann::json& j, HeadlessFrame& f, const geometry::shadow::Viewport& size,
-                     const renderer::ViewOptions& views, const geometry::analysis::Inspection& inspected);
+                     const renderer::ViewOptions& views, const geometry::analysis::Inspection& inspected,
+                     const geometry::analysis::GroundTruth* truth = nullptr, int truthSamples = 1);
 
 } // namespace app

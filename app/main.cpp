@@ -9,6 +9,8 @@
 #include "tune_command.h"
 #include "version.h"
 
+#include "geometry/io/scene_file.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdlib>
@@ -82,6 +84,9 @@ int main(int argc, char** argv) {
         std::cerr << "shadowscope: error: " << e.what() << '\n';
         return 2;
     } catch (const std::invalid_argument& e) {
+        std::cerr << "shadowscope: error: " << e.what() << '\n';
+        return 2;
+    } catch (const geometry::io::SceneFileError& e) { // a bad scene file is bad input too
         std::cerr << "shadowscope: error: " << e.what() << '\n';
         return 2;
     } catch (const std::exception& e) {

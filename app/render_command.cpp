@@ -206,7 +206,8 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
         if (wants(e, "truth")) w.png("truth.png", truthView(in, eye, e.heatmapBlend));
         if (wants(e, "soft")) w.png("soft.png", softView(in, eye, e.heatmapBlend));
         if (wants(e, "pixels"))
-            for (const auto& layer : geometry::analysis::pixelLayers(in, f.plan.eye, f.plan.v, f.plan.l))
+            for (const auto& layer :
+                 geometry::analysis::pixelLayers(in, f.plan.eye, f.plan.v, geometry::analysis::truthLight(f.plan)))
                 w.pfm("pixels_" + layer.name + ".pfm", layer.values, in.width, in.height);
     }
     if (wants(e, "dashboard")) {
@@ -220,7 +221,8 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
     addInspectionMetrics(j, in);
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
-    addLightMetrics(j, f, o.size, views, in); // draws the other lights again: after every export
+    addLightMetrics(j, f, o.size, views, in, truth.get(),
+                    e.truth.samples); // draws the others again: after every export
     const std::string metrics = (w.dir / "metrics.json").string();
     std::ofstream out(metrics);
     out << j.dump(2) << '\n';

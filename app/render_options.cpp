@@ -181,6 +181,20 @@ void addUpOption(CLI::App& cmd, std::optional<geometry::io::UpAxis>& up, const s
         help);
 }
 
+namespace {
+
+bool isLightIndex(const std::string& s) { return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos; }
+
+/// A --light N within kMaxLights (whether the scene has that many is checked once it is loaded).
+size_t parseLightIndex(const std::string& s) {
+    if (s.size() > 2 || std::stoul(s) >= geometry::scene::kMaxLights)
+        throw std::invalid_argument("--light " + s + ": a scene holds at most " +
+                                    std::to_string(geometry::scene::kMaxLights) + " lights, numbered from 0");
+    return std::stoul(s);
+}
+
+} // namespace
+
 void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
     const bool bench = use == OptionUse::Bench;
     cmd.add_option(
@@ -208,6 +222,13 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
         cmd.add_option("--preset", o.presets, "A configuration from a JSON preset (repeatable; default: the defaults)")
             ->type_name("FILE");
         addSetOption(cmd, [&o](const std::vector<std::string>& a) { o.assignments = a; });
+        cmd.add_option_function<std::string>(
+            "--light",
+            [&o](const std::string& s) {
+                if (!isLightIndex(s)) throw std::invalid_argument("--light " + s + ": expected a light's number");
+                o.lightIndex = parseLightIndex(s);
+            },
+            "N: the light whose shadows are measured (default 0); every light of the scene is drawn");
         return;
     }
     cmd.add_option_function<std::string>(
@@ -225,12 +246,8 @@ void addRenderOptions(CLI::App& cmd, RenderOptions& o, OptionUse use) {
     cmd.add_option_function<std::string>(
         "--light",
         [&o](const std::string& s) {
-            if (!s.empty() && s.find_first_not_of("0123456789") == std::string::npos) {
-                if (s.size() > 2 || std::stoul(s) >= geometry::scene::kMaxLights)
-                    throw std::invalid_argument("--light " + s + ": a scene holds at most " +
-                                                std::to_string(geometry::scene::kMaxLights) +
-                                                " lights, numbered from 0");
-                o.lightIndex = std::stoul(s);
+            if (isLightIndex(s)) {
+                o.lightIndex = parseLightIndex(s);
                 return;
             }
             const auto v = parseFloats(s, 3, "--light");
@@ -274,6 +291,12 @@ geometry::io::SceneFile resolveSceneFile(const RenderOptions& o) {
     return geometry::io::resolveScene(findResource(o.scene), std::ref(progress), o.up);
 }
 
+void checkLightIndex(size_t index, const geometry::scene::Scene& scene) {
+    if (index >= scene.lights.size())
+        throw std::invalid_argument("--light " + std::to_string(index) + ": the scene has " +
+                                    std::to_string(scene.lights.size()) + " light(s), numbered from 0");
+}
+
 void applyView(geometry::io::SceneFile& file, const RenderOptions& o) {
     geometry::scene::Scene& scene = file.scene;
     if (!o.view.empty()) {
@@ -286,9 +309,7 @@ void applyView(geometry::io::SceneFile& file, const RenderOptions& o) {
         scene.camera.eye = o.camera->eye;
         scene.camera.target = o.camera->target;
     }
-    if (o.lightIndex >= scene.lights.size())
-        throw std::invalid_argument("--light " + std::to_string(o.lightIndex) + ": the scene has " +
-                                    std::to_string(scene.lights.size()) + " light(s), numbered from 0");
+    checkLightIndex(o.lightIndex, scene);
     if (o.light) scene.lights[o.lightIndex].direction = *o.light;
 }
 

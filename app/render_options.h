@@ -86,4 +86,7 @@ void addSettingOption(CLI::App& cmd, geometry::shadow::ShadowSettings& settings)
 [[nodiscard]] geometry::io::SceneFile resolveSceneFile(const RenderOptions& options);
 void applyView(geometry::io::SceneFile& file, const RenderOptions& options);
 
+/// Throws std::invalid_argument (one line) when the scene has no light `index` (--light N).
+void checkLightIndex(size_t index, const geometry::scene::Scene& scene);
+
 } // namespace app

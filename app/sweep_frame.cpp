@@ -31,21 +31,23 @@ SweepRenderer::SweepRenderer(const geometry::scene::Scene& scene, const std::str
 
 SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& settings,
                                  const geometry::scene::Camera& camera, const geometry::scene::Light& light,
-                                 const geometry::shadow::Viewport& viewport) {
+                                 const geometry::shadow::Viewport& viewport,
+                                 std::span<const geometry::scene::Light> others) {
     ensureCasterLod(*renderer_, scene_, settings);
     context_->makeCurrent();
     SweepFrame f;
     renderer::Measurement m = renderer::measure(*renderer_, settings, scene_.bounds(), camera, light, viewport,
-                                                {.warmup = 0, .frames = 1, .timed = false});
+                                                {.warmup = 0, .frames = 1, .timed = false}, nullptr, others);
     f.plan = std::move(m.plan);
     f.in = std::move(m.inspection);
-    const bool same = f.plan.eyeView == truthView_ && f.plan.eyeProj == truthProj_ && f.plan.l == truthLight_ &&
+    const geometry::analysis::TruthLight truthLight = geometry::analysis::truthLight(f.plan);
+    const bool same = f.plan.eyeView == truthView_ && f.plan.eyeProj == truthProj_ && truthLight == truthLight_ &&
                       truthOccluded_.size() == f.in.positions.size();
     if (!same) {
-        truthOccluded_ = geometry::analysis::truthOcclusion(f.in, f.plan.eye, f.plan.l, truth_);
+        truthOccluded_ = geometry::analysis::truthOcclusion(f.in, f.plan.eye, truthLight, truth_);
         truthView_ = f.plan.eyeView;
         truthProj_ = f.plan.eyeProj;
-        truthLight_ = f.plan.l;
+        truthLight_ = truthLight;
     }
     f.in.occluded = truthOccluded_;
     f.in.truth = geometry::analysis::truthStats(f.in.shadow, *f.in.occluded, f.in.receiver);

@@ -9,6 +9,7 @@
 #include "renderer/renderer.h"
 
 #include <memory>
+#include <span>
 #include <string>
 
 namespace app {
@@ -24,12 +25,14 @@ public:
     /// Creates the headless context (backend name as --backend), uploads `scene`, builds the BVH.
     SweepRenderer(const geometry::scene::Scene& scene, const std::string& backend);
 
-    /// Plans, renders one frame and reads it back with ground truth. The truth rays of the
-    /// previous frame are reused when camera, light and viewport are unchanged (the eye pass, and
-    /// so every receiver position, does not depend on the shadow settings).
+    /// Plans, renders one frame and reads it back with ground truth for `light`; the `others` lights
+    /// are drawn in the same frame (renderer::measure). The truth rays of the previous frame are
+    /// reused when camera, light and viewport are unchanged (the eye pass, and so every receiver
+    /// position, does not depend on the shadow settings).
     [[nodiscard]] SweepFrame render(const geometry::shadow::ShadowSettings& settings,
                                     const geometry::scene::Camera& camera, const geometry::scene::Light& light,
-                                    const geometry::shadow::Viewport& viewport);
+                                    const geometry::shadow::Viewport& viewport,
+                                    std::span<const geometry::scene::Light> others = {});
 
     [[nodiscard]] const renderer::GlContext& context() const noexcept { return *context_; }
 
@@ -40,7 +43,7 @@ private:
     geometry::analysis::GroundTruth truth_;
     // The last frame's truth and what it was computed for.
     glm::mat4 truthView_{0.f}, truthProj_{0.f};
-    glm::vec3 truthLight_{0.f};
+    geometry::analysis::TruthLight truthLight_{glm::vec3(0.f)};
     std::vector<uint8_t> truthOccluded_;
 };
 

@@ -112,7 +112,8 @@ geometry::scene::Scene startScene(geometry::io::SceneFile& file, const RenderOpt
         scene.lights[0] = view->second.light;
     }
     if (render.camera) scene.camera.eye = render.camera->eye, scene.camera.target = render.camera->target;
-    if (render.light) scene.lights[0].direction = *render.light;
+    checkLightIndex(render.lightIndex, scene);
+    if (render.light) scene.lights[render.lightIndex].direction = *render.light;
     return scene;
 }
 
@@ -150,10 +151,12 @@ std::vector<PathRow> walkPath(SweepRenderer& sweeper, const SweepPathOptions& o,
         const double t = geometry::scene::pathParameter(i, o.frames);
         const geometry::scene::Camera camera =
             path.cameras.empty() ? scene.camera : geometry::scene::cameraAlongPath(path.cameras, t);
-        const geometry::scene::Light light{path.lights.empty() ? scene.lights[0].direction
-                                                               : geometry::scene::lightAlongPath(path.lights, t)};
+        std::vector<geometry::scene::Light> lights = scene.lights;
+        lights[path.lightIndex] =
+            geometry::scene::lightAlongPath(lights[path.lightIndex], {path.lights, path.lightPositions}, t);
+        const renderer::MeasureView view = renderer::measureView(camera, lights, o.render.lightIndex);
         geometry::shadow::validateFrustum(camera.near, camera.far, camera.fovYDeg);
-        SweepFrame f = sweeper.render(o.render.settings, camera, light, o.render.size);
+        SweepFrame f = sweeper.render(o.render.settings, camera, view.light, o.render.size, view.others);
         const PathRow& r = rows.emplace_back(pathRow(i, t, f, previous, camera, o.render.size));
         if (r.glError) glErrors.push_back("frame " + std::to_string(i) + ": " + f.glErrors);
         previous = std::move(f);

@@ -114,8 +114,9 @@ double fewestReceivers(renderer::Renderer& r, const geometry::shadow::ShadowSett
                        geometry::shadow::Viewport size) {
     double fewest = 0;
     for (size_t v = 0; v < views.size(); ++v) {
-        const renderer::Measurement m = renderer::measure(r, start, S, views[v].camera, views[v].light, size,
-                                                          {.warmup = 0, .frames = 1, .timed = false});
+        const renderer::Measurement m =
+            renderer::measure(r, start, S, views[v].camera, views[v].light, size,
+                              {.warmup = 0, .frames = 1, .timed = false}, nullptr, views[v].others);
         const double n = double(std::count(m.inspection.receiver.begin(), m.inspection.receiver.end(), uint8_t(1)));
         fewest = v == 0 ? n : std::min(fewest, n);
     }
@@ -159,8 +160,9 @@ int calibrateCost(renderer::Renderer& r, const geometry::shadow::ShadowSettings&
              {o.common.size, geometry::shadow::Viewport{o.common.size.width / 2, o.common.size.height / 2}})
             for (size_t v = 0; v < views.size(); ++v) {
                 ensureCasterLod(r, scene, s);
-                const renderer::Measurement m = renderer::measure(r, s, scene.bounds(), views[v].camera, views[v].light,
-                                                                  size, {.warmup = 1, .frames = o.frames});
+                const renderer::Measurement m =
+                    renderer::measure(r, s, scene.bounds(), views[v].camera, views[v].light, size,
+                                      {.warmup = 1, .frames = o.frames}, nullptr, views[v].others);
                 const double ms = std::isfinite(m.gpuMs) ? m.gpuMs : m.cpuMs;
                 const WorkCounts w = countWork(s, m.plan, m.shadowTriangles, m.eyeTriangles, size);
                 samples.push_back({w, ms});
@@ -201,8 +203,11 @@ struct TuneViews {
     std::string line;               // the names for messages: "a, b" or "the scene's camera"
 };
 
-/// The --view views, else every canonical view (as bench), else the scene's camera.
-TuneViews tuneViews(const geometry::io::SceneFile& file, const std::vector<std::string>& asked) {
+/// The --view views, else every canonical view (as bench), else the scene's camera; each inspects the
+/// scene's light `inspected` with every other light drawn too (a view names the first light).
+TuneViews tuneViews(const geometry::io::SceneFile& file, const std::vector<std::string>& asked, size_t inspected) {
+    checkLightIndex(inspected, file.scene);
+    std::vector<geometry::scene::Light> lights = file.scene.lights;
     TuneViews out;
     out.names = asked;
     if (out.names.empty())
@@ -210,11 +215,12 @@ TuneViews tuneViews(const geometry::io::SceneFile& file, const std::vector<std::
     for (const auto& name : out.names) {
         const auto it = file.views.find(name);
         if (it == file.views.end()) throw std::invalid_argument("--view " + name + ": the scene has no such view");
-        out.views.push_back({it->second.camera, it->second.light});
+        lights[0] = it->second.light;
+        out.views.push_back(renderer::measureView(it->second.camera, lights, inspected));
         out.line += (out.line.empty() ? "" : ", ") + name;
     }
     if (out.views.empty()) {
-        out.views.push_back({file.scene.camera, file.scene.lights[0]});
+        out.views.push_back(renderer::measureView(file.scene, inspected));
         out.line = "the scene's camera";
     }
     return out;
@@ -313,7 +319,7 @@ int runTune(const TuneCommandOptions& o) {
 
     geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene), {}, o.common.up);
     geometry::scene::Scene& scene = file.scene;
-    const TuneViews views = tuneViews(file, o.common.views);
+    const TuneViews views = tuneViews(file, o.common.views, o.common.lightIndex);
     const std::filesystem::path dir(o.common.out);
     createOutputFolder(dir);
 

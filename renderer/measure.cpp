@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace renderer {
@@ -16,18 +18,29 @@ namespace renderer {
 Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
                     const geometry::scene::Aabb& S, const geometry::scene::Camera& camera,
                     const geometry::scene::Light& light, const geometry::shadow::Viewport& viewport,
-                    const MeasureOptions& options, const geometry::analysis::GroundTruth* truth) {
+                    const MeasureOptions& options, const geometry::analysis::GroundTruth* truth,
+                    std::span<const geometry::scene::Light> others) {
     ViewOptions views;
     views.lightViewSize = 16;
     views.overlays = false;
     views.unwarped = false;
     Measurement out;
     std::vector<double> gpu, cpu, shadow;
+    std::vector<geometry::shadow::ShadowPlan> plans;
     const int total = std::max(options.warmup, 0) + std::max(options.frames, 1);
     for (int i = 0; i < total; ++i) {
         const auto t0 = std::chrono::steady_clock::now();
-        out.plan = planFrame(renderer, settings, S, camera, light, viewport);
-        renderer.render(out.plan, viewport, views);
+        if (others.empty()) {
+            out.plan = planFrame(renderer, settings, S, camera, light, viewport);
+            renderer.render(out.plan, viewport, views);
+        } else {
+            plans.clear();
+            for (const geometry::scene::Light& other : others)
+                plans.push_back(planFrame(renderer, settings, S, camera, other, viewport));
+            plans.push_back(planFrame(renderer, settings, S, camera, light, viewport));
+            out.plan = plans.back();
+            renderer.render(plans, viewport, views, plans.size() - 1);
+        }
         if (!options.timed) continue;
         glFinish();
         const double cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -48,6 +61,17 @@ Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& 
     return out;
 }
 
+MeasureView measureView(const geometry::scene::Camera& camera, std::span<const geometry::scene::Light> lights,
+                        size_t inspected) {
+    if (inspected >= lights.size())
+        throw std::out_of_range("light " + std::to_string(inspected) + ": the scene has " +
+                                std::to_string(lights.size()) + " light(s), numbered from 0");
+    MeasureView view{camera, lights[inspected]};
+    for (size_t k = 0; k < lights.size(); ++k)
+        if (k != inspected) view.others.push_back(lights[k]);
+    return view;
+}
+
 geometry::analysis::TuneFigures
 measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& request, const geometry::scene::Aabb& S,
                    const std::vector<MeasureView>& views, const geometry::analysis::GroundTruth& truth,
@@ -57,7 +81,8 @@ measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& re
     MeasureOptions o = options;
     o.truthSamples = truthSamples;
     for (const MeasureView& view : views) {
-        const Measurement m = measure(renderer, request.settings, S, view.camera, view.light, request.size, o, &truth);
+        const Measurement m =
+            measure(renderer, request.settings, S, view.camera, view.light, request.size, o, &truth, view.others);
         const geometry::analysis::WorkCounts work =
             geometry::analysis::countWork(request.settings, m.plan, m.shadowTriangles, m.eyeTriangles, request.size);
         figures.push_back(geometry::analysis::tuneFigures(
@@ -68,9 +93,12 @@ measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& re
 }
 
 PathFigures measurePath(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
-                        const geometry::scene::Aabb& S, const MeasurePath& path, const MeasureView& start, int frames,
-                        const geometry::shadow::Viewport& size, const geometry::analysis::GroundTruth& truth,
-                        int truthSamples) {
+                        const geometry::scene::Aabb& S, const MeasurePath& path, const geometry::scene::Scene& start,
+                        size_t inspected, int frames, const geometry::shadow::Viewport& size,
+                        const geometry::analysis::GroundTruth& truth, int truthSamples) {
+    if (path.lightIndex >= start.lights.size())
+        throw std::out_of_range("the path moves light " + std::to_string(path.lightIndex) + " but the scene has " +
+                                std::to_string(start.lights.size()));
     std::vector<double> world, screen, seams;
     std::optional<geometry::analysis::Inspection> previous;
     glm::mat4 previousViewProj(1.f);
@@ -78,10 +106,12 @@ PathFigures measurePath(Renderer& renderer, const geometry::shadow::ShadowSettin
         const double t = geometry::scene::pathParameter(i, frames);
         const geometry::scene::Camera camera =
             path.cameras.empty() ? start.camera : geometry::scene::cameraAlongPath(path.cameras, t);
-        const geometry::scene::Light light{path.lights.empty() ? start.light.direction
-                                                               : geometry::scene::lightAlongPath(path.lights, t)};
-        Measurement m = measure(renderer, settings, S, camera, light, size,
-                                {.warmup = 0, .frames = 1, .timed = false, .truthSamples = truthSamples}, &truth);
+        std::vector<geometry::scene::Light> lights = start.lights;
+        lights[path.lightIndex] = geometry::scene::lightAlongPath(lights[path.lightIndex], path.light, t);
+        const MeasureView view = measureView(camera, lights, inspected);
+        Measurement m =
+            measure(renderer, settings, S, camera, view.light, size,
+                    {.warmup = 0, .frames = 1, .timed = false, .truthSamples = truthSamples}, &truth, view.others);
         geometry::analysis::Inspection& in = m.inspection;
         const auto seam = geometry::analysis::seamStats(in.m, in.aux, in.receiver, in.positions, in.normals, camera.eye,
                                                         in.width, in.height);

@@ -6,12 +6,14 @@
 #include "geometry/analysis/cost_model.h"
 #include "geometry/analysis/inspection.h"
 #include "geometry/analysis/tuner.h"
+#include "geometry/scene/path_interpolation.h"
 #include "geometry/scene/scene.h"
 #include "geometry/shadow/shadow_plan.h"
 #include "renderer/renderer.h"
 
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace renderer {
@@ -36,18 +38,30 @@ struct Measurement {
 };
 
 /// Measures `settings` on the scene with bounds `S`, seen by `camera` under `light`, at `viewport`.
+/// The scene's `others` lights are planned and drawn in the same frames (their passes are timed and
+/// their triangles counted; docs/design.md §3.10), `light` last: the inspection describes `light`.
 /// The light views are drawn at 16² without overlays: they are not what is measured.
 [[nodiscard]] Measurement measure(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
                                   const geometry::scene::Aabb& S, const geometry::scene::Camera& camera,
                                   const geometry::scene::Light& light, const geometry::shadow::Viewport& viewport,
-                                  const MeasureOptions& options,
-                                  const geometry::analysis::GroundTruth* truth = nullptr);
+                                  const MeasureOptions& options, const geometry::analysis::GroundTruth* truth = nullptr,
+                                  std::span<const geometry::scene::Light> others = {});
 
-/// A camera and its light: one view a configuration is measured on.
+/// A camera and its light: one view a configuration is measured on; `others`, the scene's other
+/// lights, drawn too but not inspected.
 struct MeasureView {
     geometry::scene::Camera camera;
     geometry::scene::Light light;
+    std::vector<geometry::scene::Light> others = {};
 };
+
+/// The view from `camera` that inspects `lights[inspected]` with every other light drawn too.
+/// Throws std::out_of_range for an index past the lights.
+[[nodiscard]] MeasureView measureView(const geometry::scene::Camera& camera,
+                                      std::span<const geometry::scene::Light> lights, size_t inspected = 0);
+[[nodiscard]] inline MeasureView measureView(const geometry::scene::Scene& scene, size_t inspected = 0) {
+    return measureView(scene.camera, scene.lights, inspected);
+}
 
 /// Measures a tune request (geometry/analysis/tuner.h) on every view with truth: the figures tune
 /// ranks, combined over the views (combineViews). Cost: `costModel`'s for the work each frame
@@ -59,10 +73,12 @@ measureTuneRequest(Renderer& renderer, const geometry::analysis::TuneRequest& re
                    int truthSamples, const geometry::analysis::CostModel& costModel, const MeasureOptions& options = {},
                    std::vector<geometry::analysis::TuneFigures>* perView = nullptr);
 
-/// A camera/light path (keys as a scene file's "paths" hold them; empty: the start stays put).
+/// A camera/light path (keys as a scene file's "paths" hold them; empty: the start stays put). The
+/// light keys move the scene's light `lightIndex`.
 struct MeasurePath {
     std::vector<geometry::scene::Camera> cameras;
-    std::vector<glm::vec3> lights;
+    geometry::scene::LightPathKeys light;
+    size_t lightIndex = 0;
 };
 
 /// One configuration walked along a path: world-space flicker over the frame pairs (mean and 95th
@@ -71,11 +87,14 @@ struct PathFigures {
     double flickerMean = NAN, flickerP95 = NAN, flickerScreen = NAN, seam = NAN;
 };
 
-/// Renders `frames` frames along `path` (untimed), starting from `start` where the path has no
-/// camera or light keys, with truth (truthSamples² samples) for the flicker's truth condition.
+/// Renders `frames` frames along `path` (untimed), starting from `start`'s camera and lights where
+/// the path has no keys, every light drawn and `start.lights[inspected]` inspected, with truth
+/// (truthSamples² samples) for the flicker's truth condition. Throws std::out_of_range for a light
+/// index past start's lights.
 [[nodiscard]] PathFigures measurePath(Renderer& renderer, const geometry::shadow::ShadowSettings& settings,
-                                      const geometry::scene::Aabb& S, const MeasurePath& path, const MeasureView& start,
-                                      int frames, const geometry::shadow::Viewport& size,
+                                      const geometry::scene::Aabb& S, const MeasurePath& path,
+                                      const geometry::scene::Scene& start, size_t inspected, int frames,
+                                      const geometry::shadow::Viewport& size,
                                       const geometry::analysis::GroundTruth& truth, int truthSamples = 1);
 
 } // namespace renderer

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -328,4 +329,63 @@ TEST(Cli, RenderWritesTheSoftTruthView) {
                                     freshDir("soft_point").string());
     EXPECT_EQ(point.exitCode, 2) << point.output;
     EXPECT_NE(point.output.find("light.angular_diameter_deg"), std::string::npos) << point.output;
+}
+
+// Bad lights in a scene file (issue 29): a cone of 0 or 180 degrees, a position out of float range, no
+// lights, more than kMaxLights: one line naming the key, exit 2, for render, bench and sweep alike.
+TEST(Cli, BadLightsAreOneLineErrorsWithExitTwo) {
+    const fs::path dir = freshDir("bad_lights");
+    fs::create_directories(dir);
+    const std::string spot = R"({"type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "cone_deg": )";
+    std::string nine;
+    for (int i = 0; i < 9; ++i) nine += std::string(i ? ", " : "") + R"({"direction": [0, -1, 0]})";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"[" + spot + "0}]", "lights[0].cone_deg"},
+        {"[" + spot + "180}]", "lights[0].cone_deg"},
+        {R"([{"type": "point", "position": [1e39, 0, 0]}])", "lights[0].position"},
+        {"[]", "lights"},
+        {"[" + nine + "]", "lights"},
+    };
+    for (const auto& [lights, key] : cases) {
+        const fs::path file = dir / "scene.json";
+        std::ofstream(file) << R"({"meshes": [{"builtin": "plane"}], "lights": )" << lights << "}";
+        for (const std::string command : {"render", "bench", "sweep path --path x"}) {
+            const CommandResult r = run(command + " --backend osmesa --scene " + file.string() +
+                                        " --size 32x32 --out " + (dir / "out").string());
+            EXPECT_EQ(r.exitCode, 2) << command << " " << lights << ": " << r.output;
+            EXPECT_NE(r.output.find(key), std::string::npos) << command << " " << lights << ": " << r.output;
+            EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+        }
+    }
+}
+
+// metrics.json with several lights and --truth: every light's block holds its own truth (rays to a
+// spot's and a point light's position), the inspected one's equal to the top level, and
+// truth_all_lights pools them.
+TEST(Cli, EveryLightsBlockHoldsItsTruth) {
+    const fs::path dir = freshDir("lights_truth");
+    const std::string scene = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/plane_lights.json";
+    const CommandResult r =
+        run("render --backend osmesa --scene " + scene +
+            " --light 1 --size 96x72 --shadow-res 512 --set bias.type=slope --truth --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(dir / "metrics.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j.at("lights").size(), 3u);
+    EXPECT_TRUE(j["lights"][1]["inspected"].get<bool>());
+    EXPECT_EQ(j["lights"][1]["truth"]["false_lit"], j["truth"]["false_lit"]);
+    double sum = 0, largest = 0;
+    for (const auto& block : j["lights"]) {
+        SCOPED_TRACE(block["type"].get<std::string>());
+        ASSERT_TRUE(block.contains("truth"));
+        const double pixels = block["truth"]["pixels"].get<double>();
+        EXPECT_GT(pixels, 300);
+        EXPECT_LT(block["truth"]["false_lit"].get<double>(), 0.03);
+        EXPECT_LT(block["truth"]["false_shadow"].get<double>(), 0.05);
+        sum += pixels;
+        largest = std::max(largest, pixels);
+    }
+    const double pairs = j.at("truth_all_lights").at("pairs").get<double>();
+    EXPECT_GE(pairs, largest);
+    EXPECT_LE(pairs, sum);
 }

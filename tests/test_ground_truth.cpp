@@ -278,6 +278,94 @@ TEST(GroundTruthTriangle, ShadesTheGroundUnderItOnly) {
     EXPECT_EQ(occludedAt(truth, {3.f, 0.f, 0.f}, kUp, slanted), 1);
 }
 
+// A point light 1 m above the roof (y = 1) at (0, 2, 0): by similar triangles the roof's shadow on
+// the ground is the roof scaled 2× about the origin, corners (−4, −4), (4, −4), (0, 4) in x, z.
+TEST(GroundTruthPositional, APointLightsShadowIsTheOccluderScaledBySimilarTriangles) {
+    const GroundTruth truth(trianglesScene(kRoof));
+    Light point;
+    point.type = LightType::Point;
+    point.position = {0.f, 2.f, 0.f};
+    point.range = 50.f;
+    const TruthLight light(point);
+    // At z = −3.5 the scaled triangle spans |x| ≤ 3.75; the roof itself only |x| ≤ 1.75 at z = −2.
+    const std::vector<glm::vec3> pts{
+        {0.f, 0.f, 0.f}, {3.f, 0.f, -3.5f}, {3.9f, 0.f, -3.5f}, {0.f, 0.f, 4.5f}, {5.f, 0.f, 0.f}};
+    const std::vector<glm::vec3> up(pts.size(), kUp);
+    EXPECT_EQ(truth.occluded(pts, up, light), (std::vector<uint8_t>{1, 1, 0, 0, 0}));
+    // Straight down from the sun, (3, 0, −3.5) is lit: the light's position made the difference.
+    EXPECT_EQ(occludedAt(truth, {3.f, 0.f, -3.5f}, kUp, kStraightDown), 0);
+    // Rays end at the light: above it, looking down through it at the roof, nothing is in between.
+    EXPECT_EQ(truth.occluded({{0.f, 3.f, 0.f}}, {-kUp}, light), (std::vector<uint8_t>{0}));
+    EXPECT_EQ(occludedAt(truth, {0.f, 3.f, 0.f}, -kUp, glm::vec3(0.f, 1.f, 0.f)), 1); // a sun below does hit it
+    // At the light's own position there is no direction: never traced.
+    EXPECT_EQ(truth.occluded({point.position}, {kUp}, light), (std::vector<uint8_t>{0}));
+    // The occluder distance runs along the ray to the light: from (0, 0, 0) the roof is 1 m away.
+    const auto d = truth.occluderDistance({{0.f, 0.f, 0.f}}, {kUp}, light, {kInf});
+    EXPECT_NEAR(d.at(0), 1.f, 1e-3f);
+}
+
+// A spot light reaches its cone (full angle coneDeg) within its range; a point light its range.
+TEST(GroundTruthPositional, ASpotReachesItsConeAndRangeOnly) {
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0.f, 2.f, 0.f};
+    spot.direction = {0.f, -1.f, 0.f};
+    spot.coneDeg = 60.f; // 30° half angle: tan 30° · 2 m = 1.155 m on the ground
+    spot.range = 10.f;
+    const TruthLight light(spot);
+    EXPECT_TRUE(light.valid());
+    EXPECT_TRUE(light.reaches({0.f, 0.f, 0.f}));
+    EXPECT_TRUE(light.reaches({1.1f, 0.f, 0.f}));
+    EXPECT_FALSE(light.reaches({1.2f, 0.f, 0.f}));
+    EXPECT_FALSE(light.reaches({0.f, 3.f, 0.f}));   // behind it
+    EXPECT_FALSE(light.reaches({0.f, -8.5f, 0.f})); // beyond its range
+    EXPECT_FALSE(light.reaches({kNaN, 0.f, 0.f}));
+    EXPECT_TRUE(TruthLight(kStraightDown).reaches({1e6f, -1e6f, 0.f}));
+    EXPECT_FLOAT_EQ(light.reach({0.f, -1.f, 0.f}), 3.f);
+    EXPECT_EQ(light.toLight({0.f, -1.f, 0.f}), kUp);
+    Light broken = spot;
+    broken.position.x = kNaN;
+    EXPECT_FALSE(TruthLight(broken).valid());
+    EXPECT_THROW((void)planeTruth().occluded({{0.f, 0.f, 0.f}}, {kUp}, TruthLight(broken)), std::invalid_argument);
+}
+
+// A positional light of radius r = 0.2 at (0, 2, 0) over the roof's edge z = −2 (y = 1). The emitter's
+// disk faces each receiver; by hand, the lines from (0, 0, −3.5) to the disk's top and bottom cross
+// y = 1 at z = −1.94 and −1.53 (both under the roof: none of the disk seen), those from (0, 0, −5) at
+// z = −2.75 and −2.20 (both beside it: all seen); from z = −4 the edge's image passes through the
+// disk's centre (similar triangles: 2 × the edge's z), cutting it in half.
+TEST(GroundTruthPositional, AnEmittersRadiusGivesThePenumbraSimilarTrianglesPredict) {
+    const GroundTruth truth(trianglesScene(kRoof));
+    Light point;
+    point.type = LightType::Point;
+    point.position = {0.f, 2.f, 0.f};
+    point.range = 50.f;
+    point.radius = 0.2f;
+    const TruthLight light(point);
+    std::vector<glm::vec3> umbra, lit, half;
+    for (int k = 0; k < 16; ++k) {
+        const float x = -0.4f + 0.05f * float(k);
+        umbra.emplace_back(x, 0.f, -3.5f);
+        lit.emplace_back(x, 0.f, -5.f);
+        half.emplace_back(x, 0.f, -4.f);
+    }
+    const std::vector<glm::vec3> up(16, kUp);
+    constexpr int kSamples = GroundTruth::kSunSamplesPerAxis;
+    EXPECT_EQ(truth.sunVisibility(umbra, up, light, 0.f, kSamples), std::vector<float>(16, 0.f));
+    EXPECT_EQ(truth.sunVisibility(lit, up, light, 0.f, kSamples), std::vector<float>(16, 1.f));
+    double mean = 0.0;
+    for (const float v : truth.sunVisibility(half, up, light, 0.f, kSamples)) {
+        EXPECT_NEAR(v, 0.5, 0.1);
+        mean += v / 16.0;
+    }
+    EXPECT_NEAR(mean, 0.5, 0.03);
+    // Radius 0: exactly 1 − occluded(), whatever angular diameter is passed (it is the sun's).
+    point.radius = 0.f;
+    const auto occ = truth.occluded(half, up, TruthLight(point));
+    const auto v = truth.sunVisibility(half, up, TruthLight(point), 0.1f, kSamples);
+    for (size_t i = 0; i < v.size(); ++i) EXPECT_EQ(v[i], occ[i] ? 0.f : 1.f) << i;
+}
+
 TEST(GroundTruthTriangle, OwnSurfaceHasNoAcneAndItsBackIsJudgedByTheGeometry) {
     const GroundTruth truth(trianglesScene(kRoof));
     const glm::vec3 onIt{0.2f, 1.f, -0.3f};

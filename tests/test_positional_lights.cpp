@@ -3,10 +3,12 @@
 #include "render_test_util.h"
 
 #include "app/headless_frame.h"
+#include "geometry/analysis/ground_truth.h"
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/mesh_builder.h"
 #include "geometry/shadow/positional_plan.h"
 #include "renderer/context.h"
+#include "renderer/inspection.h"
 
 #include <gtest/gtest.h>
 
@@ -199,6 +201,72 @@ TEST(PositionalLights, PointLightCubeFacesShowNoSeam) {
             << enumName(filter) << ": " << e.bandWrong << "/" << e.band << " vs " << e.restWrong << "/" << e.rest;
         EXPECT_LT(restRate, 0.02);
     }
+}
+
+// The ray-traced truth (Embree, rays ending at the light) agrees with the room's own segment test at
+// every receiver away from shadow edges, and the frame's truth classes are those of a correct map.
+TEST(PositionalLights, TruthTracesToThePointLightAsTheSegmentTestDoes) {
+    const Scene room = boxRoom();
+    app::HeadlessFrame f = app::renderHeadless(room, smallOptions());
+    const geometry::analysis::GroundTruth truth(f.scene);
+    const geometry::analysis::Inspection in = renderer::inspect(*f.renderer, f.plan, &truth);
+    EXPECT_EQ(renderer::takeGlErrors(), "");
+    ASSERT_TRUE(in.occluded && in.truth);
+    const glm::vec3 light = room.lights[0].position;
+    const auto shadowed = [&](const glm::vec3& p, const glm::vec3& from) {
+        for (const auto& [c, h] : roomBlocks())
+            if (segmentHitsBox(p, from, c, h)) return true;
+        return false;
+    };
+    int counted = 0, disagree = 0, occluded = 0;
+    for (size_t i = 0; i < in.positions.size(); ++i) {
+        if (!in.receiver[i]) continue;
+        const glm::vec3 p = in.positions[i] + 0.02f * in.normals[i];
+        const bool segment = shadowed(p, light);
+        bool edge = false;
+        for (const glm::vec3 o : {glm::vec3(0.1f, 0, 0), glm::vec3(0, 0.1f, 0), glm::vec3(0, 0, 0.1f)})
+            edge |= shadowed(p, light + o) != segment || shadowed(p, light - o) != segment;
+        if (edge) continue;
+        ++counted;
+        occluded += segment;
+        disagree += segment != ((*in.occluded)[i] != 0);
+    }
+    EXPECT_GT(counted, 20000);
+    EXPECT_GT(occluded, 1000);
+    EXPECT_LT(double(disagree) / counted, 0.002) << disagree << " of " << counted;
+    EXPECT_LT(in.truth->falseShadow + in.truth->falseLit, 0.03);
+}
+
+// Outside a spot's cone the light has no shadow to judge: those pixels are not its receivers.
+TEST(PositionalLights, PixelsOutsideTheSpotsConeAreNotItsReceivers) {
+    Scene scene = makePlaneScene();
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0.f, 12.f, 0.f};
+    spot.direction = {0.f, -1.f, 0.f};
+    spot.coneDeg = 40.f;
+    spot.range = 60.f;
+    scene.lights = {spot};
+    app::HeadlessFrame f = app::renderHeadless(scene, smallOptions());
+    const geometry::analysis::GroundTruth truth(f.scene);
+    const geometry::analysis::Inspection in = renderer::inspect(*f.renderer, f.plan, &truth);
+    const float cosHalf = std::cos(glm::radians(20.f));
+    int inside = 0, outsideSeen = 0;
+    for (size_t i = 0; i < in.positions.size(); ++i) {
+        if (!(in.aux[i].z >= 0.f)) continue; // sky
+        const glm::vec3 d = glm::normalize(in.positions[i] - spot.position);
+        const bool inCone = glm::dot(d, spot.direction) > cosHalf;
+        if (in.receiver[i]) {
+            EXPECT_TRUE(inCone) << i;
+            ++inside;
+        } else if (!inCone) {
+            ++outsideSeen;
+        }
+    }
+    EXPECT_GT(inside, 2000);
+    EXPECT_GT(outsideSeen, 2000);
+    ASSERT_TRUE(in.truth);
+    EXPECT_EQ(in.truth->count, size_t(inside));
 }
 
 // Every filter and every bias works with spot and point lights: no GL error, a finite shadow factor

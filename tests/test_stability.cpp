@@ -129,6 +129,27 @@ TEST(PathInterpolation, LightTurnsAtAConstantRate) {
     EXPECT_EQ(lightAlongPath({{0, 0, 0}}, 0.5), glm::vec3(0, -1, 0));
 }
 
+// A path moves one light: its position linearly between keys, its direction as lightAlongPath; what
+// has no keys (and every other member) stays.
+TEST(PathInterpolation, ALightsPositionMovesLinearlyAndTheRestStays) {
+    EXPECT_EQ(positionAlongPath({{0, 0, 0}, {4, 8, 0}, {4, 8, 4}}, 0.25), glm::vec3(2, 4, 0));
+    EXPECT_EQ(positionAlongPath({{0, 0, 0}, {4, 8, 0}, {4, 8, 4}}, 0.75), glm::vec3(4, 8, 2));
+    EXPECT_EQ(positionAlongPath({{1, 2, 3}}, 0.9), glm::vec3(1, 2, 3));
+    EXPECT_EQ(positionAlongPath({{0, 0, 0}, {4, 0, 0}}, std::nan("")), glm::vec3(0, 0, 0));
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {1, 2, 3};
+    spot.direction = {0, -1, 0};
+    spot.coneDeg = 40.f;
+    const Light moved = lightAlongPath(spot, {{}, {{0, 5, 0}, {10, 5, 0}}}, 0.5);
+    EXPECT_EQ(moved.position, glm::vec3(5, 5, 0));
+    EXPECT_EQ(moved.direction, spot.direction);
+    EXPECT_EQ(moved.coneDeg, 40.f);
+    const Light turned = lightAlongPath(spot, {{{1, 0, 0}}, {}}, 0.5);
+    EXPECT_EQ(turned.position, spot.position);
+    EXPECT_EQ(turned.direction, glm::vec3(1, 0, 0));
+}
+
 TEST(FlickerStats, CountsFlipsWhereTruthStays) {
     // Pixels: 0 stable lit, stays lit · 1 stable lit, flips (flicker) · 2 truth moves (ignored)
     // 3 not a receiver in the second frame (ignored) · 4 stable shadowed, flips · 5 NaN s (ignored)

@@ -19,6 +19,7 @@ struct MeasureContext {
     geometry::shadow::Viewport size{640, 360};    // the eye view's
     bool truth = false;                           // ground truth on (Views)
     int truthSamples = 1;                         // per pixel a side
+    size_t light = 0;                             // the inspected light; the scene's others are drawn too
 };
 
 /// A renderer for background measurements, kept across steps while the scene stays.

@@ -8,10 +8,11 @@
 namespace ui {
 
 void RecommendJob::start(std::unique_ptr<geometry::analysis::Tuner> tuner, const geometry::scene::Camera& camera,
-                         const geometry::scene::Light& light) {
+                         const geometry::scene::Light& light, std::vector<geometry::scene::Light> others) {
     tuner_ = std::move(tuner);
     camera_ = camera;
     light_ = light;
+    others_ = std::move(others);
     result_.reset();
     summary_.clear();
     running_ = true;
@@ -46,9 +47,9 @@ std::optional<std::string> RecommendJob::step(const MeasureContext& c) {
     renderer::Renderer& r = renderer_.get(c);
     try {
         // The stored llvmpipe calibration ranks here too: the dashboard issues no GL query of its own.
-        tuner_->report(renderer::measureTuneRequest(r, *request, c.scene.file.scene.bounds(), {{camera_, light_}},
-                                                    *c.scene.truth, 1, geometry::analysis::storedCostModel("llvmpipe"),
-                                                    {.warmup = 1, .frames = 2}));
+        tuner_->report(renderer::measureTuneRequest(
+            r, *request, c.scene.file.scene.bounds(), {{camera_, light_, others_}}, *c.scene.truth, 1,
+            geometry::analysis::storedCostModel("llvmpipe"), {.warmup = 1, .frames = 2}));
     } catch (const std::exception& e) {
         running_ = false;
         return std::string("Recommend: ") + e.what();

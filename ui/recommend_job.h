@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ui {
 
@@ -20,9 +21,10 @@ public:
     int budget = 40;
     bool showChart = false;
 
-    /// Starts `tuner`'s search at the view (`camera`, `light`); forgets the last result.
+    /// Starts `tuner`'s search at the view (`camera`, `light`, the scene's `others` lights drawn too);
+    /// forgets the last result.
     void start(std::unique_ptr<geometry::analysis::Tuner> tuner, const geometry::scene::Camera& camera,
-               const geometry::scene::Light& light);
+               const geometry::scene::Light& light, std::vector<geometry::scene::Light> others = {});
     /// Measures the tuner's next request; when the search ends (or fails) returns its summary line.
     std::optional<std::string> step(const MeasureContext& c);
     /// Stops the search, keeping the best settings so far.
@@ -44,6 +46,7 @@ private:
     std::string summary_;
     geometry::scene::Camera camera_;
     geometry::scene::Light light_;
+    std::vector<geometry::scene::Light> others_;
     MeasureRenderer renderer_;
 };
 

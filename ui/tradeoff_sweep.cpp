@@ -27,9 +27,10 @@ std::optional<std::string> TradeoffSweep::step(const MeasureContext& c) {
     const auto& cfg = configs_[next_++];
     const auto* truth = c.truth ? c.scene.truth.get() : nullptr;
     try {
+        const renderer::MeasureView view = renderer::measureView(scene, c.light);
         const renderer::Measurement m =
-            renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, scene.lights[0], c.size,
-                              {.warmup = 1, .frames = 3, .truthSamples = c.truthSamples}, truth);
+            renderer::measure(r, cfg.settings, scene.bounds(), scene.camera, view.light, c.size,
+                              {.warmup = 1, .frames = 3, .truthSamples = c.truthSamples}, truth, view.others);
         Figures f{cfg.label,
                   cfg.preset,
                   m.gpuMs,
@@ -45,10 +46,11 @@ std::optional<std::string> TradeoffSweep::step(const MeasureContext& c) {
         if (const auto& t = m.inspection.softTruth) f.soft = t->meanAbs;
         const auto& paths = c.scene.file.paths;
         if (const auto p = paths.find(runningPath_); p != paths.end() && c.scene.truth)
-            f.flicker =
-                renderer::measurePath(r, cfg.settings, scene.bounds(), {p->second.cameras, p->second.lights},
-                                      {scene.camera, scene.lights[0]}, 10, c.size, *c.scene.truth, c.truthSamples)
-                    .flickerMean;
+            f.flicker = renderer::measurePath(
+                            r, cfg.settings, scene.bounds(),
+                            {p->second.cameras, {p->second.lights, p->second.lightPositions}, p->second.lightIndex},
+                            scene, c.light, 10, c.size, *c.scene.truth, c.truthSamples)
+                            .flickerMean;
         results_.push_back(f);
     } catch (const std::exception& e) {
         return "trade-off sweep: " + cfg.label + ": " + e.what();

@@ -2,6 +2,7 @@
 //   [SECTION] Small helpers ............................... finite, maxAbs, resolveThreads, errorName, parallelFor
 //   [SECTION] Packet layouts .............................. RunLayout, TileLayout, forEachPacket, setLane, checkInputs
 //   [SECTION] Impl: device, scene and the error channel ... onError, throwIfError, addMesh, build
+//   [SECTION] TruthLight .................................. toLight, reach, reaches
 //   [SECTION] GroundTruth ................................. PrimaryHits::hitCount, GroundTruth, epsilon
 //   [SECTION] Tracing rays ................................ traceOccluded, occluded, surfaceNormals, primaryHits,
 //                                                           coverage
@@ -171,13 +172,18 @@ void setLane(Packet& ray, int lane, const glm::vec3& org, const glm::vec3& dir, 
     ray.flags[lane] = 0;
 }
 
-void checkInputs(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, const glm::vec3& l,
+void checkLight(const TruthLight& light, const std::string& who) {
+    if (!light.valid())
+        throw std::invalid_argument(who + ": light direction must be finite and non-zero" +
+                                    (light.positional() ? ", its position, range and radius finite" : ""));
+}
+
+void checkInputs(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, const TruthLight& light,
                  const std::string& who = "GroundTruth::occluded") {
     if (points.size() != normals.size())
         throw std::invalid_argument(who + ": " + std::to_string(points.size()) + " points but " +
                                     std::to_string(normals.size()) + " normals");
-    if (!finite(l) || !(glm::length(l) > 0.f))
-        throw std::invalid_argument(who + ": light direction must be finite and non-zero");
+    checkLight(light, who);
 }
 
 } // namespace
@@ -296,6 +302,43 @@ struct GroundTruth::Impl {
     }
 };
 
+// ---- [SECTION] TruthLight -------------------------------------------------------------------
+
+TruthLight::TruthLight(const glm::vec3& direction) noexcept : l(direction) {
+    if (finite(l) && glm::length(l) > 0.f) l = glm::normalize(l);
+}
+
+TruthLight::TruthLight(const scene::Light& light) noexcept
+    : type(light.type), l(light.l()), position(light.position), radius(light.positional() ? light.radius : 0.f) {
+    if (!light.positional()) return;
+    range = light.range;
+    // The shaders' smoothstep reaches 0 at the outer cone: coneDeg is the full angle.
+    if (light.type == scene::LightType::Spot) cosOuter = std::cos(glm::radians(0.5f * light.coneDeg));
+}
+
+bool TruthLight::valid() const noexcept {
+    if (!finite(l) || !(glm::length(l) > 0.f)) return false;
+    return !positional() || (finite(position) && range > 0.f && std::isfinite(range) && radius >= 0.f &&
+                             std::isfinite(radius) && std::isfinite(cosOuter));
+}
+
+glm::vec3 TruthLight::toLight(const glm::vec3& p) const noexcept {
+    if (!positional()) return -l;
+    const glm::vec3 d = position - p;
+    const float len = glm::length(d);
+    return len > 0.f && std::isfinite(len) ? d / len : glm::vec3(0.f);
+}
+
+float TruthLight::reach(const glm::vec3& p) const noexcept { return positional() ? glm::distance(position, p) : kInf; }
+
+bool TruthLight::reaches(const glm::vec3& p) const noexcept {
+    if (!positional()) return true;
+    const glm::vec3 d = p - position;
+    const float len = glm::length(d);
+    if (!(len < range)) return false; // NaN: no
+    return !(len > 0.f) || glm::dot(d / len, l) > cosOuter;
+}
+
 // ---- [SECTION] GroundTruth ------------------------------------------------------------------
 
 size_t PrimaryHits::hitCount() const noexcept {
@@ -330,17 +373,21 @@ float GroundTruth::epsilon(const glm::vec3& p) const noexcept {
 namespace {
 
 /// Lane i of `ray` as occluded()'s shadow ray for point idx: from the point moved epsilon(p) off the
-/// surface on the light's side, towards the light, hits closer than epsilon ignored, up to `reach`.
-/// False, the lane idle, where the point or its normal is unusable or `reach` does not clear epsilon
-/// (NaN included: nothing can lie in between).
+/// surface on the light's side, towards the light, hits closer than epsilon ignored, up to `reach`
+/// (and no further than a positional light). False, the lane idle, where the point or its normal is
+/// unusable, the point is at the light, or the reach does not clear epsilon (NaN included: nothing
+/// can lie in between).
 template <class Ray>
 bool setShadowLane(Ray& ray, int i, const GroundTruth& truth, size_t idx, const std::vector<glm::vec3>& points,
-                   const std::vector<glm::vec3>& normals, const glm::vec3& toLight, float reach) noexcept {
+                   const std::vector<glm::vec3>& normals, const TruthLight& light, float reach) noexcept {
     const glm::vec3 p = idx != kNoPoint ? points[idx] : glm::vec3(0.f);
     const glm::vec3 n = idx != kNoPoint ? normals[idx] : glm::vec3(0.f);
     const float len = glm::length(n);
     const float eps = truth.epsilon(p);
-    if (idx == kNoPoint || !finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len) || !(reach > eps)) {
+    const glm::vec3 toLight = light.toLight(p);
+    reach = std::min(reach, light.reach(p)); // NaN stays NaN: idle
+    if (idx == kNoPoint || !finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len) || !(reach > eps) ||
+        toLight == glm::vec3(0.f)) {
         setIdleLane(ray, i);
         return false;
     }
@@ -352,15 +399,14 @@ bool setShadowLane(Ray& ray, int i, const GroundTruth& truth, size_t idx, const 
 /// One rtcOccluded16 per packet: 2.6× faster than rtcOccluded1 ray by ray on AVX-512.
 std::vector<uint8_t> traceOccluded(const GroundTruth& truth, RTCScene scene, const RunLayout& layout,
                                    const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                                   const glm::vec3& l, int threads, const std::stop_token& stop) {
+                                   const TruthLight& light, int threads, const std::stop_token& stop) {
     std::vector<uint8_t> result(points.size(), 0);
-    const glm::vec3 toLight = -glm::normalize(l);
     forEachPacket(layout, threads, stop, [&](const Lanes& lanes) {
         RTCRay16 ray;
         alignas(64) std::array<int, kLanes> valid{};
         bool any = false;
         for (int i = 0; i < kLanes; ++i)
-            if (setShadowLane(ray, i, truth, lanes[i], points, normals, toLight, kInf)) valid[i] = -1, any = true;
+            if (setShadowLane(ray, i, truth, lanes[i], points, normals, light, kInf)) valid[i] = -1, any = true;
         if (!any) return;
         RTCIntersectContext ctx = coherentContext();
         rtcOccluded16(valid.data(), scene, &ctx, &ray);
@@ -373,25 +419,24 @@ std::vector<uint8_t> traceOccluded(const GroundTruth& truth, RTCScene scene, con
 } // namespace
 
 std::vector<uint8_t> GroundTruth::occluded(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals,
-                                           const glm::vec3& l, int threads, std::stop_token stop) const {
-    checkInputs(points, normals, l);
+                                           const TruthLight& light, int threads, std::stop_token stop) const {
+    checkInputs(points, normals, light);
     if (!impl_) throw std::logic_error("GroundTruth::occluded on a moved-from object");
-    auto result = traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, l, threads, stop);
+    auto result = traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, normals, light, threads, stop);
     impl_->throwIfError("tracing shadow rays");
     return result;
 }
 
 std::vector<float> GroundTruth::occluderDistance(const std::vector<glm::vec3>& points,
-                                                 const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                 const std::vector<glm::vec3>& normals, const TruthLight& light,
                                                  const std::vector<float>& maxDistance, int threads,
                                                  std::stop_token stop) const {
-    checkInputs(points, normals, l);
+    checkInputs(points, normals, light);
     if (maxDistance.size() != points.size())
         throw std::invalid_argument("GroundTruth::occluderDistance: " + std::to_string(points.size()) + " points but " +
                                     std::to_string(maxDistance.size()) + " distances");
     if (!impl_) throw std::logic_error("GroundTruth::occluderDistance on a moved-from object");
     std::vector<float> out(points.size(), kInf);
-    const glm::vec3 toLight = -glm::normalize(l);
     // occluded()'s rays, each ending at its distance, intersected for their hit.
     forEachPacket(RunLayout{points.size()}, threads, stop, [&](const Lanes& lanes) {
         RTCRayHit16 rh;
@@ -399,7 +444,7 @@ std::vector<float> GroundTruth::occluderDistance(const std::vector<glm::vec3>& p
         bool any = false;
         for (int i = 0; i < kLanes; ++i) {
             const float reach = lanes[i] != kNoPoint ? maxDistance[lanes[i]] : 0.f;
-            if (!setShadowLane(rh.ray, i, *this, lanes[i], points, normals, toLight, reach)) continue;
+            if (!setShadowLane(rh.ray, i, *this, lanes[i], points, normals, light, reach)) continue;
             rh.hit.geomID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
             valid[i] = -1;
             any = true;
@@ -544,21 +589,19 @@ PrimaryHits GroundTruth::primaryHits(const scene::Camera& camera, int width, int
     return hits;
 }
 
-std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, int height, const glm::vec3& l,
+std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, int height, const TruthLight& light,
                                          int samplesPerAxis, int threads, std::stop_token stop) const {
     if (width < 1 || height < 1) throw std::invalid_argument("GroundTruth::coverage: image size must be positive");
     if (samplesPerAxis < 1 || samplesPerAxis > kMaxSamplesPerAxis)
         throw std::invalid_argument("GroundTruth::coverage: samples per axis " + std::to_string(samplesPerAxis) +
                                     " is outside 1.." + std::to_string(kMaxSamplesPerAxis));
-    if (!finite(l) || !(glm::length(l) > 0.f))
-        throw std::invalid_argument("GroundTruth::coverage: light direction must be finite and non-zero");
+    checkLight(light, "GroundTruth::coverage");
     if (!impl_) throw std::logic_error("GroundTruth::coverage on a moved-from object");
     const glm::dmat4 toWorld = glm::inverse(glm::dmat4(viewProj));
     const auto unproject = [&](double x, double y, double z) {
         const glm::dvec4 p = toWorld * glm::dvec4(x, y, z, 1.0);
         return glm::vec3(glm::dvec3(p) / p.w);
     };
-    const glm::vec3 toLight = -glm::normalize(l);
     const size_t N = size_t(samplesPerAxis), W = size_t(width) * N, H = size_t(height) * N;
     // Pixel rows per band: ~1M samples in memory at a time, whatever the image size.
     const size_t bandRows = std::max<size_t>(1, (size_t(1) << 20) / (W * N));
@@ -579,12 +622,15 @@ std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, i
                 return PrimaryRay{nearP, farP - nearP, 0.f, 1.f};
             },
             points, normals);
-        // Samples on a surface facing away from the light are dark without a shadow ray.
+        // Samples on a surface facing away from the light are dark without a shadow ray; samples the
+        // light does not reach are left out as misses are.
         std::vector<glm::vec3> facing = normals;
-        for (auto& n : facing)
-            if (!(glm::dot(n, toLight) > 0.f)) n = glm::vec3(0.f);
+        for (size_t k = 0; k < facing.size(); ++k) {
+            if (!light.reaches(points[k])) points[k] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
+            if (!(glm::dot(facing[k], light.toLight(points[k])) > 0.f)) facing[k] = glm::vec3(0.f);
+        }
         const std::vector<uint8_t> occ =
-            traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, facing, l, threads, stop);
+            traceOccluded(*this, impl_->scene, RunLayout{points.size()}, points, facing, light, threads, stop);
         for (size_t k = 0; k < points.size(); ++k) {
             if (!finite(points[k])) continue;
             const size_t pixel = (y0 + (k / W) / N) * size_t(width) + (k % W) / N;
@@ -647,10 +693,10 @@ std::array<glm::vec3, 2> perpendicularBasis(const glm::vec3& d) noexcept {
 } // namespace
 
 std::vector<float> GroundTruth::sunVisibility(const std::vector<glm::vec3>& points,
-                                              const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                              const std::vector<glm::vec3>& normals, const TruthLight& light,
                                               float angularDiameterRad, int samplesPerAxis, int threads,
                                               std::stop_token stop) const {
-    checkInputs(points, normals, l, "GroundTruth::sunVisibility");
+    checkInputs(points, normals, light, "GroundTruth::sunVisibility");
     constexpr float kPi = 3.14159265358979f;
     if (!(angularDiameterRad >= 0.f && angularDiameterRad < kPi))
         throw std::invalid_argument("GroundTruth::sunVisibility: the sun's angular diameter must lie in [0, pi) "
@@ -660,9 +706,7 @@ std::vector<float> GroundTruth::sunVisibility(const std::vector<glm::vec3>& poin
                                     " is outside 1.." + std::to_string(kMaxSamplesPerAxis));
     if (!impl_) throw std::logic_error("GroundTruth::sunVisibility on a moved-from object");
 
-    const glm::vec3 toLight = -glm::normalize(l); // as traceOccluded: θ = 0 traces exactly its ray
-    const std::array<glm::vec3, 2> e = perpendicularBasis(toLight);
-    const float tanHalf = std::tan(0.5f * angularDiameterRad);
+    const float sunTanHalf = std::tan(0.5f * angularDiameterRad);
     const int S = samplesPerAxis, samples = S * S;
     // Each task takes whole points, so a point's count is one thread's: ~256 rays a task.
     const size_t pointsPerTask = std::max<size_t>(1, 256 / size_t(samples));
@@ -675,7 +719,13 @@ std::vector<float> GroundTruth::sunVisibility(const std::vector<glm::vec3>& poin
             const glm::vec3& n = normals[idx];
             const float len = glm::length(n);
             if (!finite(p) || !finite(n) || !(len > 0.f) || !std::isfinite(len)) continue; // 0, untraced
+            // As traceOccluded: θ = 0 traces exactly its ray. A positional emitter's disk faces p.
+            const glm::vec3 toLight = light.toLight(p);
+            const float distance = light.reach(p);
             const float eps = epsilon(p);
+            if (toLight == glm::vec3(0.f) || !(distance > eps)) continue; // at the light: 0, untraced
+            const std::array<glm::vec3, 2> e = perpendicularBasis(toLight);
+            const float tanHalf = light.positional() ? light.radius / distance : sunTanHalf;
             const glm::vec3 side = glm::dot(n, toLight) > 0.f ? n : -n;
             const glm::vec3 origin = p + side * (eps / len);
             const uint32_t seed = pointSeed(p);
@@ -690,14 +740,17 @@ std::vector<float> GroundTruth::sunVisibility(const std::vector<glm::vec3>& poin
                         continue;
                     }
                     glm::vec3 dir = toLight;
+                    float tfar = distance; // +∞ for the sun
                     if (tanHalf > 0.f) {
                         const uint32_t h = mix32(seed ^ (0x9e3779b9u * uint32_t(k + 1)));
                         const float u = (float(k % S) + unitFloat(h)) / float(S);
                         const float v = (float(k / S) + unitFloat(mix32(h ^ 0x68e31da4u))) / float(S);
                         const glm::vec2 d = tanHalf * concentricDisk(u, v);
-                        dir = glm::normalize(toLight + d.x * e[0] + d.y * e[1]);
+                        const glm::vec3 offset = toLight + d.x * e[0] + d.y * e[1]; // on the disk at 1 unit
+                        dir = glm::normalize(offset);
+                        tfar = distance * glm::length(offset); // to the emitter's disk
                     }
-                    setLane(ray, i, origin, dir, eps, kInf);
+                    setLane(ray, i, origin, dir, eps, tfar);
                     valid[i] = -1;
                 }
                 RTCIntersectContext ctx = coherentContext();

@@ -1,6 +1,7 @@
 #pragma once
 // Ground truth for shadow inspection (docs/design.md §4): for each visible receiver point, does a ray
-// from it towards the directional light hit any triangle of the scene? Traced with Embree 3 on
+// from it towards the light (a directional light's −l, or a spot or point light's position) hit any
+// triangle of the scene? Traced with Embree 3 on
 // the CPU, so it is independent of the GL renderer whose shadows it judges. No GL, no ImGui.
 #include "geometry/analysis/cancelled.h"
 #include "geometry/scene/scene.h"
@@ -8,6 +9,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stop_token>
@@ -15,6 +17,33 @@
 #include <vector>
 
 namespace geometry::analysis {
+
+/// Where truth rays go (docs/design.md §3.10 "Truth per light"): towards −l to infinity for a
+/// directional light (implicit from l, so a direction still names one), or to a spot or point light's
+/// position, ending there. A point a positional light does not reach (outside a spot's cone, beyond
+/// the range: the shaders' lightReach is 0) is not its receiver: the light has no shadow to judge there.
+struct TruthLight {
+    scene::LightType type = scene::LightType::Directional;
+    glm::vec3 l{0.f, -1.f, 0.f}; // directional: l; spot: the cone's axis (unit once valid)
+    glm::vec3 position{0.f};
+    float cosOuter = -1.f; // a spot's half-angle cosine; −1: every direction
+    float range = std::numeric_limits<float>::infinity();
+    float radius = 0.f; // a positional emitter's radius (the soft truth's disk)
+
+    TruthLight(const glm::vec3& direction) noexcept; // NOLINT(google-explicit-constructor): directional
+    explicit TruthLight(const scene::Light& light) noexcept;
+
+    [[nodiscard]] bool operator==(const TruthLight&) const = default;
+    [[nodiscard]] bool positional() const noexcept { return type != scene::LightType::Directional; }
+    /// l finite and non-zero; a positional light's position, range and radius finite too.
+    [[nodiscard]] bool valid() const noexcept;
+    /// The unit direction from p towards the light; (0, 0, 0) at a positional light's position.
+    [[nodiscard]] glm::vec3 toLight(const glm::vec3& p) const noexcept;
+    /// How far a shadow ray from p runs: +∞ for a directional light, else the distance to the position.
+    [[nodiscard]] float reach(const glm::vec3& p) const noexcept;
+    /// Whether the light reaches p at all (the cone and the range; always for a directional light).
+    [[nodiscard]] bool reaches(const glm::vec3& p) const noexcept;
+};
 
 /// What a camera sees: one entry per pixel, row-major, top row first (image order).
 struct PrimaryHits {
@@ -40,7 +69,8 @@ public:
 
     /// For each receiver point p (world space) with its unit geometric normal n (facing the
     /// viewer; it may face away from the light), 1 if the ray from p towards the light
-    /// (direction −l, to infinity) hits any triangle, else 0.
+    /// (direction −l, to infinity; or to a positional light's position: TruthLight) hits any
+    /// triangle, else 0. A point at a positional light's position gives 0.
     ///
     /// Self-intersection: the origin moves by epsilon(p) along the side of the surface that faces
     /// the light (n if n·(−l) > 0, else −n) and hits closer than epsilon(p) are ignored. So a
@@ -55,7 +85,7 @@ public:
     /// (row-major) is good, a shuffled order is slower but gives the same result.
     /// Once `stop` is requested the workers take no new packets and the call throws Cancelled.
     [[nodiscard]] std::vector<uint8_t> occluded(const std::vector<glm::vec3>& points,
-                                                const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                const std::vector<glm::vec3>& normals, const TruthLight& light,
                                                 int threads = 0, std::stop_token stop = {}) const;
 
     /// The unit geometric normal of the surface under each point, as seen from `eye`: a ray from the
@@ -76,7 +106,7 @@ public:
     /// where a point is not traced (as occluded(), or its distance not above epsilon(p), or NaN).
     /// Throws std::invalid_argument as occluded(), or when the sizes differ; Cancelled as occluded().
     [[nodiscard]] std::vector<float> occluderDistance(const std::vector<glm::vec3>& points,
-                                                      const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                      const std::vector<glm::vec3>& normals, const TruthLight& light,
                                                       const std::vector<float>& maxDistance, int threads = 0,
                                                       std::stop_token stop = {}) const;
 
@@ -100,12 +130,14 @@ public:
     ///
     /// Every ray starts from the same origin as occluded()'s and ignores hits as close: the part of
     /// the disk below a receiver's horizon is hidden by the receiver itself when it is in the scene.
-    /// θ = 0 gives exactly 1 − occluded() (every sample is then the ray along −l). Points or normals
+    /// θ = 0 gives exactly 1 − occluded() (every sample is then the ray along −l). A positional
+    /// light's disk is its emitter: radius TruthLight::radius at its position, facing each point (θ is
+    /// then 2·atan(radius / distance) per point and angularDiameterRad is not used); rays end on it. Points or normals
     /// with NaN/Inf, or a zero normal, give 0 and are never traced. Throws std::invalid_argument as
     /// occluded(), and for θ outside [0, π) or not finite, or samplesPerAxis outside
     /// 1..kMaxSamplesPerAxis; Cancelled once `stop` is requested (within a few hundred rays per thread).
     [[nodiscard]] std::vector<float> sunVisibility(const std::vector<glm::vec3>& points,
-                                                   const std::vector<glm::vec3>& normals, const glm::vec3& l,
+                                                   const std::vector<glm::vec3>& normals, const TruthLight& light,
                                                    float angularDiameterRad, int samplesPerAxis, int threads = 0,
                                                    std::stop_token stop = {}) const;
 
@@ -113,12 +145,13 @@ public:
     /// `viewProj` (GL clip space; top row first): samplesPerAxis² primary rays on a stratified grid
     /// over the pixel's footprint, each from the near to the far plane; c = the fraction of the
     /// samples that hit a surface whose geometric normal faces the light and whose shadow ray
-    /// (occluded()) escapes. Samples that see nothing are left out; a pixel none of whose samples
+    /// (occluded()) escapes. Samples that see nothing, or that a positional light does not reach
+    /// (TruthLight::reaches), are left out; a pixel none of whose samples
     /// hits anything gets NaN. Memory stays ~1M samples whatever the size (traced in row bands).
     /// Throws std::invalid_argument for a non-positive size, samplesPerAxis outside
     /// 1..kMaxSamplesPerAxis or a zero or non-finite l. Throws Cancelled once `stop` is requested
     /// (within a few hundred rays per thread).
-    [[nodiscard]] std::vector<float> coverage(const glm::mat4& viewProj, int width, int height, const glm::vec3& l,
+    [[nodiscard]] std::vector<float> coverage(const glm::mat4& viewProj, int width, int height, const TruthLight& light,
                                               int samplesPerAxis, int threads = 0, std::stop_token stop = {}) const;
 
     /// The self-intersection offset used for a receiver at p, in scene units:

@@ -21,8 +21,9 @@ constexpr size_t kPixelsPerStopCheck = 4096;
 void addSoftTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, std::stop_token stop) {
     in.sunVisibility.clear();
     in.softTruth.reset();
+    const TruthLight light = truthLight(plan);
     const float diameterDeg = plan.settings.light.angularDiameterDeg;
-    if (!(diameterDeg > 0.f)) return;
+    if (light.positional() ? !(light.radius > 0.f) : !(diameterDeg > 0.f)) return;
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const double theta = double(diameterDeg) * std::numbers::pi / 180.0;
     // Non-receivers get a zero normal: not traced, then NaN.
@@ -30,14 +31,15 @@ void addSoftTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTr
     for (size_t i = 0; i < normals.size(); ++i)
         if (!in.receiver[i]) normals[i] = glm::vec3(0.f);
     in.sunVisibility =
-        truth.sunVisibility(in.positions, normals, plan.l, float(theta), GroundTruth::kSunSamplesPerAxis, 0, stop);
+        truth.sunVisibility(in.positions, normals, light, float(theta), GroundTruth::kSunSamplesPerAxis, 0, stop);
     for (size_t i = 0; i < in.sunVisibility.size(); ++i)
         if (!in.receiver[i]) in.sunVisibility[i] = nan;
     SoftTruthStats soft;
     soft.meanAbs = softMeanAbs(in.shadow, in.sunVisibility, in.receiver);
-    soft.angularDiameterDeg = diameterDeg;
+    soft.angularDiameterDeg = light.positional() ? 0.f : diameterDeg; // a positional emitter's varies per pixel
     soft.raysPerPixel = GroundTruth::kSunSamplesPerAxis * GroundTruth::kSunSamplesPerAxis;
-    if (const auto& edge = truth.occluderEdge()) {
+    // The penumbra-width model is the sun's (parallel rays of one angular size).
+    if (const auto& edge = truth.occluderEdge(); edge && !light.positional()) {
         throwIfStopped(stop);
         soft.penumbraWidthError = penumbraWidth(in.positions, in.shadow, in.receiver, plan.l, *edge, theta).error;
         soft.penumbraWidthErrorTruth =
@@ -65,6 +67,13 @@ Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, c
         in.normals[i] = glm::vec3(frame.normals[i]);
         in.receiver[i] = in.aux[i].z >= 0.f && frame.normals[i].w > 0.f;
     }
+    if (plan.light.positional()) {
+        // Where the light does not reach (outside a spot's cone, beyond the range) it has no shadow
+        // to judge: the scene's light decides, not the settings.
+        const TruthLight light = truthLight(plan);
+        for (size_t i = 0; i < n; ++i)
+            if (in.receiver[i] && !light.reaches(in.positions[i])) in.receiver[i] = 0;
+    }
     in.width = frame.width;
     in.height = n && in.width ? int(n / size_t(in.width)) : 0;
     throwIfStopped(stop);
@@ -77,10 +86,6 @@ Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, c
         throwIfStopped(stop);
         in.utilization.push_back(texelUtilization(in.aux, in.receiver, s, in.resolutions[s]));
     }
-    if (truth && plan.light.positional())
-        throw std::invalid_argument(
-            std::string("ground truth traces directional lights only; the inspected light is a ") +
-            scene::lightTypeName(plan.light.type) + " light (docs/design.md §3.10)");
     if (truth) addTruth(in, plan, *truth, truthSamples, stop);
     return in;
 }
@@ -92,17 +97,22 @@ float pixelFootprint(const shadow::ShadowPlan& plan, const glm::vec3& p, int hei
     return std::isfinite(size) && size > 0.f ? size : std::numeric_limits<float>::quiet_NaN();
 }
 
+TruthLight truthLight(const shadow::ShadowPlan& plan) noexcept {
+    return plan.light.positional() ? TruthLight(plan.light) : TruthLight(plan.l);
+}
+
 std::vector<uint8_t> truthOcclusion(const Inspection& in, const std::vector<glm::vec3>& geometricNormals,
-                                    const glm::vec3& l, const GroundTruth& truth, std::stop_token stop) {
-    std::vector<uint8_t> occluded = truth.occluded(in.positions, geometricNormals, l, 0, stop);
+                                    const TruthLight& light, const GroundTruth& truth, std::stop_token stop) {
+    std::vector<uint8_t> occluded = truth.occluded(in.positions, geometricNormals, light, 0, stop);
     for (size_t i = 0; i < occluded.size(); ++i)
         if (!in.receiver[i]) occluded[i] = 0;
     return occluded;
 }
 
-std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
+std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const TruthLight& light,
                                     const GroundTruth& truth, std::stop_token stop) {
-    return truthOcclusion(in, truth.surfaceNormals(eye, in.positions, in.normals, 0, nullptr, stop), l, truth, stop);
+    return truthOcclusion(in, truth.surfaceNormals(eye, in.positions, in.normals, 0, nullptr, stop), light, truth,
+                          stop);
 }
 
 namespace {
@@ -115,7 +125,7 @@ std::vector<float> sampleCoverage(Inspection& in, const shadow::ShadowPlan& plan
     in.coverage.assign(in.positions.size(), 1.f);
     if (N <= 1) return {};
     std::vector<float> sampleTruth =
-        truth.coverage(plan.eyeProj * plan.eyeView, in.width * N, in.height * N, plan.l, 1, 0, stop);
+        truth.coverage(plan.eyeProj * plan.eyeView, in.width * N, in.height * N, truthLight(plan), 1, 0, stop);
     for (int y = 0; y < in.height; ++y)
         for (int x = 0; x < in.width; ++x) {
             double sum = 0;
@@ -144,7 +154,7 @@ struct PixelFacts {
 PixelFacts pixelFacts(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth& truth, int N,
                       std::stop_token stop) {
     const size_t n = in.positions.size();
-    const glm::vec3 toLight = -glm::normalize(plan.l);
+    const TruthLight light = truthLight(plan);
     PixelFacts f;
     in.ambiguity.assign(n, uint8_t(Ambiguity::None));
     f.texelsPerPixel.assign(n, std::numeric_limits<float>::quiet_NaN());
@@ -159,6 +169,7 @@ PixelFacts pixelFacts(Inspection& in, const shadow::ShadowPlan& plan, const Grou
         if (!in.receiver[i]) continue;
         f.singular[i] = std::isfinite(in.m[i]) && !(in.m[i] < kSingularM);
         f.split[i] = int(std::lround(in.aux[i].z));
+        const glm::vec3 toLight = light.toLight(in.positions[i]);
         const float geometric = glm::dot(in.geometricNormals[i], toLight);
         const float shading = glm::dot(in.normals[i], toLight);
         if (std::abs(geometric) < 0.1f) in.ambiguity[i] = uint8_t(Ambiguity::Terminator);
@@ -170,7 +181,7 @@ PixelFacts pixelFacts(Inspection& in, const shadow::ShadowPlan& plan, const Grou
     }
     // The occluder's distance where it lies within the peter-panning reach; within one footprint,
     // a contact no map can be judged on.
-    f.gap = truth.occluderDistance(in.positions, in.geometricNormals, plan.l, reach, 0, stop);
+    f.gap = truth.occluderDistance(in.positions, in.geometricNormals, light, reach, 0, stop);
     for (size_t i = 0; i < n; ++i)
         if (f.gap[i] <= footprint[i]) in.ambiguity[i] = uint8_t(Ambiguity::Contact);
     return f;
@@ -187,14 +198,14 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
     const int N = samplesPerAxis;
     in.truthSamples = N;
     in.geometricNormals = truth.surfaceNormals(plan.eye, in.positions, in.normals, 0, &in.mesh, stop);
-    in.occluded = truthOcclusion(in, in.geometricNormals, plan.l, truth, stop);
+    in.occluded = truthOcclusion(in, in.geometricNormals, truthLight(plan), truth, stop);
     const std::vector<float> sampleTruth = sampleCoverage(in, plan, truth, N, stop);
     if (in.sampleShadow.size() != sampleTruth.size()) in.sampleShadow.clear(); // not drawn: s against c
     // Where the edges lie, from kEdgeSamplesPerAxis² samples whatever N (truth_classes.h, edgeCoverage).
     std::vector<float> edgeCoverage;
     if (N < kEdgeSamplesPerAxis)
-        edgeCoverage =
-            truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, plan.l, kEdgeSamplesPerAxis, 0, stop);
+        edgeCoverage = truth.coverage(plan.eyeProj * plan.eyeView, in.width, in.height, truthLight(plan),
+                                      kEdgeSamplesPerAxis, 0, stop);
     const PixelFacts facts = pixelFacts(in, plan, truth, N, stop);
     in.truth = truthStats(in.shadow, *in.occluded, in.receiver);
     addSoftTruth(in, plan, truth, stop);
@@ -224,7 +235,7 @@ void addTruth(Inspection& in, const shadow::ShadowPlan& plan, const GroundTruth&
 }
 
 std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
-                                    const glm::vec3& l) {
+                                    const TruthLight& light) {
     if (in.classes.size() != in.shadow.size() || in.geometricNormals.size() != in.shadow.size())
         throw std::invalid_argument("the per-pixel layers need ground truth (--truth)");
     const size_t n = in.shadow.size();
@@ -247,7 +258,6 @@ std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, 
     for (auto& layer : layers) layer.values.assign(n, nan);
     enum { ViewDepth, Split, NormalX, NormalY, NormalZ, NDotL, M, S, Coverage, Class, Visibility }; // the order above
     const bool soft = in.sunVisibility.size() == n;
-    const glm::vec3 toLight = -glm::normalize(l);
     for (size_t i = 0; i < n; ++i) {
         const bool seen = in.aux[i].z >= 0.f;
         layers[Split].values[i] = seen ? std::round(in.aux[i].z) : -1.f;
@@ -258,7 +268,7 @@ std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, 
         layers[NormalX].values[i] = g.x;
         layers[NormalY].values[i] = g.y;
         layers[NormalZ].values[i] = g.z;
-        layers[NDotL].values[i] = glm::dot(g, toLight);
+        layers[NDotL].values[i] = glm::dot(g, light.toLight(in.positions[i]));
         layers[M].values[i] = in.m[i] > 0.f && in.m[i] < kSingularM ? in.m[i] : nan;
         layers[S].values[i] = in.shadow[i];
         layers[Coverage].values[i] = in.receiver[i] ? in.coverage[i] : nan;

@@ -3,6 +3,7 @@
 // factor, map coordinates, aliasing error, receivers, optional ray-traced truth, and the
 // statistics over them. Built from the renderer's read-backs (renderer/inspection.h).
 #include "geometry/analysis/cancelled.h"
+#include "geometry/analysis/ground_truth.h"
 #include "geometry/analysis/metrics.h"
 #include "geometry/analysis/truth_classes.h"
 #include "geometry/shadow/shadow_plan.h"
@@ -97,7 +98,8 @@ struct FrameReadback {
 ///   light), or a contact (an occluder within one eye-pixel footprint, pixelFootprint(), along the light);
 /// - the peter-panning reach: the occluder distance where it is under kPeterPanningReach footprints;
 /// - the TruthClasses overall, per split and per scene mesh;
-/// - with plan.settings.light.angularDiameterDeg > 0, the soft truth: sunVisibility over
+/// - with plan.settings.light.angularDiameterDeg > 0 (a positional light: its radius > 0), the soft
+///   truth: sunVisibility over
 ///   GroundTruth::kSunSamplesPerAxis² rays per receiver (geometric normals), softTruth's
 ///   soft_mean_abs and, where the truth's scene has an occluder edge, the penumbra width errors.
 /// Throws std::invalid_argument for samplesPerAxis outside 1..GroundTruth::kMaxSamplesPerAxis, and
@@ -122,12 +124,16 @@ inline constexpr int kEdgeSamplesPerAxis = 4;
 /// docs/design.md §4 "Ground truth" says, not with the renderer's interpolated shading normal,
 /// which on smooth-shaded facets would make the verdict at the terminator stripe with the facets.
 /// Throws Cancelled once `stop` is requested.
-[[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const glm::vec3& l,
+[[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const glm::vec3& eye, const TruthLight& light,
                                                   const GroundTruth& truth, std::stop_token stop = {});
 /// The same with the geometric normals already found (GroundTruth::surfaceNormals).
 [[nodiscard]] std::vector<uint8_t> truthOcclusion(const Inspection& in, const std::vector<glm::vec3>& geometricNormals,
-                                                  const glm::vec3& l, const GroundTruth& truth,
+                                                  const TruthLight& light, const GroundTruth& truth,
                                                   std::stop_token stop = {});
+
+/// The light `plan` shadows as the truth traces it: plan.l for a directional light, else plan.light
+/// (its position, cone, range and radius; docs/design.md §3.10 "Truth per light").
+[[nodiscard]] TruthLight truthLight(const shadow::ShadowPlan& plan) noexcept;
 
 /// One per-pixel quantity for offline analysis (`render --views pixels`): written as
 /// pixels_<name>.pfm, one float per pixel, top row first in memory (PFM stores bottom-up).
@@ -144,7 +150,7 @@ struct PixelLayer {
 /// geometry hold NaN (split: −1); m at the singular cap is NaN. `eye` and unit `viewDir` place the
 /// camera for the view depth. Throws std::invalid_argument without truth.
 [[nodiscard]] std::vector<PixelLayer> pixelLayers(const Inspection& in, const glm::vec3& eye, const glm::vec3& viewDir,
-                                                  const glm::vec3& l);
+                                                  const TruthLight& light);
 
 /// metrics.json fields: aliasing{mean,p50,p95,max,undersampled,singular}; with truth, truth{false_shadow,
 /// false_lit, mean_abs, samples_per_pixel, the classes}, splits[i].truth and meshes[name].truth; with

@@ -68,7 +68,7 @@ public:
     explicit Reader(std::string file) : file_(std::move(file)) {}
 
     [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
-        throw std::runtime_error(file_ + ": " + (key.empty() ? "" : key + ": ") + problem);
+        throw SceneFileError(file_ + ": " + (key.empty() ? "" : key + ": ") + problem);
     }
 
     /// `v` must be an object whose members are all in `allowed`.
@@ -428,8 +428,9 @@ void readViews(const Reader& r, const json& j, SceneFile& f) {
 }
 
 ScenePath readPath(const Reader& r, const json& v, const std::string& key, const scene::Scene& scene) {
-    r.checkObject(v, key, {"camera", "light"});
-    if (!v.contains("camera") && !v.contains("light")) r.fail(key, "expected \"camera\" or \"light\" (or both)");
+    r.checkObject(v, key, {"camera", "light", "light_position", "light_index"});
+    if (!v.contains("camera") && !v.contains("light") && !v.contains("light_position"))
+        r.fail(key, "expected \"camera\", \"light\" or \"light_position\"");
     ScenePath path;
     if (v.contains("camera")) {
         const std::string k = member(key, "camera");
@@ -444,6 +445,19 @@ ScenePath readPath(const Reader& r, const json& v, const std::string& key, const
         if (!list.is_array() || list.empty())
             r.fail(k, "expected a non-empty array of light directions, got " + describeJsonValue(list));
         for (size_t i = 0; i < list.size(); ++i) path.lights.push_back(r.direction(list[i], element(k, i)));
+    }
+    if (v.contains("light_index")) {
+        const uint32_t last = uint32_t(scene.lights.size() - 1);
+        path.lightIndex = r.unsignedInt(v["light_index"], member(key, "light_index"), 0, last);
+    }
+    if (v.contains("light_position")) {
+        const std::string k = member(key, "light_position");
+        const json& list = v["light_position"];
+        if (!list.is_array() || list.empty())
+            r.fail(k, "expected a non-empty array of light positions, got " + describeJsonValue(list));
+        if (!scene.lights[path.lightIndex].positional())
+            r.fail(k, "light " + std::to_string(path.lightIndex) + " is directional: it has no position to move");
+        for (size_t i = 0; i < list.size(); ++i) path.lightPositions.push_back(r.vec3(list[i], element(k, i)));
     }
     return path;
 }

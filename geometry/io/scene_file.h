@@ -28,6 +28,7 @@
 
 #include <cstddef>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,16 +39,26 @@ inline constexpr std::size_t kMaxSceneFileBytes = 1u << 20;
 /// Objects and arrays may nest at most this deep (the deepest legal member uses 6 levels).
 inline constexpr int kMaxSceneFileDepth = 16;
 
+/// What is wrong in a scene file's content (a key, a value), "PATH: KEY.PATH: problem": bad input,
+/// so the command line exits 2 for it as for a bad argument (a missing or unreadable file stays a
+/// plain std::runtime_error).
+struct SceneFileError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 /// A named camera + light pair, for benchmarks and sweeps that must see the same thing every run.
 struct CanonicalView {
     scene::Camera camera;
     scene::Light light;
 };
 
-/// A sequence of cameras or of light directions (or both), for animated sweeps.
+/// A sequence of cameras or of light keys (or both), for animated sweeps: `lights` (directions) and
+/// `lightPositions` move the scene's light `lightIndex` (docs/design.md §3.10).
 struct ScenePath {
     std::vector<scene::Camera> cameras;
     std::vector<glm::vec3> lights;
+    std::vector<glm::vec3> lightPositions;
+    size_t lightIndex = 0;
 };
 
 struct SceneFile {

@@ -56,4 +56,17 @@ glm::vec3 lightAlongPath(const std::vector<glm::vec3>& keys, double t) noexcept 
     return lightAtViewAngle(a, b, u * lightViewAngleDeg(a, b));
 }
 
+glm::vec3 positionAlongPath(const std::vector<glm::vec3>& keys, double t) noexcept {
+    if (keys.empty()) return glm::vec3(0.f);
+    if (keys.size() == 1) return keys.front();
+    const auto [i, u] = segment(keys.size(), t);
+    return glm::mix(keys[i], keys[i + 1], u);
+}
+
+Light lightAlongPath(Light light, const LightPathKeys& keys, double t) noexcept {
+    if (!keys.directions.empty()) light.direction = lightAlongPath(keys.directions, t);
+    if (!keys.positions.empty()) light.position = positionAlongPath(keys.positions, t);
+    return light;
+}
+
 } // namespace geometry::scene

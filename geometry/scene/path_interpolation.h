@@ -21,4 +21,19 @@ namespace geometry::scene {
 /// One key: that key normalized. No keys or zero keys: (0, −1, 0).
 [[nodiscard]] glm::vec3 lightAlongPath(const std::vector<glm::vec3>& keys, double t) noexcept;
 
+/// The position at t: linearly between the two neighbouring keys. One key: that key. No keys: (0, 0, 0).
+[[nodiscard]] glm::vec3 positionAlongPath(const std::vector<glm::vec3>& keys, double t) noexcept;
+
+/// A path's keys for one light (docs/design.md §3.10): its direction and its position, each moved
+/// only where the path has keys for it.
+struct LightPathKeys {
+    std::vector<glm::vec3> directions;
+    std::vector<glm::vec3> positions;
+    [[nodiscard]] bool empty() const noexcept { return directions.empty() && positions.empty(); }
+};
+
+/// `light` at t along `keys`: lightAlongPath for the direction, positionAlongPath for the position;
+/// what has no keys stays as it is.
+[[nodiscard]] Light lightAlongPath(Light light, const LightPathKeys& keys, double t) noexcept;
+
 } // namespace geometry::scene
