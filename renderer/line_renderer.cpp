@@ -27,6 +27,7 @@ glm::vec4 LineRenderer::colour(geometry::shadow::OverlayKind kind) noexcept {
     case geometry::shadow::OverlayKind::FocusBody: return {0.2f, 0.95f, 0.3f, 1.f};
     case geometry::shadow::OverlayKind::WarpFrustum: return {0.2f, 0.8f, 1.f, 1.f};
     case geometry::shadow::OverlayKind::SampleBounds: return {1.f, 0.3f, 0.9f, 1.f};
+    case geometry::shadow::OverlayKind::LightVolume: return {1.f, 1.f, 0.55f, 1.f};
     case geometry::shadow::OverlayKind::Count: break;
     }
     return {1.f, 0.f, 1.f, 1.f};

@@ -1,6 +1,7 @@
 // Spot and point light plans (geometry/shadow/positional_plan.h, docs/design.md §3.10): every
 // receiver the camera sees within the light's reach, and every caster between it and the light,
 // lands in the map the eye pass reads for it; never NaN, wherever the light is.
+#include "geometry/shadow/overlays.h"
 #include "geometry/shadow/positional_plan.h"
 #include "geometry/shadow/shadow_plan.h"
 
@@ -176,4 +177,54 @@ TEST(PositionalPlan, LightOutOfRangeHasEmptyMaps) {
     ASSERT_EQ(plan.splits.size(), 6u);
     for (const auto& split : plan.splits) EXPECT_TRUE(split.empty());
     EXPECT_TRUE(finiteMatrix(plan.unwarpedViewProj));
+}
+
+// The light view's overlays show a positional light's volume: a spot's rim and apex lines lie on its
+// cone at the range, a point light's eight rays run along the cube's diagonals (where its faces
+// meet); a directional light has none.
+TEST(PositionalPlan, OverlaysDrawTheConeAndTheFaceBoundaries) {
+    Aabb S;
+    S.add({-5, 0, -5});
+    S.add({5, 2, 5});
+    Camera cam;
+    cam.eye = {0, 3, 12};
+    cam.target = {0, 0, 0};
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {1, 8, 0};
+    spot.direction = {0, -1, 0.2f};
+    spot.coneDeg = 50.f;
+    spot.range = 20.f;
+    const auto volume = [&](const Light& light) {
+        const ShadowPlan plan = planShadows(ShadowSettings{}, S, cam, light, Viewport{320, 200});
+        std::vector<OverlaySegment> segments;
+        for (const auto& s : warpedViewOverlays(plan, 0))
+            if (s.kind == OverlayKind::LightVolume) segments.push_back(s);
+        size_t unwarped = 0;
+        for (const auto& s : unwarpedViewOverlays(plan)) unwarped += s.kind == OverlayKind::LightVolume;
+        EXPECT_EQ(unwarped, segments.size());
+        return segments;
+    };
+    const auto cone = volume(spot);
+    ASSERT_EQ(cone.size(), size_t(kConeRimSegments + 4));
+    const float cosHalf = std::cos(glm::radians(25.f));
+    for (const auto& s : cone) {
+        EXPECT_FALSE(s.inMapNdc);
+        for (const glm::vec3& p : {s.a, s.b}) {
+            const glm::vec3 d = p - spot.position;
+            EXPECT_NEAR(glm::dot(glm::normalize(d), spot.l()), cosHalf, 1e-4f);
+        }
+        EXPECT_NEAR(glm::length(s.b - spot.position), spot.range, 1e-3f);
+    }
+    Light point = spot;
+    point.type = LightType::Point;
+    const auto faces = volume(point);
+    ASSERT_EQ(faces.size(), 8u);
+    for (const auto& s : faces) {
+        const glm::vec3 d = glm::abs(s.b - point.position);
+        EXPECT_NEAR(d.x, d.y, 1e-3f);
+        EXPECT_NEAR(d.y, d.z, 1e-3f);
+        EXPECT_NEAR(glm::length(s.b - point.position), point.range, 1e-3f);
+    }
+    EXPECT_TRUE(volume(Light{glm::vec3(0, -1, 0)}).empty());
 }

@@ -1,6 +1,7 @@
 #include "geometry/shadow/overlays.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace geometry::shadow {
 
@@ -39,6 +40,35 @@ void addBodyOutlines(std::vector<OverlaySegment>& out, const SplitPlan& s, const
     if (!s.sampleRegion.empty()) addOutline(out, outline(s.sampleRegion, viewProj), OverlayKind::SampleBounds);
 }
 
+/// A spot's cone (rim at the range, four apex lines) or a point light's eight cube diagonals.
+void addLightVolume(std::vector<OverlaySegment>& out, const scene::Light& light) {
+    if (!light.positional() || !(light.range > 0.f)) return;
+    const glm::vec3 p = light.position;
+    const float R = light.range;
+    if (light.type == scene::LightType::Point) {
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec3 d = glm::normalize(glm::vec3(i & 1 ? 1.f : -1.f, i & 2 ? 1.f : -1.f, i & 4 ? 1.f : -1.f));
+            out.push_back({p + kLightVolumeStart * R * d, p + R * d, OverlayKind::LightVolume, false});
+        }
+        return;
+    }
+    const glm::vec3 axis = light.l();
+    const glm::vec3 e1 =
+        glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+    const glm::vec3 e2 = glm::cross(axis, e1);
+    const float half = glm::radians(0.5f * light.coneDeg);
+    // The rim: where the cone's surface reaches the range (slant length R).
+    const auto rim = [&](int k) {
+        const float a = 6.28318530718f * float(k) / float(kConeRimSegments);
+        const glm::vec3 d = std::cos(half) * axis + std::sin(half) * (std::cos(a) * e1 + std::sin(a) * e2);
+        return d;
+    };
+    for (int k = 0; k < kConeRimSegments; ++k)
+        out.push_back({p + R * rim(k), p + R * rim(k + 1), OverlayKind::LightVolume, false});
+    for (int k = 0; k < kConeRimSegments; k += kConeRimSegments / 4)
+        out.push_back({p + kLightVolumeStart * R * rim(k), p + R * rim(k), OverlayKind::LightVolume, false});
+}
+
 } // namespace
 
 std::vector<glm::vec2> convexHull2D(std::vector<glm::vec2> p) {
@@ -75,6 +105,7 @@ std::vector<OverlaySegment> warpedViewOverlays(const ShadowPlan& plan, int split
         addBodyOutlines(out, s, s.lightViewProj);
         addBoxEdges(out, s.mapVolume, OverlayKind::WarpFrustum);
     }
+    addLightVolume(out, plan.light);
     return out;
 }
 
@@ -88,6 +119,7 @@ std::vector<OverlaySegment> unwarpedViewOverlays(const ShadowPlan& plan) {
         addBodyOutlines(out, s, plan.unwarpedViewProj);
         addBoxEdges(out, s.mapVolume, OverlayKind::WarpFrustum);
     }
+    addLightVolume(out, plan.light);
     return out;
 }
 
