@@ -250,14 +250,32 @@ protected:
         xdo({"mousemove", screenX(r.cx()), screenY(r.cy()), "click", "1"});
     }
 
+    /// Clicks a text field and waits until it takes the keys (as ctrlClick, up to 3 clicks).
+    void clickField(const std::string& id) {
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            click(id);
+            waitFrames(2);
+            if (currentMap().counter("text_input") == 1.0) return;
+        }
+        throw std::runtime_error("a click on " + id + " gave it no keyboard focus\n" + context());
+    }
+
     /// Ctrl+click: turns a slider into a text field. Ctrl stays down until a frame after the click:
     /// ImGui 1.86 reads the modifier from key events, and a release in the same frame would turn
-    /// this into a plain click (which sets the slider to the clicked position).
-    void ctrlClick(const std::string& id) {
-        const Rect r = widget(id);
-        xdo({"mousemove", screenX(r.cx()), screenY(r.cy()), "keydown", "ctrl", "click", "1"});
-        waitFrames(1);
-        xdo({"keyup", "ctrl"});
+    /// this into a plain click (which sets the slider to the clicked position). Typed keys must not
+    /// reach the app before the field is open (WASD would fly the camera), so this waits for it,
+    /// clicking again (up to 3 times) where a loaded machine let the click land on a stale position.
+    /// `greyed`: the widget takes no input, one click and no field expected.
+    void ctrlClick(const std::string& id, bool greyed = false) {
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            const Rect r = widget(id);
+            xdo({"mousemove", screenX(r.cx()), screenY(r.cy()), "keydown", "ctrl", "click", "1"});
+            waitFrames(1);
+            xdo({"keyup", "ctrl"});
+            waitFrames(1);
+            if (greyed || currentMap().counter("text_input") == 1.0) return;
+        }
+        throw std::runtime_error("ctrl+click on " + id + " opened no text field\n" + context());
     }
 
     /// Holds a key (or chord such as ctrl+a) until a frame has seen it: ImGui 1.86 misses a key
@@ -278,8 +296,12 @@ protected:
             return r.y >= 0 && r.y + r.h <= m.height * 0.8;
         };
         const auto scroll = [&](const char* button) {
+            // The pointer reaches the panel a frame before the wheel turns: the dashboard routes the
+            // wheel by where the pointer was (over the eye view it would dolly the camera).
+            xdo({"mousemove", screenX(12), screenY(currentMap().height * 0.5)});
+            waitFrames(1);
             const WidgetMap before = currentMap();
-            xdo({"mousemove", screenX(12), screenY(before.height * 0.5), "click", button});
+            xdo({"click", button});
             // The map changes when the panel scrolls; at either end nothing changes, so also stop once
             // a frame has seen the wheel (as in waitFrames).
             const long seen = before.frame + 2;
@@ -416,7 +438,7 @@ TEST_F(GuiE2E, DrivenSettingsChangeScreenshotsAsPredicted) {
 
     // Under hw2x2 the kernel does nothing: its slider is greyed and takes no typed value.
     scrollIntoView("filter.kernel");
-    ctrlClick("filter.kernel");
+    ctrlClick("filter.kernel", /*greyed=*/true);
     typeText("5");
     pressKey("Return");
     chooseInCombo("filter.type", "pcf");
@@ -506,7 +528,7 @@ TEST_F(GuiE2E, SurvivesAbuse) {
     // A scene file that does not exist: the previous scene stays and keeps rendering.
     const std::string missing = (tmp_ / "no_such_scene.obj").string();
     scrollIntoView("scene.file");
-    click("scene.file");
+    clickField("scene.file");
     pressKey("ctrl+a");
     typeText(missing);
     click("scene.load");

@@ -163,6 +163,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     widgetMapCounter("passes.inspections", double(counts_.inspections));
     widgetMapCounter("coarse", coarse() ? 1.0 : 0.0);
     widgetMapCounter("statistics_pending", sides_[0].job || sides_[1].job ? 1.0 : 0.0);
+    widgetMapCounter("text_input", io.WantTextInput ? 1.0 : 0.0); // keys go to a field, not to flying
     widgetMapEndFrame();
     cpuFrameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
