@@ -1,7 +1,8 @@
 // The dashboard draws only what changed (issue 18): hover and idle frames draw no pass, a drag
 // draws coarse frames and one full frame when it pauses, eye-side settings reuse the shadow maps,
-// Reset camera restores the view, and a near/far edit re-inspects. Headless (OSMesa), with the
-// pointer driven through HeadlessDashboard::step.
+// Reset camera restores the view, and a near/far edit re-inspects. The light list (issue 29): added,
+// retyped and inspected lights are drawn and inspected, bad edits are refused. Headless (OSMesa),
+// with the pointer driven through HeadlessDashboard::step.
 #include "app/dashboard_setup.h"
 #include "dashboard_test_util.h"
 #include "renderer/context.h"
@@ -9,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace {
 
@@ -157,6 +160,122 @@ TEST_F(DashboardInteraction, ANearFarEditReinspects) {
     EXPECT_GT(differing(before, after, dash().rects().heatmap), 1000u) << "the heatmap follows the new n";
     EXPECT_FALSE(dash().setNearFar(5.f, 1.f));
     EXPECT_NE(dash().status().find("near/far refused"), std::string::npos) << dash().status();
+}
+
+// ---- The light list (issue 29) ---------------------------------------------------------------
+
+uint64_t pixelSum(const geometry::analysis::Image& img) {
+    uint64_t sum = 0;
+    for (size_t i = 0; i < img.rgba.size(); ++i)
+        if (i % 4 != 3) sum += img.rgba[i];
+    return sum;
+}
+
+TEST_F(DashboardInteraction, AnAddedSpotLightIsDrawnAndInspected) {
+    const geometry::analysis::Image before = d_->render(1);
+    dash().state().views.lightGizmo = false;
+    EXPECT_EQ(differing(before, d_->render(1), dash().rects().eye), 0u) << "no gizmo for the sun alone";
+    dash().state().views.lightGizmo = true;
+    const uint64_t eyeBefore = pixelSum(dash().eyeImage(0));
+    ASSERT_EQ(dash().lights().size(), 1u);
+    const uint64_t inspections = dash().passCounts().inspections;
+    ASSERT_TRUE(dash().addLight()) << dash().status();
+    ASSERT_EQ(dash().lights().size(), 2u);
+    EXPECT_EQ(dash().inspectedLight(), 1u) << "Add inspects the new light";
+    const geometry::scene::Light spot = dash().lights()[1]; // lights() returns a copy
+    EXPECT_EQ(spot.type, geometry::scene::LightType::Spot);
+    EXPECT_GT(spot.position.y, dash().scene().file.scene.bounds().hi.y) << "above the scene";
+    const geometry::analysis::Image after = d_->render(1);
+    EXPECT_NE(pixelSum(dash().eyeImage(0)), eyeBefore) << "the spot light adds its light to the eye view";
+    EXPECT_EQ(dash().lightViewMaps(), 1) << "a spot light has one map";
+    EXPECT_EQ(dash().plan(0).light.type, geometry::scene::LightType::Spot) << "the plan kept is the inspected light's";
+    EXPECT_GT(differing(before, after, dash().rects().light), 1000u) << "the light view shows the spot light's map";
+    EXPECT_GT(dash().passCounts().inspections, inspections) << "the statistics follow the inspected light";
+    ASSERT_NE(dash().inspection(0), nullptr);
+    // The gizmo marks the lights over the eye view (drawn by ImGui, not into the eye image).
+    dash().state().views.lightGizmo = false;
+    const geometry::analysis::Image bare = d_->render(1);
+    EXPECT_GT(differing(after, bare, dash().rects().eye), 20u);
+    EXPECT_EQ(differing(after, bare, dash().rects().light), 0u);
+}
+
+TEST_F(DashboardInteraction, APointLightOffersSixFacesAndSwitchingBackFollows) {
+    const int directionalMaps = dash().lightViewMaps();
+    ASSERT_TRUE(dash().addLight());
+    geometry::scene::Light point = dash().lights()[1];
+    point.type = geometry::scene::LightType::Point;
+    ASSERT_TRUE(dash().setLight(1, point)) << dash().status();
+    (void)d_->render(1);
+    EXPECT_EQ(dash().lightViewMaps(), 6) << "six cube faces";
+    EXPECT_EQ(dash().plan(0).splits.size(), 6u);
+    dash().state().views.lightSplit = 4;
+    const geometry::analysis::Image face4 = d_->render(1);
+    dash().state().views.lightSplit = 40; // beyond the faces: clamped to the last
+    const geometry::analysis::Image face40 = d_->render(1);
+    EXPECT_TRUE(renderer::takeGlErrors().empty());
+    dash().state().views.lightSplit = 5;
+    const geometry::analysis::Image face5 = d_->render(1);
+    EXPECT_EQ(differing(face40, face5, dash().rects().light), 0u) << "the selector clamps to the light's faces";
+    EXPECT_GT(differing(face4, face5, dash().rects().light), 100u);
+    // Back to the directional light: its splits, its statistics.
+    dash().state().views.lightSplit = 0;
+    const uint64_t inspections = dash().passCounts().inspections;
+    ASSERT_TRUE(dash().inspectLight(0));
+    (void)d_->render(1);
+    EXPECT_EQ(dash().plan(0).light.type, geometry::scene::LightType::Directional);
+    EXPECT_EQ(dash().lightViewMaps(), directionalMaps);
+    EXPECT_EQ(dash().passCounts().inspections, inspections + 1) << "switching the inspected light re-inspects";
+}
+
+TEST_F(DashboardInteraction, TheSunAnglesEditTheInspectedLight) {
+    ASSERT_TRUE(dash().addLight());
+    const std::vector<geometry::scene::Light> before = dash().lights();
+    dash().state().sun.azimuthDeg += 30.f;
+    dash().state().sun.elevationDeg = 60.f;
+    (void)d_->render(1);
+    const std::vector<geometry::scene::Light> after = dash().lights();
+    EXPECT_TRUE(after[0] == before[0]) << "light 0 is not inspected";
+    EXPECT_FALSE(after[1].direction == before[1].direction) << "the spot light's axis turned";
+    EXPECT_TRUE(dash().scene().file.scene.lights == after) << "the scene holds the lights drawn";
+    dash().resetLights();
+    EXPECT_EQ(dash().lights().size(), 1u) << "back to the scene's own light";
+    EXPECT_GT(glm::dot(dash().lights()[0].l(), before[0].l()), 0.9999f) << "the scene's sun";
+}
+
+TEST_F(DashboardInteraction, InvalidLightEditsAreRefusedAndChangeNothing) {
+    const auto refused = [this](bool ok, const std::vector<geometry::scene::Light>& before, const char* what) {
+        EXPECT_FALSE(ok) << what;
+        EXPECT_TRUE(dash().lights() == before) << what;
+        EXPECT_NE(dash().status().find("refused"), std::string::npos) << what << ": " << dash().status();
+        dash().setStatus("");
+    };
+    refused(dash().removeLight(0), dash().lights(), "removing the only light");
+    ASSERT_TRUE(dash().addLight());
+    const geometry::scene::Light spot = dash().lights()[1];
+    for (float cone : {0.f, 180.f, -5.f, std::numeric_limits<float>::quiet_NaN()}) {
+        geometry::scene::Light l = spot;
+        l.coneDeg = cone;
+        refused(dash().setLight(1, l), dash().lights(), ("cone " + std::to_string(cone)).c_str());
+    }
+    geometry::scene::Light l = spot;
+    l.position.x = std::numeric_limits<float>::quiet_NaN();
+    refused(dash().setLight(1, l), dash().lights(), "NaN position");
+    l = spot;
+    l.range = 0.f;
+    refused(dash().setLight(1, l), dash().lights(), "range 0");
+    l = spot;
+    l.direction = glm::vec3(0.f);
+    refused(dash().setLight(1, l), dash().lights(), "zero direction");
+    while (dash().lights().size() < geometry::scene::kMaxLights) ASSERT_TRUE(dash().addLight());
+    refused(dash().addLight(), dash().lights(), "a 9th light");
+    // The refusals left a drawable list: it still renders, every light.
+    (void)d_->render(1);
+    EXPECT_EQ(dash().scene().file.scene.lights.size(), geometry::scene::kMaxLights);
+    EXPECT_TRUE(renderer::takeGlErrors().empty());
+    // Removing works down to one light, the inspected index following.
+    while (dash().lights().size() > 1) ASSERT_TRUE(dash().removeLight(dash().lights().size() - 1));
+    EXPECT_EQ(dash().inspectedLight(), 0u);
+    refused(dash().removeLight(0), dash().lights(), "removing the last light");
 }
 
 } // namespace

@@ -1,9 +1,15 @@
-// The dashboard's pure parts: layout, image zoom/pan, camera rig, config file, control groups.
+// The dashboard's pure parts: layout, image zoom/pan, camera rig, config file, control groups, the
+// light list's checks and the light gizmo's projection.
+//
+// Index: layout · image zoom/pan · camera rig · config file · control groups · drawing only what
+// changed (issue 18) · the light list and its gizmo (issue 29)
 #include "geometry/shadow/settings.h"
 #include "ui/dashboard.h"
 #include "ui/dashboard_config.h"
 #include "ui/dashboard_layout.h"
 #include "ui/image_view.h"
+#include "ui/light_gizmo.h"
+#include "ui/light_list.h"
 #include "ui/orbit_camera.h"
 #include "ui/pass_inputs.h"
 #include "ui/progressive.h"
@@ -308,4 +314,198 @@ TEST(PassInputs, EveryInputTheViewsDependOnCounts) {
     EXPECT_FALSE(a == b);
     ui::InspectionInputs i{a, 0}, j{a, 2};
     EXPECT_FALSE(i == j) << "truth samples re-inspect without redrawing";
+}
+
+TEST(PassInputs, EveryLightCounts) {
+    ui::PassInputs a;
+    a.lights = {geometry::scene::Light{}};
+    ui::PassInputs b = a;
+    b.lights.push_back(ui::defaultSpotLight({}));
+    EXPECT_FALSE(a == b) << "an added light redraws";
+    b = a;
+    b.lights[0].radius = 1.f;
+    EXPECT_FALSE(a == b);
+    b = a;
+    b.inspectedLight = 1;
+    EXPECT_FALSE(a == b) << "switching the inspected light redraws and re-inspects";
+}
+
+// ---- The light list (issue 29) ---------------------------------------------------------------
+
+TEST(LightList, RefusesWhatSceneFilesRefuse) {
+    using geometry::scene::Light;
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    Light spot = defaultSpotLight({});
+    EXPECT_FALSE(lightProblem(spot));
+    EXPECT_FALSE(lightProblem(Light{}));
+    const auto with = [&](auto edit) {
+        Light l = spot;
+        edit(l);
+        return lightProblem(l).has_value();
+    };
+    EXPECT_TRUE(with([](Light& l) { l.coneDeg = 0.f; }));
+    EXPECT_TRUE(with([](Light& l) { l.coneDeg = 180.f; }));
+    EXPECT_FALSE(with([](Light& l) { l.coneDeg = 179.9f; }));
+    EXPECT_TRUE(with([&](Light& l) { l.coneDeg = nan; }));
+    EXPECT_TRUE(with([&](Light& l) { l.position.y = nan; }));
+    EXPECT_TRUE(with([&](Light& l) { l.position.x = inf; }));
+    EXPECT_TRUE(with([&](Light& l) { l.direction.z = nan; }));
+    EXPECT_TRUE(with([](Light& l) { l.direction = glm::vec3(0.f); }));
+    EXPECT_TRUE(with([](Light& l) { l.range = 0.f; }));
+    EXPECT_TRUE(with([&](Light& l) { l.range = inf; }));
+    EXPECT_TRUE(with([](Light& l) { l.radius = -0.1f; }));
+    EXPECT_FALSE(with([](Light& l) { l.radius = 0.f; }));
+    EXPECT_TRUE(lightListProblem({}));
+    EXPECT_FALSE(lightListProblem(std::vector<Light>(geometry::scene::kMaxLights)));
+    EXPECT_TRUE(lightListProblem(std::vector<Light>(geometry::scene::kMaxLights + 1)));
+    std::vector<Light> list(3);
+    list[2].range = -1.f;
+    const auto problem = lightListProblem(list);
+    ASSERT_TRUE(problem);
+    EXPECT_NE(problem->find("light 2"), std::string::npos) << *problem;
+}
+
+TEST(LightList, AddedSpotLightLooksDownOnTheSceneAndReachesAllOfIt) {
+    geometry::scene::Aabb S;
+    S.add(glm::vec3(-10.f, 0.f, -20.f));
+    S.add(glm::vec3(30.f, 5.f, 20.f));
+    const geometry::scene::Light l = defaultSpotLight(S);
+    EXPECT_EQ(l.type, geometry::scene::LightType::Spot);
+    EXPECT_FLOAT_EQ(l.position.x, 10.f);
+    EXPECT_FLOAT_EQ(l.position.z, 0.f);
+    EXPECT_GT(l.position.y, 5.f);
+    EXPECT_EQ(l.l(), glm::vec3(0.f, -1.f, 0.f));
+    for (const glm::vec3 corner : {S.lo, S.hi, glm::vec3(S.lo.x, S.lo.y, S.hi.z), glm::vec3(S.hi.x, S.lo.y, S.lo.z)})
+        EXPECT_LE(glm::length(corner - l.position), l.range);
+    EXPECT_FALSE(lightProblem(l));
+}
+
+TEST(LightGizmo, ProjectsAKnownPointToItsPixel) {
+    // Eye on +z looking at the origin, 90° vertical field, a 200 × 100 image (aspect 2): at distance
+    // 10 the image spans y ∈ [−10, 10] and x ∈ [−20, 20]. (10, 5, 0) is at ndc (0.5, 0.5): pixel
+    // x = (0.5 + 1)/2 · 200 = 150, y = (1 − 0.5)/2 · 100 = 25 (y down).
+    geometry::scene::Camera c;
+    c.eye = {0.f, 0.f, 10.f};
+    c.target = {0.f, 0.f, 0.f};
+    c.up = {0.f, 1.f, 0.f};
+    c.fovYDeg = 90.f;
+    c.near = 0.1f;
+    c.far = 100.f;
+    const glm::vec2 size{200.f, 100.f};
+    const auto centre = projectToImage(c, size, {0.f, 0.f, 0.f});
+    ASSERT_TRUE(centre);
+    EXPECT_NEAR(centre->x, 100.f, 1e-3f);
+    EXPECT_NEAR(centre->y, 50.f, 1e-3f);
+    const auto p = projectToImage(c, size, {10.f, 5.f, 0.f});
+    ASSERT_TRUE(p);
+    EXPECT_NEAR(p->x, 150.f, 1e-3f);
+    EXPECT_NEAR(p->y, 25.f, 1e-3f);
+    // Twice as far, half as far from the centre: (10, 5, −10) at distance 20 → (125, 37.5).
+    const auto q = projectToImage(c, size, {10.f, 5.f, -10.f});
+    ASSERT_TRUE(q);
+    EXPECT_NEAR(q->x, 125.f, 1e-3f);
+    EXPECT_NEAR(q->y, 37.5f, 1e-3f);
+    EXPECT_FALSE(projectToImage(c, size, {0.f, 0.f, 20.f})) << "behind the eye";
+    EXPECT_FALSE(projectToImage(c, {0.f, 0.f}, {0.f, 0.f, 0.f})) << "no image";
+
+    // The marks: a spot light at (10, 5, 0) looking down (image +y), a point light, a directional
+    // light from the view centre along +x (image +x), one behind the eye.
+    std::vector<geometry::scene::Light> lights(4);
+    lights[0].type = geometry::scene::LightType::Spot;
+    lights[0].position = {10.f, 5.f, 0.f};
+    lights[0].direction = {0.f, -1.f, 0.f};
+    lights[1].type = geometry::scene::LightType::Point;
+    lights[1].position = {0.f, 0.f, 0.f};
+    lights[2].direction = {1.f, 0.f, 0.f};
+    lights[3].type = geometry::scene::LightType::Point;
+    lights[3].position = {0.f, 0.f, 30.f};
+    const std::vector<LightMark> marks = lightMarks(c, size, lights, 1);
+    ASSERT_EQ(marks.size(), 4u);
+    ASSERT_TRUE(marks[0].at && marks[0].direction);
+    EXPECT_NEAR(marks[0].at->x, 150.f, 1e-3f);
+    EXPECT_NEAR(marks[0].at->y, 25.f, 1e-3f);
+    EXPECT_NEAR(marks[0].direction->x, 0.f, 1e-3f);
+    EXPECT_NEAR(marks[0].direction->y, 1.f, 1e-3f);
+    EXPECT_FALSE(marks[0].inspected);
+    EXPECT_TRUE(marks[1].inspected);
+    ASSERT_TRUE(marks[1].at);
+    EXPECT_FALSE(marks[1].direction) << "a point light has no axis";
+    ASSERT_TRUE(marks[2].at && marks[2].direction);
+    EXPECT_NEAR(marks[2].at->x, 100.f, 1e-3f);
+    EXPECT_NEAR(marks[2].direction->x, 1.f, 1e-3f);
+    EXPECT_FALSE(marks[3].at) << "behind the eye: no marker";
+    // Seen end-on (along the view): no arrow to draw.
+    lights[2].direction = {0.f, 0.f, -1.f};
+    EXPECT_FALSE(lightMarks(c, size, lights, 0)[2].direction);
+}
+
+TEST(ImageView, ScreenAtIsTheInverseOfPixelAt) {
+    const Rect panel{10.f, 20.f, 400.f, 300.f};
+    ImageView view;
+    view.zoom = 3.f;
+    view.centre = {0.3f, 0.6f};
+    const auto s = screenAt(view, panel, 160, 90, {40.5f, 50.5f});
+    ASSERT_TRUE(s);
+    const auto px = pixelAt(view, panel, 160, 90, *s);
+    ASSERT_TRUE(px);
+    EXPECT_EQ(*px, glm::ivec2(40, 50));
+    EXPECT_FALSE(screenAt(view, {0.f, 0.f, 0.f, 0.f}, 160, 90, {0.f, 0.f}));
+}
+
+TEST(DashboardConfig, RoundTripsTheLightList) {
+    DashboardState s;
+    s.lights = {geometry::scene::Light{}, defaultSpotLight({})};
+    s.lights[1].coneDeg = 35.f;
+    s.lights[1].radius = 0.5f;
+    s.inspectedLight = 1;
+    s.lightsScene = "platform";
+    s.views.lightGizmo = false;
+    const nlohmann::json j = dashboardToJson(s, {});
+    DashboardState back;
+    WindowGeometry win;
+    dashboardFromJson(nlohmann::json::parse(j.dump()), back, win);
+    EXPECT_TRUE(back.lights == s.lights);
+    EXPECT_EQ(back.inspectedLight, 1);
+    EXPECT_EQ(back.lightsScene, "platform");
+    EXPECT_FALSE(back.views.lightGizmo);
+    EXPECT_EQ(dashboardToJson(back, win), j);
+    EXPECT_FALSE(dashboardToJson(DashboardState{}, {}).contains("lights")) << "no list: the scene's lights";
+}
+
+TEST(DashboardConfig, ABadLightListIsRefusedAndKeepsTheState) {
+    const std::string nine = [] {
+        std::string list;
+        for (int i = 0; i < 9; ++i) list += std::string(i ? ", " : "") + R"({"type": "directional"})";
+        return list;
+    }();
+    const std::vector<std::string> bad = {
+        R"({"lights": {"list": [{"type": "spot", "cone_deg": 0}]}})",
+        R"({"lights": {"list": [{"type": "spot", "cone_deg": 180}]}})",
+        R"({"lights": {"list": [{"type": "point", "range": 0}]}})",
+        R"({"lights": {"list": [{"type": "point", "radius": -1}]}})",
+        R"({"lights": {"list": [{"direction": [0, 0, 0]}]}})",
+        R"({"lights": {"list": [{"position": [0, "up", 0]}]}})",
+        R"({"lights": {"list": [{"type": "laser"}]}})",
+        R"({"lights": {"list": [{"colour": [1, 1, 1]}]}})",
+        R"({"lights": {"list": []}})",
+        R"({"lights": {"list": [)" + nine + "]}}",
+        R"({"lights": {"list": [{}], "inspected": 1}})",
+        R"({"lights": [{}]})",
+    };
+    for (const std::string& text : bad) {
+        DashboardState state;
+        state.lights = {defaultSpotLight({})};
+        state.views.overlays = false;
+        const DashboardState before = state;
+        WindowGeometry win;
+        try {
+            dashboardFromJson(nlohmann::json::parse(text), state, win);
+            ADD_FAILURE() << "accepted: " << text;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
+            EXPECT_NE(std::string(e.what()).find("lights"), std::string::npos) << e.what();
+        }
+        EXPECT_TRUE(state.lights == before.lights) << text;
+        EXPECT_FALSE(state.views.overlays) << text;
+    }
 }

@@ -38,6 +38,7 @@ Dashboard::Dashboard(LoadedScene scene, DashboardState state, DashboardOptions o
     viewChoice_ = options_.view;
     homeCamera_ = scene_.file.scene.camera;
     upAxis_ = options_.up;
+    initLights();
 }
 
 Dashboard::~Dashboard() {
@@ -75,6 +76,8 @@ void Dashboard::adoptScene(LoadedScene loaded) {
         if (s.renderer) s.renderer->setScene(scene_.file.scene);
     state_.camera = OrbitCamera::from(scene_.file.scene.camera);
     state_.sun = SunAngles::from(scene_.file.scene.lights[0].direction);
+    state_.lights.clear(); // the new scene's
+    initLights();
     ++sceneGeneration_;
     viewChoice_.clear();
     hovered_.reset();

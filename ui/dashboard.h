@@ -163,6 +163,25 @@ public:
     /// Starts loading a scene in the background; the current one stays until it succeeds.
     void loadScene(const std::string& nameOrPath);
 
+    // The light list (the Lights group; dashboard_lights.cpp). An edit that would leave an invalid
+    // light or list is refused: the lights stay as they were and the status line says why.
+    /// Adds a spot light above the scene looking down (defaultSpotLight) and inspects it.
+    bool addLight();
+    /// Removes light `index`; refused for the last light.
+    bool removeLight(size_t index);
+    /// Replaces light `index`; refused for a light lightProblem() rejects.
+    bool setLight(size_t index, const geometry::scene::Light& light);
+    /// Makes light `index` the inspected one: drawn last, its maps in the light view, its statistics.
+    bool inspectLight(size_t index);
+    /// Back to the lights the scene was loaded with (a saved list may have replaced them).
+    void resetLights();
+    /// The lights as the next frame draws them (the sun angles applied to the inspected one).
+    [[nodiscard]] std::vector<geometry::scene::Light> lights() const;
+    [[nodiscard]] size_t inspectedLight() const noexcept;
+    /// The maps the light view's selector offers: the inspected light's splits, 1 for a spot light,
+    /// 6 cube faces for a point light.
+    [[nodiscard]] int lightViewMaps() const noexcept;
+
 private:
     /// A side's statistics being computed on a worker thread for the frame last drawn at full size.
     struct InspectionJob {
@@ -237,6 +256,15 @@ private:
     void drawControlsPanel();
     void drawSceneGroup();
     void drawCameraLightGroup();
+    void drawLightsGroup();
+    /// The lights over an eye image placed in `area` (width × height image pixels).
+    void drawLightGizmo(const Rect& area, int width, int height);
+    /// Takes the scene's lights, or the state's where they are valid and meant for this scene.
+    void initLights();
+    /// Writes the sun angles into the inspected light's direction when they changed.
+    void commitSun();
+    /// Refuses an edit: the status line says why.
+    bool refuseLight(const std::string& why);
     void drawSettingsGroups();
     void drawViewsGroup();
     void drawPresetsGroup();
@@ -277,6 +305,11 @@ private:
     std::string presetPath_;                     // the preset field
     std::string viewChoice_;                     // the canonical view last applied
     float targetGammaDeg_ = 30.f;                // the "set γ" control
+    /// The sun angles last written into the inspected light; empty: write them on the next frame
+    /// (the sun leads, as with one light). Only a change of the sun moves the light, so a light's own
+    /// direction (edited in the Lights group) is not rounded through the angles.
+    std::optional<SunAngles> sunApplied_;
+    std::vector<geometry::scene::Light> sceneLights_; // as the scene was loaded (Reset)
     int requestedTab_ = -1;
     bool flyLooking_ = false; // right mouse held on the eye view: WASD/QE fly
     // The eye view's camera controls, recorded by imageArea() and applied at the start of the next

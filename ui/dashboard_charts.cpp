@@ -168,7 +168,8 @@ MeasureContext Dashboard::measureContext() {
             casterLod_.levels(),
             sides_[0].size.width > 0 ? sides_[0].size : geometry::shadow::Viewport{640, 360},
             state_.views.truth,
-            state_.views.truthSamples};
+            state_.views.truthSamples,
+            inspectedLight()};
 }
 
 } // namespace ui

@@ -2,12 +2,14 @@
 
 #include "geometry/io/json_file.h"
 #include "geometry/io/preset.h"
+#include "light_list.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <system_error>
 
@@ -90,11 +92,56 @@ const json& object(const json& j, const char* key, const std::string& path) {
     return *v;
 }
 
+json lightToJson(const geometry::scene::Light& l) {
+    const auto v3 = [](const glm::vec3& v) { return json::array({v.x, v.y, v.z}); };
+    return json{{"type", geometry::scene::lightTypeName(l.type)},
+                {"direction", v3(l.direction)},
+                {"position", v3(l.position)},
+                {"cone_deg", l.coneDeg},
+                {"range", l.range},
+                {"radius", l.radius}};
+}
+
+glm::vec3 configVec3(const json& obj, const char* key, const std::string& path, glm::vec3 current) {
+    const json* v = member(obj, key);
+    if (!v) return current;
+    if (!v->is_array() || v->size() != 3 || !(*v)[0].is_number() || !(*v)[1].is_number() || !(*v)[2].is_number())
+        bad(path + key, "expected 3 numbers");
+    return {(*v)[0].get<float>(), (*v)[1].get<float>(), (*v)[2].get<float>()};
+}
+
+/// A light object as a scene file writes one (members it leaves out keep Light{}'s), checked whole.
+geometry::scene::Light lightFromJson(const json& v, const std::string& path) {
+    if (!v.is_object()) bad(path, "expected a light object");
+    for (const auto& [key, _] : v.items())
+        if (key != "type" && key != "direction" && key != "position" && key != "cone_deg" && key != "range" &&
+            key != "radius")
+            bad(path + "." + key, "unknown key");
+    geometry::scene::Light l;
+    if (const json* t = member(v, "type")) {
+        const std::string name = t->is_string() ? t->get<std::string>() : std::string();
+        if (name == "directional") l.type = geometry::scene::LightType::Directional;
+        else if (name == "spot") l.type = geometry::scene::LightType::Spot;
+        else if (name == "point") l.type = geometry::scene::LightType::Point;
+        else bad(path + ".type", "expected directional, spot or point");
+    }
+    const std::string p = path + ".";
+    l.direction = configVec3(v, "direction", p, l.direction);
+    l.position = configVec3(v, "position", p, l.position);
+    // Bounds wider than a light's: lightProblem() below names what is wrong with the light.
+    const double big = std::numeric_limits<float>::max();
+    l.coneDeg = float(number(v, "cone_deg", p, -big, big, l.coneDeg));
+    l.range = float(number(v, "range", p, -big, big, l.range));
+    l.radius = float(number(v, "radius", p, -big, big, l.radius));
+    if (auto problem = lightProblem(l)) bad(path, *problem);
+    return l;
+}
+
 } // namespace
 
 json dashboardToJson(const DashboardState& s, const WindowGeometry& window) {
     const ViewSettings& v = s.views;
-    return json{
+    json j{
         {"settings", geometry::io::settingsToJson(s.settings[0])},
         {"settings_b", geometry::io::settingsToJson(s.settings[1])},
         {"views",
@@ -107,7 +154,8 @@ json dashboardToJson(const DashboardState& s, const WindowGeometry& window) {
           {"truth", v.truth},
           {"truth_samples", v.truthSamples},
           {"compare", compareName(v.compare)},
-          {"split_position", v.splitPosition}}},
+          {"split_position", v.splitPosition},
+          {"light_gizmo", v.lightGizmo}}},
         {"camera", {{"fly_speed", s.flySpeed}}},
         {"layout",
          {{"controls_width", s.layout.controlsWidth},
@@ -116,12 +164,19 @@ json dashboardToJson(const DashboardState& s, const WindowGeometry& window) {
           {"stats_height", s.layout.statsHeight},
           {"window", {window.width, window.height}}}},
     };
+    if (!s.lights.empty()) {
+        json list = json::array();
+        for (const auto& l : s.lights) list.push_back(lightToJson(l));
+        j["lights"] = {{"scene", s.lightsScene}, {"inspected", s.inspectedLight}, {"list", std::move(list)}};
+    }
+    return j;
 }
 
 void dashboardFromJson(const json& j, DashboardState& state, WindowGeometry& window) {
     if (!j.is_object()) bad("(top level)", "expected an object");
     for (const auto& [key, _] : j.items())
-        if (key != "settings" && key != "settings_b" && key != "views" && key != "camera" && key != "layout")
+        if (key != "settings" && key != "settings_b" && key != "views" && key != "camera" && key != "layout" &&
+            key != "lights")
             bad(key, "unknown key");
     DashboardState s = state; // applied only when everything parses
     WindowGeometry w = window;
@@ -143,6 +198,24 @@ void dashboardFromJson(const json& j, DashboardState& state, WindowGeometry& win
     vs.truthSamples = int(number(v, "truth_samples", "views.", 1, 4, vs.truthSamples));
     vs.compare = choice(v, "compare", "views.", vs.compare, compareName);
     vs.splitPosition = float(number(v, "split_position", "views.", 0, 1, vs.splitPosition));
+    vs.lightGizmo = boolean(v, "light_gizmo", "views.", vs.lightGizmo);
+    if (const json* lights = member(j, "lights")) {
+        // The light list of the scene named; the dashboard takes it only for that scene.
+        if (!lights->is_object()) bad("lights", "expected an object");
+        for (const auto& [key, _] : lights->items())
+            if (key != "scene" && key != "inspected" && key != "list") bad("lights." + key, "unknown key");
+        const json* scene = member(*lights, "scene");
+        if (scene && !scene->is_string()) bad("lights.scene", "expected a scene name or path");
+        const json* list = member(*lights, "list");
+        if (!list || !list->is_array() || list->empty() || list->size() > geometry::scene::kMaxLights)
+            bad("lights.list", "expected 1 to " + std::to_string(geometry::scene::kMaxLights) + " lights");
+        std::vector<geometry::scene::Light> parsed;
+        for (size_t i = 0; i < list->size(); ++i)
+            parsed.push_back(lightFromJson((*list)[i], "lights.list[" + std::to_string(i) + "]"));
+        s.lights = std::move(parsed);
+        s.lightsScene = scene ? scene->get<std::string>() : std::string();
+        s.inspectedLight = int(number(*lights, "inspected", "lights.", 0, double(s.lights.size() - 1), 0));
+    }
     const json& c = object(j, "camera", "camera.");
     s.flySpeed = float(number(c, "fly_speed", "camera.", 1e-3, 1e6, s.flySpeed));
     const json& l = object(j, "layout", "layout.");

@@ -1,7 +1,9 @@
 #pragma once
-// The dashboard's persistent state: the last settings (A and B), the view options and the window
-// layout, in $XDG_CONFIG_HOME/shadowscope/dashboard.json (default ~/.config/shadowscope). The
-// settings use the preset layout (geometry/io/preset.h), so a config's "settings" object is a preset.
+// The dashboard's persistent state: the last settings (A and B), the view options, the window
+// layout and the light list (with the scene it belongs to; "lights": {"scene", "inspected", "list"},
+// each light as a scene file writes one), in $XDG_CONFIG_HOME/shadowscope/dashboard.json (default
+// ~/.config/shadowscope). The settings use the preset layout (geometry/io/preset.h), so a config's
+// "settings" object is a preset.
 #include "dashboard_state.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -23,7 +25,8 @@ struct WindowGeometry {
 [[nodiscard]] nlohmann::json dashboardToJson(const DashboardState& state, const WindowGeometry& window);
 
 /// Applies a config object over `state` and `window`. Throws std::invalid_argument (one line,
-/// naming the key) for wrong types, unknown choices or out-of-range values; nothing is applied then.
+/// naming the key) for wrong types, unknown choices, out-of-range values or a light lightProblem()
+/// rejects (ui/light_list.h); nothing is applied then.
 void dashboardFromJson(const nlohmann::json& j, DashboardState& state, WindowGeometry& window);
 
 /// Loads `path` over state and window. A missing file is not an error (nullopt); a corrupt one

@@ -1,5 +1,9 @@
 // The controls panel: scene picker, camera and light, the settings groups generated from the
-// declaration, view options, A/B compare, presets, screenshot.
+// declaration, view options, A/B compare, presets, screenshot (the Lights group: dashboard_lights.cpp).
+//
+// Index
+//   sunGizmo · drawControlsPanel · drawSceneGroup · setNearFar, resetCamera · drawCameraLightGroup ·
+//   drawSettingsGroups · drawViewsGroup · drawPresetsGroup
 #include "dashboard.h"
 
 #include "geometry/io/preset.h"
@@ -68,6 +72,7 @@ void Dashboard::drawControlsPanel() {
         help("Saves the eye, light and heatmap views and the whole dashboard as PNG");
         drawSceneGroup();
         drawCameraLightGroup();
+        drawLightsGroup();
         drawSettingsGroups();
         drawViewsGroup();
         drawPresetsGroup();
@@ -174,6 +179,7 @@ void Dashboard::drawCameraLightGroup() {
     ImGui::Separator();
     ImGui::SliderFloat("sun azimuth", &state_.sun.azimuthDeg, -180.f, 180.f, "%.1f°");
     widgetMapRecord("sun.azimuth");
+    help("The inspected light's direction (Lights), as azimuth and elevation of where it comes from");
     ImGui::SliderFloat("sun elevation", &state_.sun.elevationDeg, -89.f, 90.f, "%.1f°");
     widgetMapRecord("sun.elevation");
     sunGizmo(state_.sun, std::min(ImGui::GetContentRegionAvail().x, 9.f * ImGui::GetFontSize()));

@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -66,7 +68,8 @@ PassInputs Dashboard::passInputs(int side) const {
     in.settings = state_.settings[side];
     in.camera = scene_.file.scene.camera; // its lens (fov, near, far); eye and target from the rig
     state_.camera.applyTo(in.camera);
-    in.light = state_.sun.direction();
+    in.lights = lights();
+    in.inspectedLight = inspectedLight();
     in.size = eyeSize_;
     in.lightViewSize = lightViewSize_;
     in.lightSplit = state_.views.lightSplit;
@@ -87,7 +90,8 @@ void Dashboard::renderViews() {
     drewThisFrame_ = false;
     geometry::scene::Scene& scene = scene_.file.scene;
     state_.camera.applyTo(scene.camera);
-    scene.lights[0].direction = state_.sun.direction();
+    commitSun();
+    scene.lights = state_.lights; // what the background measurements and the gizmo read
 
     const bool sideBySide = state_.views.compare == CompareMode::SideBySide;
     eyeSize_ = {std::max(16, int(sideBySide ? std::floor((eyeArea_.w - 2.f) * 0.5f) : eyeArea_.w)),
@@ -136,9 +140,20 @@ void Dashboard::drawSide(int i, const PassInputs& in, int divisor) {
         double us = 0;
         // Planned for the full view, so the full frame that refines a coarse one keeps its maps; with
         // focus.mode = samples the plan comes from the samples of the pre-pass at the drawn size.
+        // Every light is planned for the same camera (docs/design.md §3.10); the plan kept is the
+        // inspected light's, which the light view, the statistics and the heatmaps describe.
         const bool samples = in.settings.focus == geometry::shadow::FocusMode::Samples;
-        side.plan = renderer::planFrame(*side.renderer, in.settings, scene.bounds(), in.camera, scene.lights[0],
-                                        samples ? size : full, &us);
+        if (in.lights.empty()) throw std::runtime_error("no light to draw");
+        std::vector<geometry::shadow::ShadowPlan> plans;
+        plans.reserve(in.lights.size());
+        for (const geometry::scene::Light& light : in.lights) {
+            double lightUs = 0;
+            plans.push_back(renderer::planFrame(*side.renderer, in.settings, scene.bounds(), in.camera, light,
+                                                samples ? size : full, &lightUs));
+            us += lightUs;
+        }
+        const size_t inspected = std::min(in.inspectedLight, plans.size() - 1);
+        side.plan = plans[inspected];
         side.planMicroseconds.add(us);
         renderer::ViewOptions v;
         v.lightViewSize = in.lightViewSize;
@@ -147,7 +162,7 @@ void Dashboard::drawSide(int i, const PassInputs& in, int divisor) {
         v.unwarped = in.unwarped;
         v.reuseShadowMaps = !options_.redrawEveryFrame;
         v.depthPrePass = divisor == 1;
-        side.renderer->render(side.plan, size, v);
+        side.renderer->render(plans, size, v, inspected); // the inspected light last
         const renderer::FrameStats& st = side.renderer->stats();
         if (!st.shadowMapsReused) ++counts_.shadow;
         if (st.gpu.valid && st.gpu.drawn[size_t(renderer::Pass::Shadow)])

@@ -216,6 +216,13 @@ void Dashboard::drawEyePanel() {
         }
         if (pinned_ && pinned_->panel != ViewPanel::Light && mode != CompareMode::SideBySide)
             markPixel(ImGui::GetWindowDrawList(), view, eyeArea_, size.width, size.height, pinned_->pixel);
+        if (mode == CompareMode::SideBySide && sides_[1].renderer) {
+            const float half = std::floor((eyeArea_.w - 2.f) * 0.5f);
+            drawLightGizmo({eyeArea_.x, eyeArea_.y, half, eyeArea_.h}, size.width, size.height);
+            drawLightGizmo({eyeArea_.x + half + 2.f, eyeArea_.y, half, eyeArea_.h}, size.width, size.height);
+        } else {
+            drawLightGizmo(eyeArea_, size.width, size.height);
+        }
     }
     ImGui::EndChild();
 }
@@ -223,14 +230,26 @@ void Dashboard::drawEyePanel() {
 void Dashboard::drawLightPanel() {
     if (panelBegin("light_panel", rects_.light)) {
         const Side& side = sides_[shownSide()];
-        ImGui::TextUnformatted(state_.views.unwarped ? "Light view (unwarped)" : "Light view (warped)");
+        // The inspected light's maps: a directional light's splits, a spot light's one map, a point
+        // light's six cube faces.
+        const geometry::scene::LightType type = side.plan.light.type;
+        const bool several = lights().size() > 1;
+        if (several)
+            ImGui::Text("Light %zu (%s)%s", inspectedLight(), geometry::scene::lightTypeName(type),
+                        state_.views.unwarped ? " unwarped" : "");
+        else ImGui::TextUnformatted(state_.views.unwarped ? "Light view (unwarped)" : "Light view (warped)");
         ImGui::SameLine();
-        const int splits = std::max(1, int(side.plan.splits.size()));
+        const int splits = lightViewMaps();
         ImGui::SetNextItemWidth(std::max(60.f, ImGui::GetFontSize() * 6.f));
         int split = std::clamp(state_.views.lightSplit, 0, splits - 1);
-        if (ImGui::SliderInt("##split", &split, 0, splits - 1, "split %d")) state_.views.lightSplit = split;
+        const char* format = type == geometry::scene::LightType::Point  ? "face %d"
+                             : type == geometry::scene::LightType::Spot ? "map %d"
+                                                                        : "split %d";
+        if (ImGui::SliderInt("##split", &split, 0, splits - 1, format)) state_.views.lightSplit = split;
         widgetMapRecord("views.light_split");
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Which split's shadow map the light view shows");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Which of the inspected light's maps the light view shows: a split, a spot light's map, "
+                              "or a point light's cube face (+X, −X, +Y, −Y, +Z, −Z)");
         zoomButtons(state_.imageViews[int(ViewPanel::Light)], "light");
         if (side.renderer) {
             const GLuint tex =

@@ -1,6 +1,6 @@
 #pragma once
 // Everything the dashboard's user chooses, as a plain value: the two settings sets (A and B for
-// comparison), the view options, the camera and light, the layout. The GUI edits it, the headless
+// comparison), the view options, the camera and the lights, the layout. The GUI edits it, the headless
 // dashboard takes it as given, and the config file persists part of it.
 #include "dashboard_layout.h"
 #include "geometry/shadow/settings.h"
@@ -8,7 +8,9 @@
 #include "orbit_camera.h"
 
 #include <array>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace ui {
 
@@ -32,6 +34,7 @@ struct ViewSettings {
     int truthSamples = 1;     // truth rays per pixel per axis (N × N over the footprint)
     CompareMode compare = CompareMode::Off;
     float splitPosition = 0.5f; // split-screen compare: where B starts, 0..1 of the eye view
+    bool lightGizmo = true;     // the lights drawn over the eye view
 };
 
 struct DashboardState {
@@ -39,7 +42,13 @@ struct DashboardState {
     int editing = 0;                                            // which set the controls edit (0 = A)
     ViewSettings views;
     OrbitCamera camera;
-    SunAngles sun;
+    /// The scene's lights (docs/design.md §3.10), as the Lights group edits them. Empty: the scene's
+    /// own, taken when the dashboard opens (and on every scene load).
+    std::vector<geometry::scene::Light> lights;
+    int inspectedLight = 0; // the light the light view, stats and heatmaps describe (drawn last)
+    /// The scene (its source) `lights` belong to: a saved list is used only for that scene; "" any.
+    std::string lightsScene;
+    SunAngles sun;         // edits the inspected light's direction
     float flySpeed = 10.f; // scene units per second in fly mode
     LayoutFractions layout;
     std::array<ImageView, static_cast<int>(ViewPanel::Count)> imageViews{};

@@ -1,5 +1,9 @@
-// The stats panel: timings, triangles, error statistics, γ, utilization per split, for A (and B
-// when comparing), and the pinned pixel's values.
+// The stats panel: the inspected light, timings, triangles, error statistics, γ, utilization per
+// split, for A (and B when comparing), and the pinned pixel's values.
+//
+// Index
+//   drawStatsPanel (the tabs) · statRows (the table's rows, as data) · statsOf, gpuTime ·
+//   drawStatsTable · drawInspector
 #include "dashboard.h"
 
 #include "widget_map.h"
@@ -61,6 +65,18 @@ std::vector<Dashboard::StatRow> Dashboard::statRows(int sides) const {
     const auto row = [&rows](const char* name, std::function<std::string(int)> value, const char* tip = nullptr) {
         rows.push_back({name, std::move(value), tip});
     };
+    row(
+        "light",
+        [this](int i) {
+            const geometry::scene::Light& l = sides_[i].plan.light;
+            std::string out = std::to_string(inspectedLight()) + " of " + std::to_string(lights().size()) + ": " +
+                              geometry::scene::lightTypeName(l.type);
+            if (l.type == geometry::scene::LightType::Spot) out += fmt(", cone %.3g°", l.coneDeg);
+            if (l.positional()) out += fmt(", range %.4g", l.range);
+            return out;
+        },
+        "The inspected light (Lights): every figure below, the light view and the heatmaps describe it; the "
+        "other lights are drawn into the eye view too");
     row("γ / light–view angle", [this](int i) {
         return fmt("%.2f°", sides_[i].plan.gammaDeg) + " / " + fmt("%.1f°", sides_[i].plan.lightViewAngleDeg);
     });

@@ -45,6 +45,15 @@ ImagePlacement placeImage(const ImageView& view, const Rect& panel, int width, i
     return p;
 }
 
+std::optional<glm::vec2> screenAt(const ImageView& view, const Rect& panel, int width, int height,
+                                  glm::vec2 imagePoint) noexcept {
+    if (!usable(panel, width, height)) return std::nullopt;
+    const float s = scaleOf(view, panel, width, height);
+    const glm::vec2 size{float(width), float(height)};
+    const glm::vec2 origin = glm::vec2(panel.x + panel.w * 0.5f, panel.y + panel.h * 0.5f) - centreOf(view) * size * s;
+    return origin + imagePoint * s;
+}
+
 std::optional<glm::ivec2> pixelAt(const ImageView& view, const Rect& panel, int width, int height,
                                   glm::vec2 p) noexcept {
     const ImagePlacement place = placeImage(view, panel, width, height);

@@ -35,6 +35,11 @@ inline constexpr float kMaxZoom = 64.f;
 [[nodiscard]] std::optional<glm::ivec2> pixelAt(const ImageView& view, const Rect& panel, int width, int height,
                                                 glm::vec2 p) noexcept;
 
+/// The screen point where image point `imagePoint` (pixels, x right, y down from the top-left corner)
+/// lands, inside the panel or not (overlays clip themselves); nullopt for an empty panel or image.
+[[nodiscard]] std::optional<glm::vec2> screenAt(const ImageView& view, const Rect& panel, int width, int height,
+                                                glm::vec2 imagePoint) noexcept;
+
 /// Multiplies the zoom by `factor`, keeping the image point under `cursor` where it is.
 [[nodiscard]] ImageView zoomAround(const ImageView& view, const Rect& panel, int width, int height, glm::vec2 cursor,
                                    float factor) noexcept;

@@ -30,6 +30,7 @@ struct SunAngles {
     float azimuthDeg = 0.f, elevationDeg = 45.f;
     static SunAngles from(const glm::vec3& l) noexcept;
     [[nodiscard]] glm::vec3 direction() const noexcept; // l, from the light into the scene
+    [[nodiscard]] bool operator==(const SunAngles&) const = default;
 };
 
 } // namespace ui

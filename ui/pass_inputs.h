@@ -9,14 +9,16 @@
 #include "geometry/shadow/shadow_plan.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace ui {
 
 struct PassInputs {
     geometry::shadow::ShadowSettings settings;
-    geometry::scene::Camera camera;        // eye, target, up, fov, near, far
-    glm::vec3 light{0.f};                  // l
-    geometry::shadow::Viewport size{0, 0}; // the eye view at full resolution
+    geometry::scene::Camera camera;             // eye, target, up, fov, near, far
+    std::vector<geometry::scene::Light> lights; // every light drawn, the sun applied
+    size_t inspectedLight = 0;                  // drawn last; its maps are the light view's
+    geometry::shadow::Viewport size{0, 0};      // the eye view at full resolution
     int lightViewSize = 0;
     int lightSplit = 0;
     bool overlays = true;
