@@ -261,6 +261,7 @@ void table2(benchmark::State& state, const std::string& name) {
         [](const renderer::PassTimes& t) { return t.frame(); });
     state.counters["fps_ratio"] = 1.0 / state.counters["B_over_A_wall"];
     state.counters["lights"] = lightCount;
+    state.SetLabel(setup().context->rendererString());
 }
 
 const bool kTable2Registered = [] {
