@@ -17,6 +17,7 @@ nlohmann::json lightDescription(const geometry::scene::Light& light) {
         j["radius"] = light.radius;
         if (light.type == geometry::scene::LightType::Spot) j["cone_deg"] = light.coneDeg;
     }
+    if (!light.settings.empty()) j["settings"] = light.settings; // its overrides of the shared settings
     return j;
 }
 

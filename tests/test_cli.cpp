@@ -365,15 +365,18 @@ TEST(Cli, BadLightsAreOneLineErrorsWithExitTwo) {
 TEST(Cli, EveryLightsBlockHoldsItsTruth) {
     const fs::path dir = freshDir("lights_truth");
     const std::string scene = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/plane_lights.json";
-    const CommandResult r =
-        run("render --backend osmesa --scene " + scene +
-            " --light 1 --size 96x72 --shadow-res 512 --set bias.type=slope --truth --out " + dir.string());
+    const CommandResult r = run("render --backend osmesa --scene " + scene +
+                                " --light 1 --size 96x72 --shadow-res 512 --truth --out " + dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::ifstream in(dir / "metrics.json");
     const nlohmann::json j = nlohmann::json::parse(in);
     ASSERT_EQ(j.at("lights").size(), 3u);
     EXPECT_TRUE(j["lights"][1]["inspected"].get<bool>());
     EXPECT_EQ(j["lights"][1]["truth"]["false_lit"], j["truth"]["false_lit"]);
+    // The spot light's own settings draw its map at 1024² over the shared 512² (--shadow-res).
+    EXPECT_EQ(j["lights"][0]["maps"][0]["resolution"], 512);
+    EXPECT_EQ(j["lights"][1]["maps"][0]["resolution"], 1024);
+    EXPECT_EQ(j["lights"][1]["settings"], nlohmann::json::array({"shadow_map.resolution=1024"}));
     double sum = 0, largest = 0;
     for (const auto& block : j["lights"]) {
         SCOPED_TRACE(block["type"].get<std::string>());

@@ -228,3 +228,29 @@ TEST(PositionalPlan, OverlaysDrawTheConeAndTheFaceBoundaries) {
     }
     EXPECT_TRUE(volume(Light{glm::vec3(0, -1, 0)}).empty());
 }
+
+// A light's own settings override the shared ones in its plan (and so in its passes and shader
+// block); another light planned with the same shared settings keeps them.
+TEST(PositionalPlan, ALightsOwnSettingsOverrideTheSharedOnes) {
+    Aabb S;
+    S.add({-5, 0, -5});
+    S.add({5, 2, 5});
+    Camera cam;
+    cam.eye = {0, 3, 12};
+    cam.target = {0, 0, 0};
+    ShadowSettings shared;
+    shared.resolution = 2048;
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {0, 8, 0};
+    spot.direction = {0, -1, 0};
+    spot.range = 30.f;
+    spot.settings = {"shadow_map.resolution=512", "filter.type=pcf"};
+    const ShadowPlan own = planShadows(shared, S, cam, spot, Viewport{320, 200});
+    EXPECT_EQ(own.settings.resolution, 512);
+    EXPECT_EQ(own.settings.filter.type, FilterType::Pcf);
+    EXPECT_EQ(own.splits.at(0).resolution, 512);
+    const ShadowPlan sun = planShadows(shared, S, cam, Light{glm::vec3(0, -1, 0)}, Viewport{320, 200});
+    EXPECT_EQ(sun.settings.resolution, 2048);
+    EXPECT_EQ(sun.settings.filter.type, shared.filter.type);
+}

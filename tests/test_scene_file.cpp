@@ -499,10 +499,33 @@ TEST(SceneFile, LightsArrayReadsEveryType) {
     EXPECT_EQ(f.scene.lights[2].type, LightType::Point);
     EXPECT_FLOAT_EQ(f.scene.lights[2].radius, 0.25f);
     EXPECT_FLOAT_EQ(f.scene.lights[2].range, 12.f);
+    EXPECT_TRUE(f.scene.lights[2].settings.empty());
     // The old single "light" still loads, as one directional light.
     const fs::path old =
         writeFile(freshDir("light") / "light.json", R"({"ground": {}, "light": {"direction": [1, -1, 0]}})");
     const SceneFile g = loadSceneFile(old.string());
     ASSERT_EQ(g.scene.lights.size(), 1u);
     EXPECT_EQ(g.scene.lights[0].type, LightType::Directional);
+}
+
+// A light's "settings" override the shared ones, written as a preset is (groups or dotted keys), each
+// checked against the settings declaration and kept as key=value in the order applied.
+TEST(SceneFile, ALightsSettingsAreCheckedOverrides) {
+    const fs::path file = writeFile(freshDir("light_settings") / "lights.json", R"({"ground": {}, "lights": [
+        {"direction": [0, -1, 0], "settings": {"shadow_map": {"resolution": 512}, "filter.type": "pcf"}}]})");
+    const SceneFile f = loadSceneFile(file.string());
+    EXPECT_EQ(f.scene.lights[0].settings, (std::vector<std::string>{"filter.type=pcf", "shadow_map.resolution=512"}));
+    for (const auto& [settings, expected] : std::vector<std::pair<std::string, std::string>>{
+             {R"({"nosuch": 1})", "lights[0].settings: unknown setting 'nosuch'"},
+             {R"({"shadow_map": {"resolution": "big"}})", "lights[0].settings: shadow_map.resolution"},
+             {R"([1])", "lights[0].settings: expected a JSON object"}}) {
+        const fs::path bad = writeFile(freshDir("light_settings_bad") / "bad.json",
+                                       R"({"ground": {}, "lights": [{"settings": )" + settings + "}]}");
+        try {
+            (void)loadSceneFile(bad.string());
+            ADD_FAILURE() << settings << " loaded";
+        } catch (const SceneFileError& e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+    }
 }

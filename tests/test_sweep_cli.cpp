@@ -277,14 +277,13 @@ TEST(SweepPath, ShortWalkRecordsFlickerAndSeams) {
 
 // A point light walks through the camera's position (plane_lights.json: the camera's eye at t = 0.5,
 // frame 2 of 5): every frame renders without a GL error or a NaN, and no caster is lost (the truth's
-// shadowed receivers stay shadowed), the sun and the spot drawn in the same frames. Slope-scaled
-// bias: the constant default leaves acne on the ground grazed far from a light 7 m up.
+// shadowed receivers stay shadowed), the sun and the spot drawn in the same frames. The point light's
+// own settings give it a slope-scaled bias (the constant default leaves acne where it grazes the ground).
 TEST(SweepPath, APointLightPassingThroughTheCameraLosesNothing) {
     const fs::path dir = freshDir("sweep_path_light");
     const std::string scene = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/plane_lights.json";
     const CommandResult r = run("sweep path --backend osmesa --scene " + scene +
                                 " --size 160x120 --shadow-res 512 --path point_through_camera --light 2 --frames 5 "
-                                "--set bias.type=slope "
                                 "--out " +
                                 dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;

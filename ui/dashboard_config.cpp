@@ -94,12 +94,14 @@ const json& object(const json& j, const char* key, const std::string& path) {
 
 json lightToJson(const geometry::scene::Light& l) {
     const auto v3 = [](const glm::vec3& v) { return json::array({v.x, v.y, v.z}); };
-    return json{{"type", geometry::scene::lightTypeName(l.type)},
-                {"direction", v3(l.direction)},
-                {"position", v3(l.position)},
-                {"cone_deg", l.coneDeg},
-                {"range", l.range},
-                {"radius", l.radius}};
+    json j{{"type", geometry::scene::lightTypeName(l.type)},
+           {"direction", v3(l.direction)},
+           {"position", v3(l.position)},
+           {"cone_deg", l.coneDeg},
+           {"range", l.range},
+           {"radius", l.radius}};
+    if (!l.settings.empty()) j["settings"] = l.settings; // its overrides, "key=value" as --set takes them
+    return j;
 }
 
 glm::vec3 configVec3(const json& obj, const char* key, const std::string& path, glm::vec3 current) {
@@ -115,7 +117,7 @@ geometry::scene::Light lightFromJson(const json& v, const std::string& path) {
     if (!v.is_object()) bad(path, "expected a light object");
     for (const auto& [key, _] : v.items())
         if (key != "type" && key != "direction" && key != "position" && key != "cone_deg" && key != "range" &&
-            key != "radius")
+            key != "radius" && key != "settings")
             bad(path + "." + key, "unknown key");
     geometry::scene::Light l;
     if (const json* t = member(v, "type")) {
@@ -133,6 +135,19 @@ geometry::scene::Light lightFromJson(const json& v, const std::string& path) {
     l.coneDeg = float(number(v, "cone_deg", p, -big, big, l.coneDeg));
     l.range = float(number(v, "range", p, -big, big, l.range));
     l.radius = float(number(v, "radius", p, -big, big, l.radius));
+    if (const json* overrides = member(v, "settings")) {
+        if (!overrides->is_array()) bad(path + ".settings", "expected an array of key=value overrides");
+        geometry::shadow::ShadowSettings checked;
+        for (const json& a : *overrides) {
+            if (!a.is_string()) bad(path + ".settings", "expected key=value strings");
+            try {
+                geometry::shadow::applyAssignment(checked, a.get<std::string>());
+            } catch (const std::invalid_argument& e) {
+                bad(path + ".settings", e.what());
+            }
+            l.settings.push_back(a.get<std::string>());
+        }
+    }
     if (auto problem = lightProblem(l)) bad(path, *problem);
     return l;
 }

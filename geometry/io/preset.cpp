@@ -114,7 +114,8 @@ std::string knownKeys() {
 
 /// Applies the members of `object`, found at `prefix` (empty for the top level) and nesting
 /// level `depth` (1 for the top level). Messages are not yet prefixed with "preset ...: ".
-void applyObject(shadow::ShadowSettings& s, const json& object, const std::string& prefix, int depth) {
+void applyObject(shadow::ShadowSettings& s, const json& object, const std::string& prefix, int depth,
+                 std::vector<std::string>* assignments = nullptr) {
     // Recursion only enters declared groups (3 levels today), so hostile trees stop at their first
     // unknown member; this guard keeps the bound explicit should keys ever nest deeper.
     if (depth > kMaxPresetDepth)
@@ -127,11 +128,13 @@ void applyObject(shadow::ShadowSettings& s, const json& object, const std::strin
             continue;
         }
         const std::string key = prefix.empty() ? name : prefix + "." + name;
-        if (const shadow::SettingInfo* info = geometry::shadow::findSetting(key))
-            geometry::shadow::applySetting(s, key, leafText(*info, value));
-        else if (!isGroup(key))
+        if (const shadow::SettingInfo* info = geometry::shadow::findSetting(key)) {
+            const std::string text = leafText(*info, value);
+            geometry::shadow::applySetting(s, key, text);
+            if (assignments) assignments->push_back(key + "=" + text);
+        } else if (!isGroup(key))
             throw std::invalid_argument("unknown setting '" + key + "' (known: " + knownKeys() + ")");
-        else if (value.is_object()) applyObject(s, value, key, depth + 1);
+        else if (value.is_object()) applyObject(s, value, key, depth + 1, assignments);
         else
             throw std::invalid_argument(key + ": expected an object (a group of settings), got " +
                                         describeJsonValue(value));
@@ -151,6 +154,14 @@ std::runtime_error fileError(const std::string& path, const std::string& problem
 } // namespace
 
 json settingsToJson(const shadow::ShadowSettings& s) { return toJson(s, json::object()); }
+
+std::vector<std::string> settingAssignments(const json& j) {
+    if (!j.is_object()) throw std::invalid_argument(std::string("expected a JSON object, got ") + j.type_name());
+    shadow::ShadowSettings checked;
+    std::vector<std::string> out;
+    applyObject(checked, j, "", 1, &out);
+    return out;
+}
 
 shadow::ShadowSettings settingsFromJson(const json& j, shadow::ShadowSettings base) {
     try {

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace geometry::io {
 
@@ -27,6 +28,11 @@ inline constexpr int kMaxPresetDepth = 8;
 /// value of the wrong JSON type (numbers given as strings included), an out-of-range value, or
 /// nesting deeper than kMaxPresetDepth.
 [[nodiscard]] shadow::ShadowSettings settingsFromJson(const nlohmann::json& j, shadow::ShadowSettings base = {});
+
+/// The `key=value` assignments (applyAssignment's form) of a preset-shaped object `j` (nested groups
+/// or dotted keys), in the order applied, each checked as settingsFromJson checks it: a light's
+/// overrides of the shared settings (docs/design.md §3.10). Throws std::invalid_argument naming the key.
+[[nodiscard]] std::vector<std::string> settingAssignments(const nlohmann::json& j);
 
 /// Reads a preset file over `base`. Throws std::runtime_error (file problems: missing,
 /// unreadable, empty, larger than kMaxPresetBytes, not JSON, not an object) or

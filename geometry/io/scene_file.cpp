@@ -8,6 +8,7 @@
 
 #include "geometry/io/scene_file.h"
 #include "geometry/io/json_file.h"
+#include "geometry/io/preset.h"
 
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/chunking.h"
@@ -151,7 +152,7 @@ public:
 
     /// A light object; members it does not give keep `l`'s (docs/design.md §3.10).
     scene::Light light(const json& v, const std::string& key, scene::Light l) const {
-        checkObject(v, key, {"type", "direction", "position", "cone_deg", "range", "radius"});
+        checkObject(v, key, {"type", "direction", "position", "cone_deg", "range", "radius", "settings"});
         if (v.contains("type")) {
             const std::string type = string(v["type"], member(key, "type"));
             if (type == "directional") l.type = scene::LightType::Directional;
@@ -170,6 +171,13 @@ public:
         if (v.contains("radius")) {
             l.radius = number(v["radius"], member(key, "radius"));
             if (!(l.radius >= 0.f)) fail(member(key, "radius"), "expected a radius ≥ 0, got " + text(l.radius));
+        }
+        if (v.contains("settings")) {
+            try {
+                l.settings = settingAssignments(v["settings"]);
+            } catch (const std::invalid_argument& e) {
+                fail(member(key, "settings"), e.what());
+            }
         }
         return l;
     }

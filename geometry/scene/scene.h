@@ -72,6 +72,9 @@ struct Light {
     float coneDeg = 60.f;
     float range = 100.f;
     float radius = 0.f;
+    /// This light's overrides of the shared shadow settings, as `key=value` (a scene file's
+    /// "settings"; geometry/shadow applies them when it plans the light, docs/design.md §3.10).
+    std::vector<std::string> settings = {};
     [[nodiscard]] bool operator==(const Light&) const = default;
     [[nodiscard]] bool positional() const noexcept { return type != LightType::Directional; }
     /// The unit direction (directional: l; spot: the cone's axis); (0, −1, 0) when degenerate.

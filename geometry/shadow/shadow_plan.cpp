@@ -459,8 +459,16 @@ ShadowPlan planPositional(const ShadowSettings& settings, const scene::Aabb& S, 
 
 } // namespace
 
-ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
+ShadowPlan planShadows(const ShadowSettings& shared, const scene::Aabb& S, const scene::Camera& camera,
                        const scene::Light& light, const Viewport& viewport, const SampleBounds* samples) {
+    // A light's own overrides (docs/design.md §3.10 "Settings per light"): its plan, and so its
+    // passes and shader block, carry them.
+    ShadowSettings own;
+    if (!light.settings.empty()) {
+        own = shared;
+        for (const std::string& a : light.settings) applyAssignment(own, a);
+    }
+    const ShadowSettings& settings = light.settings.empty() ? shared : own;
     ShadowPlan plan = planFrame(settings, S, camera, light, viewport);
     if (light.positional()) return planPositional(settings, S, camera, light, viewport, std::move(plan));
     const bool fit = settings.focus == FocusMode::Samples && samples != nullptr;

@@ -96,7 +96,8 @@ struct ShadowPlan {
 /// gives an empty split, which the renderer treats as "nothing casts a shadow"). Settings are
 /// assumed valid (validateOrThrow); the camera's n > 0 and f > n. With focus.mode = samples and
 /// `samples` given (this frame's, for this camera and light), splits and focus bodies are fitted
-/// to them (docs/design.md §3.7); without, the plan is the geometric one.
+/// to them (docs/design.md §3.7); without, the plan is the geometric one. The light's own
+/// `settings` overrides (validated when loaded) apply over `settings`; plan.settings holds the result.
 [[nodiscard]] ShadowPlan planShadows(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
                                      const scene::Light& light, const Viewport& viewport,
                                      const SampleBounds* samples = nullptr);
