@@ -1,5 +1,6 @@
 // loadModel()/saveMesh() for OBJ, STL, OFF, PLY: fixtures are written by the tests into a
 // temporary folder, good and hostile alike.
+#include "geometry/io/mesh_limits.h"
 #include "geometry/io/model_loader.h"
 #include "geometry/scene/mesh_builder.h"
 
@@ -96,7 +97,7 @@ const char* kTetraPly = "ply\nformat ascii 1.0\ncomment tetra\nelement vertex 4\
                         "property list uchar int vertex_indices\nend_header\n"
                         "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
 
-std::string binaryPlyHeader(uint32_t vertices, uint32_t faces, const char* countType = "uchar") {
+std::string binaryPlyHeader(uint64_t vertices, uint64_t faces, const char* countType = "uchar") {
     return "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(vertices) +
            "\nproperty float x\nproperty float y\nproperty float z\nelement face " + std::to_string(faces) +
            "\nproperty list " + countType + " int vertex_indices\nend_header\n";
@@ -306,7 +307,8 @@ TEST_F(MeshLoading, GarbageFiles) {
 
 TEST_F(MeshLoading, OffCountsTooLargeForFile) {
     expectRejected(write("big.off", "OFF\n1000000 2000000 0\n0 0 0\n"), "cannot fit");
-    expectRejected(write("cap.off", "OFF\n4000000000 4000000000 0\n"), "limit");
+    // Not a fixed count: the memory 4e9 vertices and triangles need, against what is available.
+    expectRejected(write("cap.off", "OFF\n4000000000 4000000000 0\n"), "GiB to load, but");
 }
 
 TEST_F(MeshLoading, OffTruncated) {
@@ -329,7 +331,9 @@ TEST_F(MeshLoading, OffBadHeader) {
 }
 
 TEST_F(MeshLoading, PlyCountsTooLargeForFile) {
-    expectRejected(write("big.ply", binaryPlyHeader(100000000, 1)), "limit");
+    // 1e8 vertices fit in memory (no fixed count any more) but not in an empty body.
+    expectRejected(write("big.ply", binaryPlyHeader(100000000, 1)), "cannot fit");
+    expectRejected(write("huge.ply", binaryPlyHeader(5000000000ull, 1)), "32-bit indices");
     expectRejected(write("fit.ply", binaryPlyHeader(1000, 1000) + std::string(100, '\0')), "cannot fit");
 }
 
@@ -560,4 +564,35 @@ TEST_F(MeshLoading, ObjTypicalCadExportLoads) {
     EXPECT_EQ(loadModel(write("forward.obj", "f 1 2 3\n" + kObjTriangle)).meshes[0].triangleCount(), 1u);
     // LF without a final newline.
     EXPECT_EQ(loadModel(write("last.obj", kObjTriangle + "f 1 2 3")).meshes[0].triangleCount(), 1u);
+}
+
+// The limit is the memory a load needs, estimated from the counts, against what the machine has left
+// (geometry/io/mesh_limits.h): the same file loads or is refused with one line as the memory allows.
+TEST(MeshLimits, TheEstimateAndItsMessage) {
+    using namespace geometry::io::detail;
+    EXPECT_EQ(loadBytesEstimate(1000, 2000), 1000 * kLoadBytesPerVertex + 2000 * kLoadBytesPerTriangle);
+    EXPECT_EQ(loadBytesEstimate(UINT64_MAX, 1), UINT64_MAX); // saturates, never wraps
+    EXPECT_EQ(meshMemoryProblem(1000, 2000, 1 << 20), "");
+    const std::string tight = meshMemoryProblem(1'000'000, 2'000'000, 100u << 20);
+    EXPECT_NE(tight.find("need about 267 MiB to load, but 100 MiB is available"), std::string::npos) << tight;
+    EXPECT_NE(meshMemoryProblem(1ull << 32, 1, UINT64_MAX).find("32-bit"), std::string::npos);
+    EXPECT_GT(availableMemory(), 0u);
+}
+
+TEST_F(MeshLoading, AMeshThatCannotFitTheMemoryLeftIsRefusedBeforeLoading) {
+    std::vector<Triangle> tris;
+    for (int i = 0; i < 1000; ++i) {
+        const float x = float(i);
+        tris.push_back(Triangle{glm::vec3(x, 0, 0), glm::vec3(x + 1, 0, 0), glm::vec3(x, 1, 0)});
+    }
+    const std::string file = write("thousand.stl", binaryStl(tris));
+    // 3000 vertices and 1000 triangles: 40 · 3000 + 120 · 1000 = 240 000 bytes.
+    ::setenv("SHADOWSCOPE_MEMORY_BYTES", "200000", 1);
+    expectRejected(file, "binary STL header claims 3000 vertices and 1000 triangles need about 234 KiB to load, "
+                         "but 195 KiB is available");
+    ::setenv("SHADOWSCOPE_MEMORY_BYTES", "300000", 1);
+    size_t triangles = 0;
+    for (const auto& m : loadModel(file).meshes) triangles += m.triangleCount();
+    EXPECT_EQ(triangles, 1000u);
+    ::unsetenv("SHADOWSCOPE_MEMORY_BYTES");
 }

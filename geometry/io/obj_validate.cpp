@@ -183,6 +183,13 @@ private:
     }
     [[noreturn]] void fail(const std::string& problem) const { failAt(line_, problem); }
 
+    /// The memory the vertices and triangles so far need (mesh_limits.h), checked every 2^20 of either:
+    /// a text file has no header to check first.
+    void checkMemory() const {
+        if (const std::string problem = meshMemoryProblem(vertices_.count, triangles_, available_); !problem.empty())
+            fail(problem + " (and the file goes on)");
+    }
+
     // ---- [SECTION] Checks per line ----------------------------------------------------------
 
     /// No control characters but tab: NUL bytes or binary data would reach OpenMesh's string
@@ -227,8 +234,7 @@ private:
 
     void vertex(std::string_view rest) {
         checkCoordinates(rest, 3, "vertex", "coordinate"); // a w or colour after x y z is ignored, as OpenMesh does
-        if (++vertices_.count > kMaxVertices)
-            fail("more than " + std::to_string(kMaxVertices) + " vertices, over the limit");
+        if ((++vertices_.count & 0xfffff) == 0) checkMemory();
         if (!out_) return;
         glm::vec3 p;
         for (int k = 0; k < 3; ++k) p[k] = coordinateValue(nextToken(rest));
@@ -257,8 +263,9 @@ private:
         }
         if (corners < 3) fail("face has " + plural(corners, "vertex", "vertices") + ", needs at least 3");
         if (out_) out_->faceStarts.push_back(static_cast<uint32_t>(out_->corners.size()));
+        const uint64_t before = triangles_;
         triangles_ += corners - 2;
-        if (triangles_ > kMaxFaces) fail("more than " + std::to_string(kMaxFaces) + " triangles, over the limit");
+        if ((before >> 20) != (triangles_ >> 20)) checkMemory();
         cornerPairs_ += corners * (corners - 1) / 2;
         if (cornerPairs_ > kMaxCornerPairs)
             fail("too many large polygons for OpenMesh's OBJ reader (its cost grows with the square of "
@@ -318,6 +325,7 @@ private:
     Elements texcoords_{"face texture index", "texture coordinate", "texture coordinates"};
     Elements normals_{"face normal index", "normal", "normals"};
     uint64_t triangles_ = 0, cornerPairs_ = 0;
+    uint64_t available_ = availableMemory(); // once per file
     uint64_t materialLibraries_ = 0, materialBytes_ = 0;
 };
 

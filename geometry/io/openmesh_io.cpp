@@ -266,9 +266,9 @@ void checkTextFace(const std::string& path, const std::vector<std::string_view>&
 }
 
 void checkCounts(const std::string& path, uint64_t vertices, uint64_t faces, uint64_t minBytes, uint64_t available) {
-    if (vertices > kMaxVertices || faces > kMaxFaces)
-        fail(path, "header claims " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
-                       " faces, over the limit of " + std::to_string(kMaxFaces));
+    // Faces of a text format may be polygons: at least one triangle each, so the estimate is a floor.
+    if (const std::string problem = meshMemoryProblem(vertices, faces, availableMemory()); !problem.empty())
+        fail(path, "header claims " + problem);
     if (minBytes > available)
         fail(path, "header claims " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
                        " faces, which cannot fit in " + std::to_string(available) +
@@ -291,7 +291,12 @@ StlKind validateStl(const std::string& path, uint64_t size) {
     const std::string head = readHead(path, size, 512);
     if (size >= 84) {
         const uint64_t n = readLe32(head.data() + 80);
-        if (84 + 50 * n == size) return StlKind::Binary;
+        if (84 + 50 * n == size) {
+            // Three vertices per facet until cleanup merges them.
+            if (const std::string problem = meshMemoryProblem(3 * n, n, availableMemory()); !problem.empty())
+                fail(path, "binary STL header claims " + problem);
+            return StlKind::Binary;
+        }
     }
     const size_t first = head.find_first_not_of(" \t\r\n");
     const bool solid =
@@ -425,8 +430,10 @@ private:
         return v;
     }
     void facet() {
-        if (mesh_.triangleCount() >= kMaxFaces)
-            tokens_.failHere("more than " + std::to_string(kMaxFaces) + " facets, over the limit");
+        // The memory a file of this many facets needs, checked every 2^20 facets as they come.
+        if (const uint64_t n = mesh_.triangleCount() + 1; (n & 0xfffff) == 0)
+            if (const std::string problem = meshMemoryProblem(3 * n, n, available_); !problem.empty())
+                tokens_.failHere(problem + " (and the file goes on)");
         expect("normal", "after 'facet'");
         (void)numbers("normal"); // recomputed from the vertices
         expect("outer", "after the facet normal");
@@ -447,6 +454,7 @@ private:
 
     StlTokens tokens_;
     scene::Mesh mesh_;
+    uint64_t available_ = availableMemory(); // once per file: the facets are checked against it
 };
 
 /// The whole file parsed here, three vertices per facet (no OpenMesh: its ASCII reader read
@@ -635,8 +643,9 @@ uint64_t checkPlyCounts(const std::string& path, const PlyHeader& header, uint64
         if (e.name == "face") nf = e.count;
         uint64_t perRecord = 0; // smallest possible record: a token per scalar, a count per list
         for (const PlyProperty& p : e.props) perRecord += ascii ? 2 : (p.countSize ? p.countSize : p.size);
-        if (e.count > kMaxVertices + kMaxFaces)
-            fail(path, "element '" + e.name + "' count " + std::to_string(e.count) + " over the limit");
+        if (e.count > kMaxIndexed)
+            fail(path, "element '" + e.name + "' count " + std::to_string(e.count) +
+                           " is over the 2^32 - 1 that 32-bit indices reach");
         minBytes += std::max<uint64_t>(perRecord, 1) * e.count;
     }
     checkCounts(path, nv, nf, minBytes, available);
