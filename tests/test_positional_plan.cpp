@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <utility>
 
 #include "random_util.h"
 
@@ -45,6 +46,17 @@ bool inCone(const Light& light, const glm::vec3& p) {
 bool seenByCamera(const Camera& cam, float aspect, const glm::vec3& p) {
     const glm::vec4 c = cam.projection(aspect) * cam.view() * glm::vec4(p, 1.f);
     return c.w > 0.f && std::abs(c.x) < c.w && std::abs(c.y) < c.w && std::abs(c.z) < c.w;
+}
+
+/// A 10 × 2 × 10 scene seen from 12 m away.
+std::pair<Aabb, Camera> smallScene() {
+    Aabb S;
+    S.add({-5, 0, -5});
+    S.add({5, 2, 5});
+    Camera cam;
+    cam.eye = {0, 3, 12};
+    cam.target = {0, 0, 0};
+    return {S, cam};
 }
 
 } // namespace
@@ -163,12 +175,9 @@ TEST(PositionalPlan, SpotMapIsFittedToTheFocusBody) {
 
 // Nothing within range: every map is empty (no pass), and nothing is NaN.
 TEST(PositionalPlan, LightOutOfRangeHasEmptyMaps) {
-    Aabb S;
-    S.add({-5, 0, -5});
-    S.add({5, 2, 5});
-    Camera cam;
-    cam.eye = {0, 3, 12};
-    cam.target = {0, 0, 0};
+    const std::pair<Aabb, Camera> world = smallScene();
+    const Aabb& S = world.first;
+    const Camera& cam = world.second;
     Light light;
     light.type = LightType::Point;
     light.position = {0, 100, 0};
@@ -183,12 +192,9 @@ TEST(PositionalPlan, LightOutOfRangeHasEmptyMaps) {
 // cone at the range, a point light's eight rays run along the cube's diagonals (where its faces
 // meet); a directional light has none.
 TEST(PositionalPlan, OverlaysDrawTheConeAndTheFaceBoundaries) {
-    Aabb S;
-    S.add({-5, 0, -5});
-    S.add({5, 2, 5});
-    Camera cam;
-    cam.eye = {0, 3, 12};
-    cam.target = {0, 0, 0};
+    const std::pair<Aabb, Camera> world = smallScene();
+    const Aabb& S = world.first;
+    const Camera& cam = world.second;
     Light spot;
     spot.type = LightType::Spot;
     spot.position = {1, 8, 0};
@@ -232,12 +238,9 @@ TEST(PositionalPlan, OverlaysDrawTheConeAndTheFaceBoundaries) {
 // A light's own settings override the shared ones in its plan (and so in its passes and shader
 // block); another light planned with the same shared settings keeps them.
 TEST(PositionalPlan, ALightsOwnSettingsOverrideTheSharedOnes) {
-    Aabb S;
-    S.add({-5, 0, -5});
-    S.add({5, 2, 5});
-    Camera cam;
-    cam.eye = {0, 3, 12};
-    cam.target = {0, 0, 0};
+    const std::pair<Aabb, Camera> world = smallScene();
+    const Aabb& S = world.first;
+    const Camera& cam = world.second;
     ShadowSettings shared;
     shared.resolution = 2048;
     Light spot;
