@@ -46,7 +46,11 @@ ui::DashboardState initialDashboardState(const ui::LoadedScene& scene, const Ren
     ui::DashboardState s;
     s.settings[0] = s.settings[1] = options.settings;
     s.camera = ui::OrbitCamera::from(scene.file.scene.camera);
-    s.sun = ui::SunAngles::from(scene.file.scene.lights[0].direction);
+    // Every light of the scene, --light N inspected (checked against the scene when it loaded).
+    const auto& lights = scene.file.scene.lights;
+    s.lights = lights;
+    s.inspectedLight = int(std::min(options.lightIndex, lights.size() - 1));
+    s.sun = ui::SunAngles::from(lights[size_t(s.inspectedLight)].direction);
     return s;
 }
 

@@ -31,6 +31,7 @@ int runGuiOrHeadless(const RenderOptions& options) {
     v.sceneChoices = sceneChoices();
     v.presetChoices = presetChoices();
     v.view = options.view;
+    v.light = options.lightIndex;
     return ui::runViewer(loadDashboardScene(options), v);
 }
 

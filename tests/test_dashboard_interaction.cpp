@@ -279,3 +279,24 @@ TEST_F(DashboardInteraction, InvalidLightEditsAreRefusedAndChangeNothing) {
 }
 
 } // namespace
+
+// --light N (the GUI and `render --views dashboard`) opens the dashboard on that light: a point
+// light's six faces in the light view, its statistics.
+TEST(DashboardSetup, TheLightOptionPicksTheInspectedLight) {
+    const auto context = renderer::createOSMesaContext();
+    app::RenderOptions o;
+    o.scene = "resources/scenes/plane_lights.json"; // found as the app finds its resources
+    o.size = {320, 240};
+    o.out = ::testing::TempDir() + "dashboard_light_option";
+    o.lightIndex = 2;
+    geometry::shadow::applyAssignment(o.settings, "shadow_map.resolution=256");
+    ui::LoadedScene scene = app::loadDashboardScene(o);
+    const ui::DashboardState state = app::initialDashboardState(scene, o);
+    EXPECT_EQ(state.inspectedLight, 2);
+    ASSERT_EQ(state.lights.size(), 3u);
+    ui::HeadlessDashboard d(std::move(scene), state, app::dashboardOptions(o), 640, 400);
+    (void)d.render(1);
+    EXPECT_EQ(d.dashboard().inspectedLight(), 2u);
+    EXPECT_EQ(d.dashboard().lightViewMaps(), 6);
+    EXPECT_EQ(d.dashboard().lights()[2].position, glm::vec3(2, 3, 3));
+}

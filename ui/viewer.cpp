@@ -164,7 +164,12 @@ bool userActive(const FrameInput& input) {
 int runViewer(LoadedScene scene, const ViewerOptions& options) {
     DashboardState state;
     state.camera = OrbitCamera::from(scene.file.scene.camera);
-    state.sun = SunAngles::from(scene.file.scene.lights[0].direction);
+    // Every light of the scene, --light N inspected, as the headless dashboard starts (a saved list
+    // for this scene replaces them below).
+    const std::vector<geometry::scene::Light>& lights = scene.file.scene.lights;
+    state.lights = lights;
+    state.inspectedLight = int(std::min(options.light, lights.size() - 1));
+    state.sun = SunAngles::from(lights[size_t(state.inspectedLight)].direction);
     WindowGeometry geometry;
     std::string startStatus;
     const std::filesystem::path configPath = configFilePath(options);

@@ -18,6 +18,7 @@ struct ViewerOptions {
     bool persist = true;              // read and write the config file
     std::vector<std::string> sceneChoices, presetChoices;
     std::string view; // the canonical view opened at
+    size_t light = 0; // --light N: the light inspected at start (the scene's, checked when it loaded)
 };
 
 /// Runs until the window closes. Returns the process exit code; throws std::runtime_error when
