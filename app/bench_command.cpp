@@ -286,7 +286,8 @@ int runBench(const BenchOptions& o) {
     geometry::scene::Scene& scene = file.scene;
     renderer::Renderer r(scene);
     std::unique_ptr<geometry::analysis::GroundTruth> truth;
-    if (o.truth.enabled || path) truth = std::make_unique<geometry::analysis::GroundTruth>(scene);
+    if (o.truth.enabled || path)
+        truth = std::make_unique<geometry::analysis::GroundTruth>(geometry::analysis::GroundTruth::borrowing(scene));
     std::cerr << "bench: " << configs.size() << " configuration(s) × " << views.size() << " view(s), " << o.frames
               << " frames each on " << context->rendererString() << '\n';
 

@@ -38,7 +38,8 @@ ui::LoadedScene loadDashboardScene(const RenderOptions& options) {
     ui::LoadedScene loaded;
     loaded.source = options.scene;
     loaded.file = loadSceneFile(options);
-    loaded.truth = std::make_unique<geometry::analysis::GroundTruth>(loaded.file.scene);
+    loaded.truth = std::make_unique<geometry::analysis::GroundTruth>(
+        geometry::analysis::GroundTruth::borrowing(loaded.file.scene));
     return loaded;
 }
 

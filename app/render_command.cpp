@@ -175,7 +175,8 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
     Writer w{std::filesystem::path(o.out), {}};
 
     std::unique_ptr<geometry::analysis::GroundTruth> truth;
-    if (e.truth.enabled) truth = std::make_unique<geometry::analysis::GroundTruth>(f.scene);
+    if (e.truth.enabled)
+        truth = std::make_unique<geometry::analysis::GroundTruth>(geometry::analysis::GroundTruth::borrowing(f.scene));
     const Inspection in = inspect(*f.renderer, f.plan, truth.get(), e.truth.samples);
     geometry::analysis::Image eye = f.renderer->readEye();
     if (wants(e, "eye")) w.png("eye.png", eye);

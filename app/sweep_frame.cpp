@@ -1,6 +1,7 @@
 #include "sweep_frame.h"
 
 #include "caster_lod_setup.h"
+#include "geometry/scene/chunking.h"
 
 #include <unistd.h>
 
@@ -23,11 +24,19 @@ std::string duration(double s) {
     return buf;
 }
 
+/// A copy whose arrays the truth can share (a copied vector has no spare capacity).
+geometry::scene::Scene shareableCopy(const geometry::scene::Scene& scene) {
+    geometry::scene::Scene copy = scene;
+    for (geometry::scene::Mesh& m : copy.meshes) geometry::scene::reserveSpareVertex(m);
+    return copy;
+}
+
 } // namespace
 
 SweepRenderer::SweepRenderer(const geometry::scene::Scene& scene, const std::string& backend)
-    : scene_(scene), context_(renderer::createHeadlessContext(renderer::parseBackend(backend))),
-      renderer_(std::make_unique<renderer::Renderer>(scene_)), truth_(scene_) {}
+    : scene_(shareableCopy(scene)), context_(renderer::createHeadlessContext(renderer::parseBackend(backend))),
+      renderer_(std::make_unique<renderer::Renderer>(scene_)),
+      truth_(geometry::analysis::GroundTruth::borrowing(scene_)) {}
 
 SweepFrame SweepRenderer::render(const geometry::shadow::ShadowSettings& settings,
                                  const geometry::scene::Camera& camera, const geometry::scene::Light& light,

@@ -339,7 +339,7 @@ int runTune(const TuneCommandOptions& o) {
                 {.size = o.common.size,
                  .budgetEvals = o.budgetEvals,
                  .receiverPixels = fewestReceivers(r, start, scene.bounds(), views.views, o.common.size)});
-    const GroundTruth truth(scene);
+    const GroundTruth truth = GroundTruth::borrowing(scene);
     const double spaceSize = tuneSpaceSize(tuner.space());
     std::cerr << "tune: " << scene.name << " (" << views.line << "), target " << formatTuneTarget(target)
               << ", a space of " << spaceSize << " configurations, at most " << o.budgetEvals << " evaluations on "

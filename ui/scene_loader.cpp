@@ -20,7 +20,8 @@ SceneLoadResult SceneLoader::loadNow(const std::string& nameOrPath, const geomet
             },
             up);
         if (progress) progress(0.9f, "building the ray-tracing BVH");
-        loaded.truth = std::make_unique<geometry::analysis::GroundTruth>(loaded.file.scene);
+        loaded.truth = std::make_unique<geometry::analysis::GroundTruth>(
+            geometry::analysis::GroundTruth::borrowing(loaded.file.scene));
         if (progress) progress(1.f, "done");
         return loaded;
     } catch (const std::exception& e) {

@@ -61,6 +61,13 @@ public:
     /// Throws std::runtime_error (one line) on Embree errors or out-of-range indices. An empty
     /// scene is valid: nothing occludes.
     explicit GroundTruth(const scene::Scene& scene);
+    /// The same truth, traced from the scene's own vertex and index arrays (Embree shared buffers)
+    /// instead of a world-space copy: a mesh with a transform becomes an Embree instance. `scene`'s
+    /// meshes must outlive the result unchanged (moving the Scene keeps its arrays where they are).
+    /// A mesh whose positions have no spare capacity (Embree reads 4 bytes past the last vertex) is
+    /// copied. Same answers as the copying constructor (docs/design.md §5).
+    [[nodiscard]] static GroundTruth borrowing(const scene::Scene& scene);
+    static GroundTruth borrowing(const scene::Scene&& scene) = delete; // a temporary would dangle
     ~GroundTruth();
     GroundTruth(GroundTruth&&) noexcept;
     GroundTruth& operator=(GroundTruth&&) noexcept;
@@ -165,12 +172,15 @@ public:
     [[nodiscard]] float epsilon(const glm::vec3& p) const noexcept;
 
     [[nodiscard]] size_t triangleCount() const noexcept;
+    /// Of triangleCount(), those traced from the scene's own arrays (borrowing()).
+    [[nodiscard]] size_t sharedTriangleCount() const noexcept;
     /// The scene's mesh names, by scene index (what surfaceNormals' `meshes` indexes).
     [[nodiscard]] const std::vector<std::string>& meshNames() const noexcept;
     /// A copy of the scene's Scene::occluderEdge (world space), for the penumbra-width metric.
     [[nodiscard]] const std::optional<std::array<glm::vec3, 2>>& occluderEdge() const noexcept;
 
 private:
+    GroundTruth() = default;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -48,12 +48,17 @@ Aabb runBounds(const Mesh& mesh, const TriangleRun& run) {
 
 } // namespace
 
+void reserveSpareVertex(Mesh& mesh) {
+    if (mesh.positions.capacity() == mesh.positions.size()) mesh.positions.reserve(mesh.positions.size() + 1);
+}
+
 void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
     maxTriangles = std::max<uint32_t>(maxTriangles, 1);
     maxPartTriangles = std::clamp<uint32_t>(maxPartTriangles, 1, maxTriangles);
     const uint32_t triCount = static_cast<uint32_t>(mesh.triangleCount());
     mesh.chunks.clear();
     mesh.parts.clear();
+    reserveSpareVertex(mesh); // the last step of every loader and builder
     if (triCount == 0) return;
 
     std::vector<glm::vec3> centroids(triCount);
