@@ -3,10 +3,13 @@
 #include "render_options.h"
 
 #include "geometry/io/model_loader.h"
+#include "geometry/io/scene_file.h"
+#include "geometry/io/up_axis.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <iostream>
 
 namespace app {
@@ -71,6 +74,22 @@ geometry::io::LoadedModel load(const MeshOptions& o, bool turnUp) {
     return geometry::io::loadModel(o.input, c, {}, turnUp ? o.up : std::optional(geometry::io::UpAxis::Y));
 }
 
+/// One mesh: `meshes` merged with their transforms applied.
+geometry::scene::Mesh merged(const std::vector<geometry::scene::Mesh>& meshes) {
+    geometry::scene::Mesh merged;
+    for (const auto& m : meshes) {
+        const auto base = static_cast<uint32_t>(merged.positions.size());
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m.transform)));
+        for (size_t i = 0; i < m.positions.size(); ++i) {
+            merged.positions.push_back(glm::vec3(m.transform * glm::vec4(m.positions[i], 1.f)));
+            merged.normals.push_back(i < m.normals.size() ? glm::normalize(normalMatrix * m.normals[i])
+                                                          : glm::vec3(0, 1, 0));
+        }
+        for (uint32_t idx : m.indices) merged.indices.push_back(base + idx);
+    }
+    return merged;
+}
+
 void addCleanupOptions(CLI::App& cmd, MeshOptions& o) {
     cmd.add_option("--crease-angle", o.creaseAngleDeg, "Normals: sharper edges than this stay sharp (degrees)")
         ->check(CLI::Range(0.0, 180.0))
@@ -94,7 +113,11 @@ CLI::App* addMeshCommand(CLI::App& cli, MeshOptions& o) {
                 "The file's up axis (y, z, -y, -z, x, -x; default: z for STL, y for the others); bounds are given "
                 "with it turned to +y");
     CLI::App* clean = mesh->add_subcommand("clean", "Load, clean and write a mesh (format from OUT's extension)");
-    clean->add_option("IN", o.input, "Mesh file to read")->required();
+    clean
+        ->add_option("IN", o.input,
+                     "Mesh file to read, or a built-in scene or scene file (its meshes written as one, uncleaned, "
+                     "e.g. a large test file from a piperack scene with params.triangles)")
+        ->required();
     clean->add_option("OUT", o.output, "Mesh file to write (.obj, .stl, .off, .ply)")->required();
     addCleanupOptions(*clean, o);
     return mesh;
@@ -102,6 +125,18 @@ CLI::App* addMeshCommand(CLI::App& cli, MeshOptions& o) {
 
 int runMesh(const CLI::App& mesh, const MeshOptions& o) {
     const bool info = mesh.get_subcommand("info")->parsed();
+    if (!info && !geometry::io::isModelFile(o.input)) {
+        // A scene is +y up; the file gets its format's up axis (z for STL), so that loading it back
+        // without --up shows the scene as it was.
+        geometry::io::SceneFile file = geometry::io::resolveScene(o.input, {}, o.up);
+        const std::string ext = std::filesystem::path(o.output).extension().string();
+        const glm::mat4 fromYUp = glm::inverse(geometry::io::rotationToYUp(
+            geometry::io::defaultUpAxis(ext.empty() ? ext : std::string_view(ext).substr(1))));
+        for (geometry::scene::Mesh& m : file.scene.meshes) m.transform = fromYUp * m.transform;
+        geometry::io::saveMesh(o.output, merged(file.scene.meshes));
+        std::cout << o.output << '\n';
+        return 0;
+    }
     const geometry::io::LoadedModel model = load(o, info);
     if (info) {
         const nlohmann::json j = reportJson(model);
@@ -109,19 +144,7 @@ int runMesh(const CLI::App& mesh, const MeshOptions& o) {
         else printText(j);
         return 0;
     }
-    // One output mesh: the model's meshes merged with their transforms applied.
-    geometry::scene::Mesh merged;
-    for (const auto& m : model.meshes) {
-        const auto base = static_cast<uint32_t>(merged.positions.size());
-        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m.transform)));
-        for (size_t i = 0; i < m.positions.size(); ++i) {
-            merged.positions.push_back(glm::vec3(m.transform * glm::vec4(m.positions[i], 1.f)));
-            merged.normals.push_back(i < m.normals.size() ? glm::normalize(normalMatrix * m.normals[i])
-                                                          : glm::vec3(0, 1, 0));
-        }
-        for (uint32_t idx : m.indices) merged.indices.push_back(base + idx);
-    }
-    geometry::io::saveMesh(o.output, merged);
+    geometry::io::saveMesh(o.output, merged(model.meshes));
     std::cout << o.output << '\n';
     return 0;
 }

@@ -2,6 +2,7 @@
 // error and a non-zero exit.
 #include "cli_test_util.h"
 #include "geometry/analysis/heatmap.h"
+#include "geometry/scene/builtin_scenes.h"
 #include "renderer/image.h"
 
 #include <glm/glm.hpp>
@@ -164,6 +165,27 @@ TEST(Cli, MeshInfoAndCleanReportTheCleanup) {
     const CommandResult missing = run("mesh info " + (dir / "nope.stl").string());
     EXPECT_NE(missing.exitCode, 0);
     EXPECT_NE(missing.output.find("nope.stl"), std::string::npos);
+}
+
+// mesh clean from a scene: the plane scene written as one binary STL (z up, every triangle as is)
+// loads back with the scene's triangle count and bounds.
+TEST(Cli, MeshCleanWritesAScene) {
+    const fs::path dir = freshDir("mesh_scene");
+    fs::create_directories(dir);
+    const std::string stl = (dir / "plane.stl").string();
+    const CommandResult clean = run("mesh clean plane " + stl);
+    ASSERT_EQ(clean.exitCode, 0) << clean.output;
+    const geometry::scene::Scene scene = geometry::scene::makePlaneScene();
+    EXPECT_EQ(fs::file_size(stl), 84 + 50 * scene.triangleCount());
+    const CommandResult info = run("mesh info --json " + stl);
+    ASSERT_EQ(info.exitCode, 0) << info.output;
+    const nlohmann::json j = nlohmann::json::parse(info.output);
+    EXPECT_EQ(j.at("cleanup").at("input_faces"), scene.triangleCount());
+    const geometry::scene::Aabb b = scene.bounds();
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(j.at("bounds").at("min")[a].get<float>(), b.lo[a], 1e-4f) << a;
+        EXPECT_NEAR(j.at("bounds").at("max")[a].get<float>(), b.hi[a], 1e-4f) << a;
+    }
 }
 
 // --up: a Z-up STL plate (10 × 6 × 0.1 in the file's x, y, z) lies flat by default and with --up z,

@@ -292,7 +292,7 @@ TEST(SceneFile, EveryErrorIsOneLineNamingTheFileAndTheKey) {
         {R"({"meshes": [{"builtin": "platform", "params": {"seed": -1}}]})", "meshes[0].params.seed"},
         {R"({"meshes": [{"builtin": "platform", "params": {"seed": 1.5}}]})", "meshes[0].params.seed"},
         {R"({"meshes": [{"builtin": "platform", "params": {"tris": 5}}]})", "meshes[0].params.tris: unknown key"},
-        {R"({"meshes": [{"builtin": "piperack", "params": {"triangles": 20000001}}]})", "meshes[0].params.triangles"},
+        {R"({"meshes": [{"builtin": "piperack", "params": {"triangles": 64000001}}]})", "meshes[0].params.triangles"},
         {R"({"meshes": [{"builtin": "piperack", "params": {"seed": "one"}}]})", "meshes[0].params.seed"},
         {R"({"meshes": [{"builtin": "piperack", "params": []}]})", "meshes[0].params: expected an object"},
         {R"({"meshes": [{"file": "missing.stl"}]})", "meshes[0].file: "},

@@ -829,6 +829,44 @@ OmMesh toOpenMesh(const scene::Mesh& mesh) {
 
 } // namespace
 
+namespace {
+
+/// Binary STL (compact, and what CAD tools exchange), written directly: every triangle as it is,
+/// at 50 bytes each, where OpenMesh's halfedge mesh would drop non-manifold faces and cost
+/// ~100 bytes per triangle more on the way (50 M-triangle test files).
+void saveBinaryStl(const std::string& path, const scene::Mesh& mesh) {
+    const size_t tris = mesh.triangleCount();
+    if (tris > UINT32_MAX) throw std::runtime_error(path + ": more than 2^32 - 1 triangles do not fit a binary STL");
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot write file");
+    std::string header(80, ' ');
+    header.replace(0, 22, "shadowscope binary STL");
+    const auto count = static_cast<uint32_t>(tris); // little-endian, as x86-64 stores it
+    out.write(header.data(), 80).write(reinterpret_cast<const char*>(&count), 4);
+    std::vector<char> block;
+    constexpr size_t kPerBlock = 1 << 16;
+    for (size_t t0 = 0; t0 < tris; t0 += kPerBlock) {
+        const size_t n = std::min(kPerBlock, tris - t0);
+        block.assign(50 * n, '\0');
+        for (size_t k = 0; k < n; ++k) {
+            const uint32_t* v = &mesh.indices[3 * (t0 + k)];
+            const glm::vec3 &a = mesh.positions[v[0]], &b = mesh.positions[v[1]], &c = mesh.positions[v[2]];
+            const glm::vec3 cross = glm::cross(b - a, c - a);
+            const float len = glm::length(cross);
+            const glm::vec3 normal = len > 0.f && std::isfinite(len) ? cross / len : glm::vec3(0.f);
+            char* rec = block.data() + 50 * k;
+            std::memcpy(rec, &normal, 12);
+            std::memcpy(rec + 12, &a, 12);
+            std::memcpy(rec + 24, &b, 12);
+            std::memcpy(rec + 36, &c, 12); // the attribute count stays 0
+        }
+        out.write(block.data(), static_cast<std::streamsize>(block.size()));
+    }
+    if (!out.flush()) throw std::runtime_error(path + ": cannot write file (disk full?)");
+}
+
+} // namespace
+
 void saveMesh(const std::string& path, const scene::Mesh& mesh) {
     const std::string ext = [&] {
         std::string e = std::filesystem::path(path).extension().string();
@@ -841,15 +879,10 @@ void saveMesh(const std::string& path, const scene::Mesh& mesh) {
         throw std::runtime_error(path + ": cannot save '." + ext + "' (supported: .obj, .stl, .off, .ply)");
     for (uint32_t i : mesh.indices)
         if (i >= mesh.positions.size()) throw std::runtime_error(path + ": mesh has an index out of range");
+    if (ext == "stl") return saveBinaryStl(path, mesh);
     const detail::QuietOpenMesh quiet;
     OmMesh om = toOpenMesh(mesh);
     OpenMesh::IO::Options options;
-    if (ext == "stl") {
-        options += OpenMesh::IO::Options::Binary; // compact, and what CAD tools exchange
-        om.request_face_normals();
-        om.update_face_normals();
-        options += OpenMesh::IO::Options::FaceNormal;
-    }
     if (!OpenMesh::IO::write_mesh(om, path, options)) throw std::runtime_error(path + ": cannot write file");
 }
 
