@@ -9,7 +9,6 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
 #include <iostream>
 
 namespace app {
@@ -129,9 +128,8 @@ int runMesh(const CLI::App& mesh, const MeshOptions& o) {
         // A scene is +y up; the file gets its format's up axis (z for STL), so that loading it back
         // without --up shows the scene as it was.
         geometry::io::SceneFile file = geometry::io::resolveScene(o.input, {}, o.up);
-        const std::string ext = std::filesystem::path(o.output).extension().string();
-        const glm::mat4 fromYUp = glm::inverse(geometry::io::rotationToYUp(
-            geometry::io::defaultUpAxis(ext.empty() ? ext : std::string_view(ext).substr(1))));
+        const glm::mat4 fromYUp =
+            glm::inverse(geometry::io::rotationToYUp(geometry::io::defaultUpAxis(geometry::io::modelFormat(o.output))));
         for (geometry::scene::Mesh& m : file.scene.meshes) m.transform = fromYUp * m.transform;
         geometry::io::saveMesh(o.output, merged(file.scene.meshes));
         std::cout << o.output << '\n';

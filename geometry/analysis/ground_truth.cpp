@@ -216,8 +216,8 @@ struct HitFrames {
     }
     template <class Hit> [[nodiscard]] glm::vec3 normal(const Hit& hit, int i) const noexcept {
         const glm::vec3 ng(hit.Ng_x[i], hit.Ng_y[i], hit.Ng_z[i]);
-        const unsigned id = topId(hit, i);
-        return hit.instID[0][i] != RTC_INVALID_GEOMETRY_ID && id < instNormal.size() ? instNormal[id] * ng : ng;
+        const unsigned inst = hit.instID[0][i];
+        return inst < instNormal.size() ? instNormal[inst] * ng : ng; // RTC_INVALID_GEOMETRY_ID: not instanced
     }
 };
 
@@ -295,13 +295,21 @@ struct GroundTruth::Impl {
         return mesh.positions.capacity() > mesh.positions.size();
     }
 
-    RTCGeometry newTriangles() {
-        RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        throwIfError("creating a triangle geometry");
-        return geom;
-    }
+    /// Our reference to a new geometry, dropped at the end of the scope: the scene it is attached
+    /// to keeps its own.
+    struct Geometry {
+        RTCGeometry g;
+        Geometry(Impl& impl, RTCGeometryType type) : g(rtcNewGeometry(impl.device, type)) {
+            impl.throwIfError("creating a geometry");
+        }
+        Geometry(const Geometry&) = delete;
+        Geometry& operator=(const Geometry&) = delete;
+        ~Geometry() {
+            if (g) rtcReleaseGeometry(g);
+        }
+    };
 
-    /// Attaches `geom` (committed) to the top-level scene as scene mesh `index`.
+    /// Attaches `geom` (committed) to `into`; in the top-level scene it stands for scene mesh `index`.
     void attach(RTCGeometry geom, RTCScene into, int index, const glm::mat4* transform) {
         const unsigned id = rtcAttachGeometry(into, geom);
         if (into == scene) frames.add(id, index, transform);
@@ -312,11 +320,8 @@ struct GroundTruth::Impl {
     /// SIMD loads require), so the Scene need not outlive us.
     void addCopied(const scene::Mesh& mesh, int index, scene::Aabb& bounds) {
         const size_t tris = mesh.triangleCount();
-        RTCGeometry geom = newTriangles();
-        struct Release {
-            RTCGeometry g;
-            ~Release() { rtcReleaseGeometry(g); } // the scene keeps its own reference
-        } release{geom};
+        const Geometry owned(*this, RTC_GEOMETRY_TYPE_TRIANGLE);
+        RTCGeometry geom = owned.g;
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                      3 * sizeof(float), mesh.positions.size()));
         auto* indices = static_cast<uint32_t*>(
@@ -339,11 +344,8 @@ struct GroundTruth::Impl {
     /// identity transform, else in a scene of their own placed by an instance with the transform.
     void addShared(const scene::Mesh& mesh, int index, scene::Aabb& bounds) {
         const size_t tris = mesh.triangleCount();
-        RTCGeometry geom = newTriangles();
-        struct Release {
-            RTCGeometry g;
-            ~Release() { rtcReleaseGeometry(g); }
-        } release{geom};
+        const Geometry owned(*this, RTC_GEOMETRY_TYPE_TRIANGLE);
+        RTCGeometry geom = owned.g;
         rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.positions.data(), 0,
                                    sizeof(glm::vec3), mesh.positions.size());
         rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.indices.data(), 0,
@@ -364,12 +366,8 @@ struct GroundTruth::Impl {
         rtcSetSceneFlags(own, sceneFlags);
         attach(geom, own, index, nullptr);
         rtcCommitScene(own);
-        RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-        throwIfError("creating an instance");
-        struct ReleaseInstance {
-            RTCGeometry g;
-            ~ReleaseInstance() { rtcReleaseGeometry(g); }
-        } releaseInstance{instance};
+        const Geometry placed(*this, RTC_GEOMETRY_TYPE_INSTANCE);
+        RTCGeometry instance = placed.g;
         rtcSetGeometryInstancedScene(instance, own);
         rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &mesh.transform[0][0]);
         rtcCommitGeometry(instance);

@@ -21,14 +21,6 @@ namespace {
 constexpr std::array<std::string_view, 6> kExtensions{"obj", "stl", "off", "ply", "gltf", "glb"};
 constexpr glm::vec3 kDefaultGrey{0.7f, 0.7f, 0.72f};
 
-std::string lowerExtension(std::string_view path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    if (!ext.empty()) ext.erase(0, 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 void report(const Progress& progress, float fraction, std::string_view stage) {
     if (progress) progress(fraction, stage);
 }
@@ -38,9 +30,17 @@ void report(const Progress& progress, float fraction, std::string_view stage) {
 /// The file as it is, in its own axes.
 LoadedModel readModel(const std::string& path, const CleanupOptions& options, const Progress& progress);
 
+std::string modelFormat(std::string_view path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    if (!ext.empty()) ext.erase(0, 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
 bool isModelFile(std::string_view path) noexcept {
     try {
-        return std::find(kExtensions.begin(), kExtensions.end(), lowerExtension(path)) != kExtensions.end();
+        return std::find(kExtensions.begin(), kExtensions.end(), modelFormat(path)) != kExtensions.end();
     } catch (...) { // allocation failure: not worth propagating from a predicate
         return false;
     }
@@ -71,7 +71,7 @@ LoadedModel loadModel(const std::string& path, const CleanupOptions& options, co
 }
 
 LoadedModel readModel(const std::string& path, const CleanupOptions& options, const Progress& progress) {
-    const std::string ext = lowerExtension(path);
+    const std::string ext = modelFormat(path);
     if (ext == "gltf" || ext == "glb") return loadGltf(path, options, progress);
     if (!isModelFile(path))
         throw std::runtime_error(path + ": unknown model extension '" + ext +

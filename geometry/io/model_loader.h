@@ -56,6 +56,9 @@ struct LoadedModel {
 [[nodiscard]] LoadedModel loadModel(const std::string& path, const CleanupOptions& options = {},
                                     const Progress& progress = {}, std::optional<UpAxis> up = std::nullopt);
 
+/// A file's format as its extension names it, lower case, without the dot ("stl"; "" for none).
+[[nodiscard]] std::string modelFormat(std::string_view path);
+
 /// True for extensions loadModel() reads.
 [[nodiscard]] bool isModelFile(std::string_view path) noexcept;
 
@@ -64,8 +67,8 @@ struct LoadedModel {
 /// optional orientation fix) and returns what it did. Does not chunk.
 CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {});
 
-/// Writes a mesh file (format from the extension: obj, stl, off, ply) through OpenMesh; throws
-/// std::runtime_error naming the file on failure.
+/// Writes a mesh file (format from the extension: obj, stl, off, ply): binary STL directly, every
+/// triangle kept; the others through OpenMesh. Throws std::runtime_error naming the file on failure.
 void saveMesh(const std::string& path, const scene::Mesh& mesh);
 
 } // namespace geometry::io

@@ -868,13 +868,7 @@ void saveBinaryStl(const std::string& path, const scene::Mesh& mesh) {
 } // namespace
 
 void saveMesh(const std::string& path, const scene::Mesh& mesh) {
-    const std::string ext = [&] {
-        std::string e = std::filesystem::path(path).extension().string();
-        if (!e.empty()) e.erase(0, 1);
-        std::transform(e.begin(), e.end(), e.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        return e;
-    }();
+    const std::string ext = modelFormat(path);
     if (ext != "obj" && ext != "stl" && ext != "off" && ext != "ply")
         throw std::runtime_error(path + ": cannot save '." + ext + "' (supported: .obj, .stl, .off, .ply)");
     for (uint32_t i : mesh.indices)
