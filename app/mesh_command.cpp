@@ -73,19 +73,21 @@ geometry::io::LoadedModel load(const MeshOptions& o, bool turnUp) {
     return geometry::io::loadModel(o.input, c, {}, turnUp ? o.up : std::optional(geometry::io::UpAxis::Y));
 }
 
-/// One mesh: `meshes` merged with their transforms applied.
+/// One mesh: `meshes` merged with their transforms applied, an instanced mesh once per placement.
 geometry::scene::Mesh merged(const std::vector<geometry::scene::Mesh>& meshes) {
     geometry::scene::Mesh merged;
-    for (const auto& m : meshes) {
-        const auto base = static_cast<uint32_t>(merged.positions.size());
-        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(m.transform)));
-        for (size_t i = 0; i < m.positions.size(); ++i) {
-            merged.positions.push_back(glm::vec3(m.transform * glm::vec4(m.positions[i], 1.f)));
-            merged.normals.push_back(i < m.normals.size() ? glm::normalize(normalMatrix * m.normals[i])
-                                                          : glm::vec3(0, 1, 0));
+    for (const auto& m : meshes)
+        for (size_t p = 0; p < m.placementCount(); ++p) {
+            const glm::mat4 transform = m.placement(p);
+            const auto base = static_cast<uint32_t>(merged.positions.size());
+            const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(transform)));
+            for (size_t i = 0; i < m.positions.size(); ++i) {
+                merged.positions.push_back(glm::vec3(transform * glm::vec4(m.positions[i], 1.f)));
+                merged.normals.push_back(i < m.normals.size() ? glm::normalize(normalMatrix * m.normals[i])
+                                                              : glm::vec3(0, 1, 0));
+            }
+            for (uint32_t idx : m.indices) merged.indices.push_back(base + idx);
         }
-        for (uint32_t idx : m.indices) merged.indices.push_back(base + idx);
-    }
     return merged;
 }
 

@@ -71,7 +71,8 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
     std::vector<std::string> warnings = f.plan.warnings;
     warnings.insert(warnings.end(), stats.warnings.begin(), stats.warnings.end());
     j["warnings"] = warnings;
-    j["triangles"] = f.scene.triangleCount();
+    j["triangles"] = f.scene.triangleCount();              // held in memory
+    j["placed_triangles"] = f.scene.placedTriangleCount(); // in the world: instances count once per placement
     j["gamma_deg"] = f.plan.gammaDeg;
     j["light_view_angle_deg"] = f.plan.lightViewAngleDeg;
     j["camera"] = {{"eye", {f.scene.camera.eye.x, f.scene.camera.eye.y, f.scene.camera.eye.z}},

@@ -31,6 +31,25 @@ void upload(GLuint& vao, GLuint& vbo, GLuint& ebo, const std::vector<glm::vec3>&
     glBindVertexArray(0);
 }
 
+/// An instanced mesh's placement matrices as aModel, one per instance, in its vertex array.
+GLuint uploadInstances(GLuint vao, const std::vector<glm::mat4>& placements) {
+    GLuint vbo = 0;
+    glBindVertexArray(vao);
+    glGenBuffers(1, &vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(placements.size() * sizeof(glm::mat4)), placements.data(),
+                 GL_STATIC_DRAW);
+    for (GLuint c = 0; c < 4; ++c) {
+        const GLuint a = GpuScene::kModelAttribute + c;
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4),
+                              reinterpret_cast<void*>(uintptr_t(c) * sizeof(glm::vec4)));
+        glVertexAttribDivisor(a, 1);
+    }
+    glBindVertexArray(0);
+    return vbo;
+}
+
 void release(GLuint& vao, GLuint& vbo, GLuint& ebo) noexcept {
     glDeleteBuffers(1, &vbo);
     glDeleteBuffers(1, &ebo);
@@ -54,6 +73,15 @@ GpuScene::GpuScene(const geometry::scene::Scene& scene) {
         g.twoSided = mesh.twoSided;
         upload(g.vao, g.vbo, g.ebo, mesh.positions, mesh.normals, mesh.indices);
         if (g.chunks.empty()) g.chunks.push_back({{0, static_cast<uint32_t>(g.triangles), mesh.worldBounds()}});
+        if (mesh.instanced()) {
+            std::vector<glm::mat4> placements(mesh.placementCount());
+            g.placementBounds.resize(placements.size());
+            for (size_t i = 0; i < placements.size(); ++i) {
+                placements[i] = mesh.placement(i);
+                g.placementBounds[i] = mesh.placementBounds(i);
+            }
+            g.instanceVbo = uploadInstances(g.vao, placements);
+        }
         meshes_.push_back(g);
     }
 }
@@ -61,6 +89,7 @@ GpuScene::GpuScene(const geometry::scene::Scene& scene) {
 GpuScene::~GpuScene() {
     for (auto& g : meshes_) {
         release(g.vao, g.vbo, g.ebo);
+        glDeleteBuffers(1, &g.instanceVbo);
         if (g.lod.vao) release(g.lod.vao, g.lod.vbo, g.lod.ebo);
     }
 }
@@ -72,7 +101,7 @@ void GpuScene::setCasterLod(const geometry::lod::SceneLod& lod) {
         g.lod.chunkLevels.clear();
         if (g.sceneIndex >= lod.meshes.size()) continue;
         const geometry::lod::MeshLod& m = lod.meshes[g.sceneIndex];
-        if (m.indices.empty() || m.chunkLevels.size() != g.chunks.size()) continue;
+        if (g.instanced() || m.indices.empty() || m.chunkLevels.size() != g.chunks.size()) continue;
         upload(g.lod.vao, g.lod.vbo, g.lod.ebo, m.positions, m.normals, m.indices);
         g.lod.chunkLevels = m.chunkLevels;
     }

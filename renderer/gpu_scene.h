@@ -20,12 +20,17 @@ struct GpuMesh {
     size_t sceneIndex = 0; // in Scene::meshes
     GLuint vao = 0, vbo = 0, ebo = 0;
     glm::mat4 transform{1.f};
+    /// An instanced mesh (Mesh::instances): each placement's world box, in placement order; its
+    /// matrices sit in instanceVbo (vertex attribute aModel, one per instance). Empty otherwise.
+    std::vector<geometry::scene::Aabb> placementBounds;
+    GLuint instanceVbo = 0;
     glm::vec3 color{0.7f};
     std::vector<geometry::scene::Chunk> chunks;
     std::vector<geometry::scene::TriangleRun> parts; // as Mesh::parts
     uint64_t triangles = 0;
     bool twoSided = true; // casts from both faces (open surfaces)
-    GpuLod lod;           // vao 0: none
+    GpuLod lod;           // vao 0: none (instanced meshes draw their original triangles)
+    [[nodiscard]] bool instanced() const noexcept { return !placementBounds.empty(); }
 };
 
 /// Triangles a caster draw submitted, and what it would have without caster LOD.
@@ -35,6 +40,10 @@ struct DrawCount {
 
 class GpuScene {
 public:
+    /// The vertex attribute of the model matrix (a mat4: this location and the next three), as
+    /// eye.vert and depth.vert declare it.
+    static constexpr GLuint kModelAttribute = 2;
+
     explicit GpuScene(const geometry::scene::Scene& scene);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
@@ -51,11 +60,15 @@ public:
     /// original) when that level has fewer triangles than the chunk's original parts in view.
     template <class Overlap, class Level>
     DrawCount drawLevels(const GpuMesh& m, Overlap&& overlap, Level&& level) const noexcept {
+        if (m.instanced()) {
+            const uint64_t n = drawInstances(m, overlap);
+            return {n, n};
+        }
         DrawCount count;
         const bool lod = m.lod.vao != 0 && m.lod.chunkLevels.size() == m.chunks.size();
         std::vector<const geometry::lod::LodRange*>& simplified = simplified_; // reused: no per-pass allocation
         simplified.clear();
-        glBindVertexArray(m.vao);
+        bind(m);
         RunMerger runs;
         for (size_t i = 0; i < m.chunks.size(); ++i) {
             const geometry::scene::Chunk& c = m.chunks[i];
@@ -84,9 +97,11 @@ public:
     }
     /// Draws the original triangles of `m` that `overlap(bounds)` does not put Outside: whole
     /// chunks, and the parts in view of chunks only Partly inside; contiguous runs merge into one
-    /// call. Returns the triangles submitted.
+    /// call. An instanced mesh is culled placement by placement instead. Returns the triangles
+    /// submitted.
     template <class Overlap> uint64_t draw(const GpuMesh& m, Overlap&& overlap) const noexcept {
-        glBindVertexArray(m.vao);
+        if (m.instanced()) return drawInstances(m, overlap);
+        bind(m);
         RunMerger runs;
         for (const auto& c : m.chunks) {
             const geometry::shadow::ClipOverlap o = overlap(c.bounds);
@@ -98,6 +113,37 @@ public:
     }
 
 private:
+    /// Binds the mesh's vertex array; a mesh that is not instanced gets its one model matrix as
+    /// aModel's current value (context state, not the VAO's: set per mesh).
+    static void bind(const GpuMesh& m) noexcept {
+        glBindVertexArray(m.vao);
+        for (GLuint c = 0; c < 4; ++c) glVertexAttrib4fv(kModelAttribute + c, &m.transform[int(c)][0]);
+    }
+    /// Every triangle of `m` once per placement that `overlap(box)` does not put Outside:
+    /// consecutive placements in view share one instanced call.
+    template <class Overlap> uint64_t drawInstances(const GpuMesh& m, Overlap& overlap) const noexcept {
+        glBindVertexArray(m.vao);
+        const auto count = GLsizei(m.triangles * 3);
+        uint64_t placed = 0;
+        size_t first = 0, run = 0;
+        const auto flush = [&] {
+            if (run > 0)
+                glDrawElementsInstancedBaseInstance(GL_TRIANGLES, count, GL_UNSIGNED_INT, nullptr, GLsizei(run),
+                                                    GLuint(first));
+            placed += run;
+            run = 0;
+        };
+        for (size_t i = 0; i < m.placementBounds.size(); ++i) {
+            if (overlap(m.placementBounds[i]) == geometry::shadow::ClipOverlap::Outside) {
+                flush();
+                continue;
+            }
+            if (run == 0) first = i;
+            ++run;
+        }
+        flush();
+        return placed * m.triangles;
+    }
     static void drawRun(uint32_t firstTriangle, uint32_t triangles) noexcept {
         if (triangles == 0) return;
         glDrawElements(GL_TRIANGLES, GLsizei(triangles * 3), GL_UNSIGNED_INT,

@@ -262,7 +262,6 @@ void Renderer::drawCasters(const geometry::shadow::ShadowPlan& plan, int index, 
         } else {
             glDisable(GL_CULL_FACE);
         }
-        program.set("uModel", m.transform);
         const auto inMap = [&](const geometry::scene::Aabb& b) {
             return geometry::shadow::clipOverlap(b, split.lightViewProj);
         };
@@ -440,7 +439,6 @@ void Renderer::depthPrePass(const geometry::shadow::ShadowPlan& plan, const geom
     depthOnly.set("uViewProj", viewProj);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     for (const auto& m : scene_->meshes()) {
-        depthOnly.set("uModel", m.transform);
         scene_->draw(m, [&](const geometry::scene::Aabb& box) { return geometry::shadow::clipOverlap(box, viewProj); });
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -472,7 +470,6 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
     eyeProgram_.set("uShadowMapCmp", 1);
     eyeProgram_.set("uMoments", 2);
     for (const auto& m : scene_->meshes()) {
-        eyeProgram_.set("uModel", m.transform);
         eyeProgram_.set("uColor", m.color);
         stats_.eyeTriangles += scene_->draw(m, inView);
     }
@@ -570,7 +567,6 @@ void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const 
     unlitProgram_.use();
     unlitProgram_.set("uViewProj", plan.unwarpedViewProj);
     for (const auto& m : scene_->meshes()) {
-        unlitProgram_.set("uModel", m.transform);
         unlitProgram_.set("uColor", m.color);
         scene_->draw(
             m, [&](const geometry::scene::Aabb& b) { return geometry::shadow::clipOverlap(b, plan.unwarpedViewProj); });

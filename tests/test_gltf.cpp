@@ -208,15 +208,19 @@ TEST_F(GltfTest, ChildTransformComposesWithParents) {
     });
     doc["scenes"] = json::array({{{"nodes", {0, 3}}}});
     const LoadedModel model = geometry::io::loadGltf(writeDoc("hierarchy.gltf", doc));
-    ASSERT_EQ(model.meshes.size(), 2u);
+    // Two nodes use mesh 0: one mesh, held once, placed twice (instancing).
+    ASSERT_EQ(model.meshes.size(), 1u);
+    const geometry::scene::Mesh& mesh = model.meshes[0];
+    ASSERT_EQ(mesh.instances.size(), 2u);
+    EXPECT_EQ(mesh.placedTriangleCount(), 2u);
     // (0,0) (1,0) (0,1) → ×2 → rotated to (0,0) (0,2) (−2,0) → +(10,0,5)
-    const geometry::scene::Aabb child = model.meshes[0].worldBounds();
+    const geometry::scene::Aabb child = mesh.placementBounds(0);
     EXPECT_TRUE(near(child.lo, {8, 0, 5})) << child.lo.x << " " << child.lo.y << " " << child.lo.z;
     EXPECT_TRUE(near(child.hi, {10, 2, 5})) << child.hi.x << " " << child.hi.y << " " << child.hi.z;
-    const geometry::scene::Aabb root = model.meshes[1].worldBounds();
+    const geometry::scene::Aabb root = mesh.placementBounds(1);
     EXPECT_TRUE(near(root.lo, {0, 0, 0}));
     EXPECT_TRUE(near(root.hi, {1, 1, 0}));
-    EXPECT_EQ(model.report.outputFaces, 2u); // instances summed
+    EXPECT_EQ(model.report.outputFaces, 1u); // the faces held, counted once
 }
 
 TEST_F(GltfTest, WithoutDefaultSceneAllRootsLoad) {
@@ -225,9 +229,10 @@ TEST_F(GltfTest, WithoutDefaultSceneAllRootsLoad) {
     doc.erase("scenes");
     doc["nodes"] = json::array({{{"children", {1}}, {"translation", {0, 3, 0}}}, {{"mesh", 0}}, {{"mesh", 0}}});
     const LoadedModel model = geometry::io::loadGltf(writeDoc("noscene.gltf", doc));
-    ASSERT_EQ(model.meshes.size(), 2u);
-    EXPECT_TRUE(near(model.meshes[0].worldBounds().lo, {0, 3, 0}));
-    EXPECT_TRUE(near(model.meshes[1].worldBounds().lo, {0, 0, 0}));
+    ASSERT_EQ(model.meshes.size(), 1u);
+    ASSERT_EQ(model.meshes[0].instances.size(), 2u);
+    EXPECT_TRUE(near(model.meshes[0].placementBounds(0).lo, {0, 3, 0}));
+    EXPECT_TRUE(near(model.meshes[0].placementBounds(1).lo, {0, 0, 0}));
 }
 
 TEST_F(GltfTest, BaseColourPerPrimitive) {

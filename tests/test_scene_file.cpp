@@ -201,6 +201,42 @@ TEST(SceneFile, ReferencesAModelFileRelativeToItsFolder) {
     EXPECT_TRUE(seesCorners(f.scene.camera, models, 1.f));
 }
 
+// Instancing (docs/design.md §2 "Instances"): a grid and a list place the same arrays several
+// times, after the entry's own placement; bounds, the ground and the triangle counts see every placement.
+TEST(SceneFile, GridAndInstancesPlaceAModelSeveralTimes) {
+    const fs::path dir = freshDir("instances");
+    writeFile(dir / "box.obj", boxObj());
+    const fs::path file = writeFile(dir / "i.json", R"({
+        "meshes": [{"file": "box.obj", "translate": [0, 1, 0],
+                    "grid": {"count": [3, 1, 2], "spacing": [10, 0, 20], "origin": [-10, 0, 0]}},
+                   {"file": "box.obj", "instances": [{"translate": [100, 0, 0]},
+                                                      {"translate": [0, 0, 100], "rotate_deg": [0, 90, 0]}]}],
+        "ground": {}})");
+    const SceneFile f = loadSceneFile(file.string());
+    ASSERT_EQ(f.scene.meshes.size(), 3u); // two instanced boxes and the ground
+    const Mesh& grid = f.scene.meshes[0];
+    ASSERT_EQ(grid.instances.size(), 6u);
+    EXPECT_EQ(grid.triangleCount(), 12u);
+    EXPECT_EQ(grid.placedTriangleCount(), 72u);
+    // x fastest: placement 4 is (i, k) = (1, 1); the entry's translate applies first.
+    expectNear(grid.placementBounds(4).lo, {0, 1, 20});
+    expectNear(grid.placementBounds(4).hi, {2, 2, 24});
+    const Mesh& listed = f.scene.meshes[1];
+    ASSERT_EQ(listed.instances.size(), 2u);
+    expectNear(listed.placementBounds(0).lo, {100, 0, 0});
+    // 90° about y turns (x, z) into (z, −x): the 2 × 4 footprint becomes 4 × 2 at x ≥ 0, z ≤ 100.
+    expectNear(listed.placementBounds(1).lo, {0, 0, 98});
+    expectNear(listed.placementBounds(1).hi, {4, 1, 100});
+    EXPECT_EQ(f.scene.triangleCount(), 24u + f.scene.meshes[2].triangleCount());
+    EXPECT_EQ(f.scene.placedTriangleCount(), 96u + f.scene.meshes[2].triangleCount());
+    const Aabb all = f.scene.meshes[0].placementBounds(0);
+    EXPECT_FLOAT_EQ(all.lo.x, -10.f);
+    // The ground spans every placement (4 × the footprint, centred on the models).
+    const Aabb ground = f.scene.meshes[2].worldBounds();
+    EXPECT_LT(ground.lo.x, -10.f);
+    EXPECT_GT(ground.hi.z, 100.f);
+}
+
 TEST(SceneFile, ViewsAndPathsArePartialOverTheSceneCamera) {
     const fs::path dir = freshDir("views");
     const fs::path file = writeFile(dir / "v.json", R"({"meshes": [{"builtin": "plane"}],
@@ -355,6 +391,17 @@ TEST(SceneFile, EveryErrorIsOneLineNamingTheFileAndTheKey) {
         {R"({"ground": {}, "occluder_edge": [[0, 1, 0], [0, 1, 0]]})", "occluder_edge: the two points are the same"},
         {R"({"ground": {}, "occluder_edge": [[0, 1, 0], [1, 1]]})", "occluder_edge[1]: expected 3 numbers"},
         {R"({"ground": {}, "occluder_edge": "x"})", "occluder_edge: expected 2 points"},
+        {R"({"meshes": [{"builtin": "plane", "instances": [], "grid": {}}]})",
+         "meshes[0].grid: expected one of \"instances\" or \"grid\""},
+        {R"({"meshes": [{"builtin": "plane", "instances": []}]})", "meshes[0].instances: expected an array of 1 to"},
+        {R"({"meshes": [{"builtin": "plane", "instances": [{"move": [1, 0, 0]}]}]})",
+         "meshes[0].instances[0].move: unknown key"},
+        {R"({"meshes": [{"builtin": "plane", "grid": {"count": [2, 2]}}]})",
+         "meshes[0].grid: expected \"count\" and \"spacing\""},
+        {R"({"meshes": [{"builtin": "plane", "grid": {"count": [0, 1, 1], "spacing": [1, 1, 1]}}]})",
+         "meshes[0].grid.count[0]: expected an integer in 1..1048576"},
+        {R"({"meshes": [{"builtin": "plane", "grid": {"count": [1024, 1024, 2], "spacing": [1, 1, 1]}}]})",
+         "meshes[0].grid.count: 2097152 placements; at most 1048576"},
     };
     const fs::path dir = freshDir("errors");
     int index = 0;

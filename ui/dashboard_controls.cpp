@@ -84,7 +84,10 @@ void Dashboard::drawControlsPanel() {
 void Dashboard::drawSceneGroup() {
     if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const geometry::scene::Scene& scene = scene_.file.scene;
-    ImGui::Text("%s: %zu triangles, %zu meshes", scene.name.c_str(), scene.triangleCount(), scene.meshes.size());
+    if (const uint64_t placed = scene.placedTriangleCount(); placed != scene.triangleCount())
+        ImGui::Text("%s: %zu triangles (%llu placed by instancing), %zu meshes", scene.name.c_str(),
+                    scene.triangleCount(), static_cast<unsigned long long>(placed), scene.meshes.size());
+    else ImGui::Text("%s: %zu triangles, %zu meshes", scene.name.c_str(), scene.triangleCount(), scene.meshes.size());
     if (ImGui::BeginCombo("scene", scene_.source.c_str())) {
         for (const auto& choice : options_.sceneChoices) {
             if (ImGui::Selectable(choice.c_str(), choice == scene_.source)) {

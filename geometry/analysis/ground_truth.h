@@ -174,6 +174,8 @@ public:
     [[nodiscard]] size_t triangleCount() const noexcept;
     /// Of triangleCount(), those traced from the scene's own arrays (borrowing()).
     [[nodiscard]] size_t sharedTriangleCount() const noexcept;
+    /// Triangles in the world: an instanced mesh's once per placement (Mesh::instances).
+    [[nodiscard]] uint64_t placedTriangleCount() const noexcept;
     /// The scene's mesh names, by scene index (what surfaceNormals' `meshes` indexes).
     [[nodiscard]] const std::vector<std::string>& meshNames() const noexcept;
     /// A copy of the scene's Scene::occluderEdge (world space), for the penumbra-width metric.

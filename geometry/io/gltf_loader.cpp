@@ -47,7 +47,8 @@ namespace fs = std::filesystem;
 // Real CAD assemblies nest a few levels; 64 leaves headroom and bounds the recursion.
 constexpr int kMaxNodeDepth = 64;
 // A node may have several parents (instancing), so a tiny acyclic file can still describe
-// 2^depth instances: cap the instances visited and the triangles they expand to.
+// 2^depth instances: cap the instances visited and the triangles the meshes hold (repeated
+// meshes are instanced, not copied: emitInstances).
 constexpr size_t kMaxNodeInstances = size_t{1} << 18;
 constexpr size_t kMaxInstancedTriangles = size_t{1} << 27;
 // tinygltf's LoadBinaryFromMemory / LoadASCIIFromString take 32-bit sizes.
@@ -839,7 +840,6 @@ std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t 
 struct CleanPrimitive {
     scene::Mesh mesh;
     CleanupReport report;
-    bool reported = false; // its notes go into the summed report once, not per instance
 };
 
 /// glTF mesh index → its cleaned triangle primitives, for the meshes some node uses.
@@ -909,26 +909,34 @@ CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, const std::vector<In
     return cleaned;
 }
 
-/// One chunked Mesh per (instance, cleaned primitive), reports summed per emitted mesh.
+/// One chunked Mesh per cleaned primitive of each used glTF mesh, reports summed once per
+/// primitive: placed at its node's world matrix, or, where several nodes use the glTF mesh, one
+/// instanced Mesh placed at each (Mesh::instances): its arrays are held once however often a part
+/// repeats. Meshes come in the order nodes first use them.
 void emitInstances(const std::vector<Instance>& instances, CleanedMeshes& cleaned, const Progress& progress,
                    LoadedModel& result) {
+    std::vector<int> order;
+    std::map<int, std::vector<glm::mat4>> placements;
+    for (const Instance& inst : instances) {
+        auto [it, fresh] = placements.try_emplace(inst.mesh);
+        if (fresh) order.push_back(inst.mesh);
+        it->second.push_back(inst.world);
+    }
     size_t triangles = 0;
-    for (const Instance& inst : instances)
-        for (const CleanPrimitive& prim : cleaned[inst.mesh]) triangles += prim.mesh.triangleCount();
+    for (int m : order)
+        for (const CleanPrimitive& prim : cleaned[m]) triangles += prim.mesh.triangleCount();
     if (triangles > kMaxInstancedTriangles)
-        throw GltfError("instancing expands to " + str(triangles) + " triangles (limit " + str(kMaxInstancedTriangles) +
-                        ")");
+        throw GltfError("the meshes hold " + str(triangles) + " triangles (limit " + str(kMaxInstancedTriangles) + ")");
 
-    for (size_t i = 0; i < instances.size(); ++i) {
-        notify(progress, float(i) / float(instances.size()), "chunking");
-        for (CleanPrimitive& prim : cleaned[instances[i].mesh]) {
-            scene::Mesh mesh = prim.mesh;
-            mesh.transform = instances[i].world;
+    for (size_t k = 0; k < order.size(); ++k) {
+        notify(progress, float(k) / float(order.size()), "chunking");
+        const std::vector<glm::mat4>& worlds = placements[order[k]];
+        for (CleanPrimitive& prim : cleaned[order[k]]) {
+            scene::Mesh mesh = std::move(prim.mesh); // each glTF mesh is emitted once
+            if (worlds.size() == 1) mesh.transform = worlds[0];
+            else mesh.instances = worlds;
             scene::chunkMesh(mesh);
-            CleanupReport report = prim.report;
-            if (prim.reported) report.notes.clear();
-            prim.reported = true;
-            result.report += report;
+            result.report += prim.report;
             result.meshes.push_back(std::move(mesh));
         }
     }

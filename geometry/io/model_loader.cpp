@@ -50,11 +50,16 @@ namespace {
 
 /// Turns every mesh so that `axis` points up (+Y): the rotation goes in front of each transform, and
 /// the chunks' and parts' world boxes turn with it (a quarter turn maps a box onto a box exactly).
+/// An instanced mesh's placements turn instead (its chunk boxes are not in world space).
 void turnUp(LoadedModel& model, UpAxis axis) {
     model.up = axis;
     if (axis == UpAxis::Y) return;
     const glm::mat4 r = rotationToYUp(axis);
     for (scene::Mesh& mesh : model.meshes) {
+        if (mesh.instanced()) {
+            for (glm::mat4& m : mesh.instances) m = r * m;
+            continue;
+        }
         mesh.transform = r * mesh.transform;
         for (scene::Chunk& chunk : mesh.chunks) chunk.bounds = chunk.bounds.transformed(r);
         for (scene::TriangleRun& part : mesh.parts) part.bounds = part.bounds.transformed(r);

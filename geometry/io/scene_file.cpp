@@ -1,8 +1,9 @@
 // Index
 //   [SECTION] Typed values with key paths ... member, element, Reader (describeJsonValue: json_file.h)
-//   [SECTION] Placement ..................... rotationXyz, readPlacement, reboundChunks, place
+//   [SECTION] Placement ..................... rotationXyz, readPlacement, readInstances, reboundChunks,
+//                                             place
 //   [SECTION] Scene pieces .................. makeGround, framedCamera, meshBounds, endsWithIgnoreCase
-//   [SECTION] The scene file ................ budgetParams, builtinEntry, readMeshEntry, readViews,
+//   [SECTION] The scene file ................ budgetParams, plantParams, builtinEntry, readMeshEntry, readViews,
 //                                             readPaths, readSceneFile
 //   [SECTION] Public functions .............. frameCamera, defaultLight, loadSceneFile, resolveScene
 
@@ -12,6 +13,7 @@
 
 #include "geometry/scene/builtin_scenes.h"
 #include "geometry/scene/chunking.h"
+#include "geometry/scene/instancing.h"
 #include "geometry/scene/mesh_builder.h"
 
 #include <nlohmann/json.hpp>
@@ -233,6 +235,46 @@ Placement readPlacement(const Reader& r, const json& e, const std::string& key) 
     return p;
 }
 
+/// An entry's placements (docs/design.md §2 "Instances"): `"instances"`, a list of
+/// {translate, rotate_deg, scale}, or `"grid"`, {count: [nx, ny, nz], spacing, origin}; each is
+/// applied after the entry's own translate/rotate_deg/scale. Empty: the entry is not instanced.
+std::vector<glm::mat4> readInstances(const Reader& r, const json& e, const std::string& key) {
+    const std::string most = std::to_string(scene::kMaxInstances);
+    if (e.contains("instances") && e.contains("grid"))
+        r.fail(member(key, "grid"), "expected one of \"instances\" or \"grid\", not both");
+    std::vector<glm::mat4> out;
+    if (e.contains("instances")) {
+        const std::string k = member(key, "instances");
+        const json& list = e["instances"];
+        if (!list.is_array() || list.empty() || list.size() > scene::kMaxInstances)
+            r.fail(k, "expected an array of 1 to " + most + " placements, got " + describeJsonValue(list));
+        out.reserve(list.size());
+        for (size_t i = 0; i < list.size(); ++i) {
+            r.checkObject(list[i], element(k, i), {"translate", "rotate_deg", "scale"});
+            out.push_back(readPlacement(r, list[i], element(k, i)).matrix);
+        }
+    } else if (e.contains("grid")) {
+        const std::string k = member(key, "grid");
+        const json& g = e["grid"];
+        r.checkObject(g, k, {"count", "spacing", "origin"});
+        if (!g.contains("count") || !g.contains("spacing")) r.fail(k, "expected \"count\" and \"spacing\"");
+        const std::string kc = member(k, "count");
+        const json& c = g["count"];
+        if (!c.is_array() || c.size() != 3) r.fail(kc, "expected 3 integers [nx, ny, nz], got " + describeJsonValue(c));
+        std::array<uint32_t, 3> count{};
+        uint64_t total = 1;
+        for (size_t i = 0; i < 3; ++i) {
+            count[i] = r.unsignedInt(c[i], element(kc, i), 1, uint32_t(scene::kMaxInstances));
+            total *= count[i];
+        }
+        if (total > scene::kMaxInstances)
+            r.fail(kc, std::to_string(total) + " placements; at most " + most + " per entry");
+        const glm::vec3 origin = g.contains("origin") ? r.vec3(g["origin"], member(k, "origin")) : glm::vec3(0.f);
+        out = scene::gridInstances(count, r.vec3(g["spacing"], member(k, "spacing")), origin);
+    }
+    return out;
+}
+
 /// Chunk bounds are world space: recompute them for the mesh's (new) transform from the chunk's
 /// own triangles, which is exact and keeps the triangle order chunkMesh chose.
 void reboundChunks(scene::Mesh& mesh) {
@@ -241,8 +283,31 @@ void reboundChunks(scene::Mesh& mesh) {
 }
 
 void place(scene::Mesh& mesh, const Placement& p) {
+    if (mesh.instanced()) { // a file's repeated part: its chunk boxes stay in the mesh's own space
+        for (glm::mat4& m : mesh.instances) m = p.matrix * m;
+        return;
+    }
     mesh.transform = p.matrix * mesh.transform;
     reboundChunks(mesh);
+}
+
+/// Places `mesh` at each of the entry's placements, in front of any it has (a glTF file's
+/// instances), at most kMaxInstances in all.
+void instance(const Reader& r, const std::string& key, scene::Mesh& mesh, const std::vector<glm::mat4>& placements) {
+    if (placements.empty()) return;
+    if (!mesh.instanced()) {
+        mesh.instances = placements;
+        return;
+    }
+    const uint64_t total = uint64_t(placements.size()) * mesh.instances.size();
+    if (total > scene::kMaxInstances)
+        r.fail(key, "'" + mesh.name + "' would be placed " + std::to_string(total) + " times; at most " +
+                        std::to_string(scene::kMaxInstances));
+    std::vector<glm::mat4> out;
+    out.reserve(size_t(total));
+    for (const glm::mat4& e : placements)
+        for (const glm::mat4& g : mesh.instances) out.push_back(e * g);
+    mesh.instances = std::move(out);
 }
 
 /// A built-in scene's camera follows its meshes, so its view of them stays the same.
@@ -277,13 +342,11 @@ scene::Camera framedCamera(const scene::Aabb& meshBounds, const scene::Aabb& sce
     return c;
 }
 
-/// Scene::bounds() for a bare mesh list: chunk bounds where there are chunks (cheap).
+/// Scene::bounds() for a bare mesh list: every placement's chunk bounds (cheap).
 scene::Aabb meshBounds(const std::vector<scene::Mesh>& meshes) {
     scene::Aabb b;
-    for (const scene::Mesh& m : meshes) {
-        if (m.chunks.empty()) b.add(m.worldBounds());
-        for (const scene::Chunk& c : m.chunks) b.add(c.bounds);
-    }
+    for (const scene::Mesh& m : meshes)
+        for (size_t i = 0; i < m.placementCount(); ++i) b.add(m.placementBounds(i));
     return b;
 }
 
@@ -318,6 +381,28 @@ template <class Params> Params budgetParams(const Reader& r, const json& e, cons
     return params;
 }
 
+/// The plant's `params`: triangles placed in the world (instancing holds ≤ 750k of them), seed,
+/// and whether to instance at all.
+scene::PlantParams plantParams(const Reader& r, const json& e, const std::string& key) {
+    scene::PlantParams params;
+    if (!e.contains("params")) return params;
+    const std::string k = member(key, "params");
+    const json& p = e["params"];
+    r.checkObject(p, k, {"triangles", "seed", "instanced"});
+    if (p.contains("triangles"))
+        params.targetTriangles = r.unsignedInt(p["triangles"], member(k, "triangles"), 1, UINT32_MAX);
+    if (p.contains("seed")) params.seed = r.unsignedInt(p["seed"], member(k, "seed"), 0, UINT32_MAX - 3);
+    if (p.contains("instanced")) {
+        if (!p["instanced"].is_boolean())
+            r.fail(member(k, "instanced"), "expected true or false, got " + describeJsonValue(p["instanced"]));
+        params.instanced = p["instanced"].get<bool>();
+        // Un-instanced, every placement's arrays are copies: the piperack's budget cap applies.
+        if (!params.instanced && params.targetTriangles > 64'000'000)
+            r.fail(member(k, "triangles"), "at most 64000000 triangles without instancing");
+    }
+    return params;
+}
+
 scene::Scene builtinEntry(const Reader& r, const json& e, const std::string& key) {
     const std::string name = r.string(e["builtin"], member(key, "builtin"));
     const auto& names = scene::builtinSceneNames();
@@ -328,6 +413,7 @@ scene::Scene builtinEntry(const Reader& r, const json& e, const std::string& key
     }
     if (name == "platform") return scene::makePlatformScene(budgetParams<scene::PlatformParams>(r, e, key));
     if (name == "piperack") return scene::makePiperackScene(budgetParams<scene::PiperackParams>(r, e, key));
+    if (name == "plant") return scene::makePlantScene(plantParams(r, e, key));
     if (e.contains("params")) r.fail(member(key, "params"), "the " + name + " scene takes no parameters");
     return scene::makeBuiltinScene(name);
 }
@@ -352,13 +438,15 @@ std::vector<scene::Mesh> fileEntry(const Reader& r, const json& e, const std::st
 
 void readMeshEntry(const Reader& r, const json& e, const std::string& key, const fs::path& folder,
                    const Progress& progress, scene::Scene& scene, Defaults& defaults) {
-    r.checkObject(e, key, {"file", "builtin", "params", "up", "translate", "rotate_deg", "scale", "color"});
+    r.checkObject(
+        e, key, {"file", "builtin", "params", "up", "translate", "rotate_deg", "scale", "color", "instances", "grid"});
     if (e.contains("builtin") && e.contains("up")) r.fail(member(key, "up"), "only model files take an up axis");
     if (e.contains("file") == e.contains("builtin")) r.fail(key, "expected exactly one of \"file\" or \"builtin\"");
     if (e.contains("file") && e.contains("params"))
         r.fail(member(key, "params"), "only built-in scenes take parameters");
     // Check the cheap members before loading anything.
     const Placement placement = readPlacement(r, e, key);
+    const std::vector<glm::mat4> instances = readInstances(r, e, key);
     std::optional<glm::vec3> color;
     if (e.contains("color")) color = r.color(e["color"], member(key, "color"));
 
@@ -375,6 +463,7 @@ void readMeshEntry(const Reader& r, const json& e, const std::string& key, const
     }
     for (scene::Mesh& m : meshes) {
         place(m, placement);
+        instance(r, key, m, instances);
         if (color) m.color = *color;
         scene.meshes.push_back(std::move(m));
     }

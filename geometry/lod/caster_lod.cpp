@@ -219,6 +219,7 @@ SceneLod buildCasterLod(const scene::Scene& scene, const LodOptions& options,
     uint64_t totalWork = 0;
     for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
         const scene::Mesh& mesh = scene.meshes[m];
+        if (mesh.instanced()) continue; // drawn with its original triangles (docs/design.md §2 "Instances")
         out.meshes[m].chunkLevels.resize(mesh.chunks.size());
         for (uint32_t c = 0; c < mesh.chunks.size(); ++c) {
             jobs.push_back({m, c});
@@ -237,6 +238,7 @@ SceneLod buildCasterLod(const scene::Scene& scene, const LodOptions& options,
     std::vector<std::vector<uint32_t>> weld(scene.meshes.size());
     std::vector<std::vector<uint8_t>> shared(scene.meshes.size());
     auto prepare = [&](size_t m) {
+        if (scene.meshes[m].instanced()) return;
         weld[m] = weldPositions(scene.meshes[m].positions);
         shared[m] = sharedVertices(scene.meshes[m], weld[m]);
     };

@@ -27,6 +27,17 @@ struct PiperackParams {
 /// near 0.5, far 1500). The budget is met by the chord tolerance and the rack's length.
 [[nodiscard]] Scene makePiperackScene(const PiperackParams& params = {});
 
+struct PlantParams {
+    uint64_t targetTriangles = 8'000'000; // placed in the world; held: 3 modules of ≤ 250k
+    uint32_t seed = 1;
+    bool instanced = true; // false: every placement a mesh of its own (the memory test)
+};
+
+/// A plant of pipe racks: modules of three types (piperacks of different seeds), each held once and
+/// placed on a grid by instancing to reach the target, on one ground; the camera and light of
+/// the first module's piperack.
+[[nodiscard]] Scene makePlantScene(const PlantParams& params = {});
+
 /// Ground plane with a few thin vertical poles: checks with a known answer.
 struct Pole {
     glm::vec3 base;

@@ -35,7 +35,7 @@ Scene makePlaneScene() {
 }
 
 const std::vector<std::string>& builtinSceneNames() {
-    static const std::vector<std::string> names = {"platform", "piperack", "plane", "overlap"};
+    static const std::vector<std::string> names = {"platform", "piperack", "plane", "overlap", "plant"};
     return names;
 }
 
@@ -44,8 +44,9 @@ Scene makeBuiltinScene(std::string_view name) {
     if (name == "piperack") return makePiperackScene();
     if (name == "plane") return makePlaneScene();
     if (name == "overlap") return makeOverlapScene();
+    if (name == "plant") return makePlantScene();
     throw std::invalid_argument("unknown scene '" + std::string(name) +
-                                "' (built-in scenes: platform, piperack, plane, overlap)");
+                                "' (built-in scenes: platform, piperack, plane, overlap, plant)");
 }
 
 } // namespace geometry::scene

@@ -16,6 +16,20 @@ Aabb Mesh::worldBounds() const noexcept {
     return world;
 }
 
+Aabb Mesh::placementBounds(size_t i) const noexcept {
+    if (!instanced()) {
+        if (chunks.empty()) return worldBounds();
+        Aabb b;
+        for (const auto& c : chunks) b.add(c.bounds);
+        return b;
+    }
+    const glm::mat4& m = instances[i];
+    if (chunks.empty()) return worldBounds().transformed(m);
+    Aabb b;
+    for (const auto& c : chunks) b.add(c.bounds.transformed(m));
+    return b;
+}
+
 glm::vec3 Camera::viewDir() const noexcept {
     const glm::vec3 d = target - eye;
     const float len = glm::length(d);
@@ -57,17 +71,20 @@ const char* lightTypeName(LightType t) noexcept {
 
 Aabb Scene::bounds() const noexcept {
     Aabb b;
-    for (const auto& m : meshes) {
-        if (!m.chunks.empty())
-            for (const auto& c : m.chunks) b.add(c.bounds);
-        else b.add(m.worldBounds());
-    }
+    for (const auto& m : meshes)
+        for (size_t i = 0; i < m.placementCount(); ++i) b.add(m.placementBounds(i));
     return b;
 }
 
 size_t Scene::triangleCount() const noexcept {
     size_t n = 0;
     for (const auto& m : meshes) n += m.triangleCount();
+    return n;
+}
+
+uint64_t Scene::placedTriangleCount() const noexcept {
+    uint64_t n = 0;
+    for (const auto& m : meshes) n += m.placedTriangleCount();
     return n;
 }
 

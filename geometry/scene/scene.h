@@ -39,9 +39,25 @@ struct Mesh {
     /// Holds open surfaces (quads, grids) that must cast from both faces. Solids cast from their
     /// faces towards the light alone, which halves shadow-pass rasterization.
     bool twoSided = true;
+    /// Instancing (docs/design.md §2 "Instances"): where not empty, the mesh is placed once per
+    /// entry, at instances[i] · transform, all placements drawing and tracing the same arrays. Its
+    /// chunk bounds then lie in the space `transform` maps to, not in world space.
+    std::vector<glm::mat4> instances;
 
     [[nodiscard]] size_t triangleCount() const noexcept { return indices.size() / 3; }
-    [[nodiscard]] Aabb worldBounds() const noexcept;
+    [[nodiscard]] Aabb worldBounds() const noexcept; // under `transform` alone
+    [[nodiscard]] bool instanced() const noexcept { return !instances.empty(); }
+    /// Placements: 1 without instances.
+    [[nodiscard]] size_t placementCount() const noexcept { return instanced() ? instances.size() : 1; }
+    /// Placement i's object-to-world matrix.
+    [[nodiscard]] glm::mat4 placement(size_t i) const noexcept {
+        return instanced() ? instances[i] * transform : transform;
+    }
+    /// Placement i's world box: its chunks' boxes, each carried by the instance matrix (so a
+    /// flattened copy, flattenInstances(), has exactly these bounds).
+    [[nodiscard]] Aabb placementBounds(size_t i) const noexcept;
+    /// Triangles drawn when every placement is: triangleCount() × placementCount().
+    [[nodiscard]] uint64_t placedTriangleCount() const noexcept { return uint64_t(triangleCount()) * placementCount(); }
 };
 
 struct Camera {
@@ -101,8 +117,11 @@ struct Scene {
     /// penumbra-width metric measures (docs/design.md §4 "Soft truth"); none by default.
     std::optional<std::array<glm::vec3, 2>> occluderEdge;
 
-    [[nodiscard]] Aabb bounds() const noexcept; // S, world space
+    [[nodiscard]] Aabb bounds() const noexcept; // S, world space, every placement
+    /// Triangles held in memory (each instanced mesh once).
     [[nodiscard]] size_t triangleCount() const noexcept;
+    /// Triangles placed in the world (an instanced mesh once per placement).
+    [[nodiscard]] uint64_t placedTriangleCount() const noexcept;
 };
 
 /// γ (Barroso) = θ (Zhang): the smallest angle between light and view directions,

@@ -4,7 +4,8 @@
 #include "shadow_block.glsl"
 layout(location = 0) in vec3 aPosition;
 invariant gl_Position; // the eye pass's depth pre-pass (depth.vert) must match eye.vert bit for bit
-uniform mat4 uModel;
+// Object → world: per instance (GpuScene draws instanced meshes so), else one value per draw.
+layout(location = 2) in mat4 aModel;
 #ifdef EYE_DEPTH
 uniform mat4 uViewProj;
 #else
@@ -14,7 +15,7 @@ uniform int uSplit;
 out vec3 vWorldPos; // only the variants that compute linear depth need it
 #endif
 void main() {
-    vec4 world = uModel * vec4(aPosition, 1.0);
+    vec4 world = aModel * vec4(aPosition, 1.0);
 #if defined(LINEAR_Z) || defined(MOMENTS)
     vWorldPos = world.xyz;
 #endif
