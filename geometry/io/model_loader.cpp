@@ -83,7 +83,7 @@ LoadedModel readModel(const std::string& path, const CleanupOptions& options, co
                                  "' (supported: .obj, .stl, .off, .ply, .gltf, .glb)");
 
     report(progress, 0.f, "reading");
-    CleanupReport reading; // what the reader did: polygon counters only
+    CleanupReport reading; // what the reader did: polygon counters, corners welded
     scene::Mesh mesh = detail::readOpenMeshFile(path, ext, reading);
     report(progress, 1.f, "reading");
 
@@ -91,6 +91,10 @@ LoadedModel readModel(const std::string& path, const CleanupOptions& options, co
     LoadedModel model;
     model.format = ext;
     model.report = cleanMesh(mesh, options);
+    if (reading.inputVertices > 0) { // the reader welded bit-equal corners (binary STL): count them too
+        model.report.inputVertices = reading.inputVertices;
+        model.report.mergedVertices += reading.mergedVertices;
+    }
     model.report.polygonsTriangulated = reading.polygonsTriangulated;
     model.report.nonPlanarFaces = reading.nonPlanarFaces;
     model.report.earClipFallbacks = reading.earClipFallbacks;

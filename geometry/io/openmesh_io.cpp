@@ -14,7 +14,7 @@
 //   [SECTION] Files ...................... fail, checkedFileSize, readAll, readHead
 //   [SECTION] Importer ................... FlatImporter
 //   [SECTION] Text scanning .............. LineScanner, tokenize, parseInt, checkTextFace, checkCounts
-//   [SECTION] STL ........................ validateStl, readBinaryStlDirect
+//   [SECTION] STL ........................ validateStl (binary STL is read by stl_binary.cpp)
 //   [SECTION] ASCII STL .................. StlTokens, StlParser, readAsciiStl
 //   [SECTION] OFF ........................ validateOff
 //   [SECTION] PLY ........................ plyTypeSize, readBinaryUint, checkPlyTextRecord, PlyHeader,
@@ -26,6 +26,7 @@
 #include "geometry/io/model_loader.h"
 #include "geometry/io/obj_validate.h"
 #include "geometry/io/polygon_triangulation.h"
+#include "geometry/io/stl_binary.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -307,21 +308,6 @@ StlKind validateStl(const std::string& path, uint64_t size) {
     const uint64_t n = readLe32(head.data() + 80);
     fail(path, "binary STL header claims " + std::to_string(n) + " triangles (" + std::to_string(84 + 50 * n) +
                    " bytes) but the file has " + std::to_string(size) + " bytes (truncated or corrupt)");
-}
-
-/// Binary STL is read here, three vertices per facet, never through OpenMesh: its reader
-/// merges vertices through a std::map whose comparator breaks on NaN, and drops degenerate
-/// facets silently. Cleanup merges, and counts what it drops.
-scene::Mesh readBinaryStlDirect(const std::string& data) {
-    scene::Mesh mesh;
-    const size_t n = (data.size() - 84) / 50;
-    mesh.positions.resize(3 * n);
-    mesh.indices.resize(3 * n);
-    for (size_t t = 0; t < n; ++t) {
-        std::memcpy(&mesh.positions[3 * t], data.data() + 84 + 50 * t + 12, 36);
-        for (uint32_t k = 0; k < 3; ++k) mesh.indices[3 * t + k] = static_cast<uint32_t>(3 * t + k);
-    }
-    return mesh;
 }
 
 // ---- [SECTION] ASCII STL --------------------------------------------------------------------
@@ -779,9 +765,10 @@ scene::Mesh readObj(const std::string& path, CleanupReport& counts) {
 scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts) {
     const uint64_t size = checkedFileSize(path);
     if (ext == "stl") {
-        const StlKind kind = validateStl(path, size);
-        const std::string data = readAll(path, size);
-        return kind == StlKind::Binary ? readBinaryStlDirect(data) : readAsciiStl(path, data);
+        // Binary STL never goes through OpenMesh: its reader merges vertices through a std::map
+        // whose comparator breaks on NaN, and drops degenerate facets silently.
+        if (validateStl(path, size) == StlKind::Binary) return readBinaryStl(path, size, readerCounts);
+        return readAsciiStl(path, readAll(path, size));
     }
     if (ext == "obj") return readObj(path, readerCounts);
     if (ext == "off") {

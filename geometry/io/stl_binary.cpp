@@ -1,0 +1,191 @@
+#include "geometry/io/stl_binary.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace geometry::io::detail {
+
+namespace {
+
+constexpr uint32_t kEmpty = ~0u;
+constexpr size_t kHeaderBytes = 84, kFacetBytes = 50;
+constexpr size_t kFacetsPerThreadMin = 1 << 16; // below this a thread costs more than it saves
+
+/// The file's bytes, mapped read-only for the reader's lifetime.
+class MappedFile {
+public:
+    MappedFile(const std::string& path, uint64_t size) : size_(size) {
+        const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+        if (fd < 0) throw std::runtime_error(path + ": cannot open file for reading: " + std::strerror(errno));
+        void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+        const int mapError = errno;
+        ::close(fd);
+        if (p == MAP_FAILED) throw std::runtime_error(path + ": cannot map the file: " + std::strerror(mapError));
+        data_ = static_cast<const char*>(p);
+        ::madvise(p, size, MADV_SEQUENTIAL);
+    }
+    MappedFile(const MappedFile&) = delete;
+    MappedFile& operator=(const MappedFile&) = delete;
+    ~MappedFile() { ::munmap(const_cast<char*>(data_), size_); }
+    [[nodiscard]] const char* data() const noexcept { return data_; }
+
+private:
+    const char* data_ = nullptr;
+    uint64_t size_ = 0;
+};
+
+/// A corner's coordinates as bits, −0 as +0 (equal as numbers, so the same vertex).
+struct Key {
+    uint32_t x, y, z;
+    [[nodiscard]] bool operator==(const Key&) const = default;
+};
+
+Key keyOf(const char* p) noexcept {
+    Key k;
+    std::memcpy(&k, p, sizeof k);
+    for (uint32_t* c : {&k.x, &k.y, &k.z})
+        if (*c == 0x80000000u) *c = 0;
+    return k;
+}
+
+bool finite(const Key& k) noexcept { // exponent not all ones
+    return (k.x & 0x7f800000u) != 0x7f800000u && (k.y & 0x7f800000u) != 0x7f800000u &&
+           (k.z & 0x7f800000u) != 0x7f800000u;
+}
+
+uint32_t hashOf(const Key& k) noexcept {
+    uint64_t h = (uint64_t(k.x) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(k.y) * 0xC2B2AE3D27D4EB4Full) ^
+                 (uint64_t(k.z) * 0x165667B19E3779F9ull);
+    h ^= h >> 29;
+    return uint32_t(h * 0xBF58476D1CE4E5B9ull >> 32);
+}
+
+/// Distinct corners in order of first use: an open-addressing table of vertex ids (4 bytes a
+/// slot, compared through the keys they name), grown at half load.
+class Welder {
+public:
+    explicit Welder(size_t expected) {
+        size_t cap = 1024;
+        while (cap < 2 * expected) cap <<= 1;
+        slots_.assign(cap, kEmpty);
+        keys_.reserve(expected);
+    }
+    /// The vertex of `k`: an existing one when welded (`welded` set), else a new one.
+    uint32_t add(const Key& k, bool& welded) {
+        if (!finite(k)) return push(k); // never welded: cleanup drops it with its faces
+        const size_t mask = slots_.size() - 1;
+        for (size_t s = hashOf(k) & mask;; s = (s + 1) & mask) {
+            const uint32_t id = slots_[s];
+            if (id == kEmpty) {
+                slots_[s] = push(k);
+                if (2 * ++used_ > slots_.size()) grow();
+                return uint32_t(keys_.size() - 1);
+            }
+            if (keys_[id] == k) {
+                welded = true;
+                return id;
+            }
+        }
+    }
+    [[nodiscard]] const std::vector<Key>& keys() const noexcept { return keys_; }
+
+private:
+    uint32_t push(const Key& k) {
+        keys_.push_back(k);
+        return uint32_t(keys_.size() - 1);
+    }
+    void grow() {
+        std::vector<uint32_t> old(slots_.size() * 2, kEmpty);
+        old.swap(slots_);
+        const size_t mask = slots_.size() - 1;
+        for (const uint32_t id : old) {
+            if (id == kEmpty) continue;
+            size_t s = hashOf(keys_[id]) & mask;
+            while (slots_[s] != kEmpty) s = (s + 1) & mask;
+            slots_[s] = id;
+        }
+    }
+    std::vector<uint32_t> slots_;
+    std::vector<Key> keys_;
+    size_t used_ = 0;
+};
+
+/// Facets [first, last) welded on their own: indices local to the range's welder.
+struct RangeWeld {
+    size_t first = 0, last = 0;
+    Welder welder{0};
+    size_t welded = 0;
+};
+
+void weldRange(const char* data, RangeWeld& r, std::vector<uint32_t>& indices) {
+    r.welder = Welder((r.last - r.first) * 3 / 5); // CAD surfaces: ~0.5 distinct corners per facet
+    for (size_t t = r.first; t < r.last; ++t) {
+        const char* corner = data + kHeaderBytes + kFacetBytes * t + 12; // past the facet normal
+        for (size_t k = 0; k < 3; ++k) {
+            bool welded = false;
+            indices[3 * t + k] = r.welder.add(keyOf(corner + 12 * k), welded);
+            r.welded += welded;
+        }
+    }
+}
+
+} // namespace
+
+scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport& counts, unsigned threads) {
+    const size_t n = (size - kHeaderBytes) / kFacetBytes;
+    const MappedFile file(path, size);
+    if (threads == 0) // automatic: as many as the cores, each with enough facets to be worth it
+        threads = unsigned(
+            std::clamp<size_t>(n / kFacetsPerThreadMin, 1, std::clamp(std::thread::hardware_concurrency(), 1u, 16u)));
+    threads = unsigned(std::clamp<size_t>(threads, 1, std::max<size_t>(n, 1)));
+
+    scene::Mesh mesh;
+    mesh.indices.resize(3 * n);
+    std::vector<RangeWeld> ranges(threads);
+    for (unsigned i = 0; i < threads; ++i) {
+        ranges[i].first = n * i / threads;
+        ranges[i].last = n * (i + 1) / threads;
+    }
+    {
+        std::vector<std::jthread> workers;
+        for (unsigned i = 1; i < threads; ++i)
+            workers.emplace_back([&, i] { weldRange(file.data(), ranges[i], mesh.indices); });
+        weldRange(file.data(), ranges[0], mesh.indices);
+    }
+    // The ranges in order, each range's corners welded against what came before: the result is
+    // what one thread reading the file front to back would give.
+    size_t welded = ranges[0].welded;
+    Welder& all = ranges[0].welder;
+    for (unsigned i = 1; i < threads; ++i) {
+        const std::vector<Key>& local = ranges[i].welder.keys();
+        std::vector<uint32_t> global(local.size());
+        for (size_t v = 0; v < local.size(); ++v) {
+            bool seen = false;
+            global[v] = all.add(local[v], seen);
+            welded += seen;
+        }
+        welded += ranges[i].welded;
+        for (size_t j = 3 * ranges[i].first; j < 3 * ranges[i].last; ++j) mesh.indices[j] = global[mesh.indices[j]];
+        ranges[i].welder = Welder(0); // its memory back before the next range
+    }
+    const std::vector<Key>& keys = all.keys();
+    // One spare vertex of capacity: Embree reads 4 bytes past the last (scene::reserveSpareVertex).
+    mesh.positions.reserve(keys.size() + 1);
+    mesh.positions.resize(keys.size());
+    if (!keys.empty()) std::memcpy(mesh.positions.data(), keys.data(), keys.size() * sizeof(Key)); // none: 0 facets
+    counts.inputVertices = 3 * n;
+    counts.mergedVertices = welded;
+    return mesh;
+}
+
+} // namespace geometry::io::detail
