@@ -133,4 +133,10 @@ TEST_F(StlBinaryTest, LoadsAsItsAsciiTwinDoes) {
     EXPECT_EQ(bin.report.mergedVertices, text.report.mergedVertices);
     EXPECT_EQ(bin.report.outputVertices, text.report.outputVertices);
     EXPECT_EQ(bin.report.outputFaces, tris.size());
+    // No slack left resident: one spare vertex for Embree's last load, not the growth of cleanup.
+    const geometry::scene::Mesh& m = bin.meshes[0];
+    EXPECT_GT(m.positions.capacity(), m.positions.size());
+    EXPECT_LE(m.positions.capacity(), m.positions.size() + 1 + m.positions.size() / 16);
+    EXPECT_LE(m.normals.capacity(), m.normals.size() + m.normals.size() / 16);
+    EXPECT_EQ(m.indices.capacity(), m.indices.size());
 }

@@ -3,10 +3,10 @@
 //
 // Index
 //   [SECTION] Cleanup report ............. CleanupReport::operator+=
-//   [SECTION] Small helpers .............. mix, tableSize, triangles, finite
+//   [SECTION] Small helpers .............. mix, tableSize, triangles, finite, fitCapacity
 //   [SECTION] Bad faces and duplicates ... dropNonFinite, mergeDuplicates, dropDegenerate, dropDuplicateFaces
 //   [SECTION] Orientation ................ VertexFaces, cornerOf, fixOrientation
-//   [SECTION] Normals .................... clusterCornerNormals, computeNormals
+//   [SECTION] Normals .................... clusterCornerNormals, splitCornersByNormal, computeNormals
 //   [SECTION] Cleaning a mesh ............ cleanMesh
 #include "geometry/io/model_loader.h"
 
@@ -69,6 +69,16 @@ std::vector<Tri> triangles(const scene::Mesh& mesh) {
 }
 
 bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+/// Reallocates `v` to its size plus `spare` when it holds more than 1/16 beyond that.
+template <class T> void fitCapacity(std::vector<T>& v, size_t spare) {
+    const size_t want = v.size() + spare;
+    if (v.capacity() <= want + v.size() / 16) return;
+    std::vector<T> tight;
+    tight.reserve(want);
+    tight.assign(v.begin(), v.end());
+    v.swap(tight);
+}
 
 // ---- [SECTION] Bad faces and duplicates -----------------------------------------------------
 
@@ -293,17 +303,17 @@ constexpr size_t kExactCornerDegree = 256;
 /// is within the crease angle) and gives every corner its group's average. O(faces × groups);
 /// groups stay few because their seeds are more than the crease angle apart.
 void clusterCornerNormals(const uint32_t* begin, const uint32_t* end, const std::vector<glm::vec3>& faceN,
-                          const std::vector<glm::vec3>& faceU, float cosCrease, std::vector<glm::vec3>& cornerN) {
+                          const std::vector<glm::vec3>& unit, float cosCrease, std::vector<glm::vec3>& cornerN) {
     // Below ~5° the seeds could be as many as the faces: keep the grouping coarse enough.
     const float cosGroup = std::min(cosCrease, 0.996f);
     std::vector<uint32_t> seed, group(static_cast<size_t>(end - begin));
     std::vector<glm::vec3> sum;
     for (size_t i = 0; i < group.size(); ++i) {
-        const glm::vec3& n = faceU[begin[i]];
+        const glm::vec3& n = unit[i];
         size_t g = 0;
-        while (g < seed.size() && glm::dot(faceU[seed[g]], n) < cosGroup) ++g;
+        while (g < seed.size() && glm::dot(unit[seed[g]], n) < cosGroup) ++g;
         if (g == seed.size()) {
-            seed.push_back(begin[i]);
+            seed.push_back(static_cast<uint32_t>(i));
             sum.emplace_back(0.f);
         }
         group[i] = static_cast<uint32_t>(g);
@@ -311,44 +321,55 @@ void clusterCornerNormals(const uint32_t* begin, const uint32_t* end, const std:
     }
     for (size_t i = 0; i < group.size(); ++i) {
         const float len = glm::length(sum[group[i]]);
-        cornerN[i] = len > 0 ? sum[group[i]] / len : faceU[begin[i]];
+        cornerN[i] = len > 0 ? sum[group[i]] / len : unit[i];
     }
 }
 
-/// Crease-angle normals: each corner averages the (area-weighted) normals of the faces around
+/// A face's unit normal from its area-weighted one (0 for a face too small to have a direction).
+glm::vec3 unitOf(const glm::vec3& n) {
+    const float len = glm::length(n);
+    return len > 0 ? n / len : glm::vec3(0.f);
+}
+
+/// Crease-angle normals (computeNormals' first stage, writing positions and normals and marking
+/// each corner of `tris` remapped): each corner averages the (area-weighted) normals of the faces around
 /// its vertex that lie within the crease angle of its own face; corners of one vertex with
 /// different results become separate vertices, so sharp CAD edges stay sharp.
-void computeNormals(scene::Mesh& mesh, const std::vector<glm::vec3>& pos, std::vector<Tri>& tris, double creaseDeg) {
-    std::vector<glm::vec3> faceN(tris.size()), faceU(tris.size());
+void splitCornersByNormal(scene::Mesh& mesh, const std::vector<glm::vec3>& pos, std::vector<Tri>& tris,
+                          double creaseDeg) {
+    // Unit normals are made per vertex from these (`unit`), not kept per face: 12 bytes a
+    // triangle less at the load's peak.
+    std::vector<glm::vec3> faceN(tris.size());
     for (size_t f = 0; f < tris.size(); ++f) {
         const Tri& t = tris[f];
         faceN[f] = glm::cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]]);
-        const float len = glm::length(faceN[f]);
-        faceU[f] = len > 0 ? faceN[f] / len : glm::vec3(0.f);
     }
     const float cosCrease = static_cast<float>(std::cos(glm::radians(std::clamp(creaseDeg, 0.0, 180.0))));
     const VertexFaces vf(pos.size(), tris);
     mesh.positions.clear();
     mesh.normals.clear();
-    mesh.positions.reserve(pos.size());
-    mesh.normals.reserve(pos.size());
-    std::vector<glm::vec3> cornerN;
-    std::vector<uint32_t> firstOut;
+    // Crease splits add vertices: room for half as many again, so that growth by doubling (old and
+    // new arrays at once) rarely comes on top of this stage's temporaries; cleanMesh trims the rest.
+    mesh.positions.reserve(pos.size() + pos.size() / 2);
+    mesh.normals.reserve(pos.size() + pos.size() / 2);
+    std::vector<glm::vec3> cornerN, unit;
     for (uint32_t v = 0; v < pos.size(); ++v) {
         const auto [begin, end] = vf.of(v);
         const size_t deg = static_cast<size_t>(end - begin);
         cornerN.resize(deg);
+        unit.resize(deg);
+        for (size_t i = 0; i < deg; ++i) unit[i] = unitOf(faceN[begin[i]]);
         if (deg <= kExactCornerDegree) {
             for (size_t i = 0; i < deg; ++i) {
                 glm::vec3 sum(0.f);
-                const glm::vec3& own = faceU[begin[i]];
-                for (const uint32_t* g = begin; g != end; ++g)
-                    if (*g == begin[i] || glm::dot(own, faceU[*g]) >= cosCrease) sum += faceN[*g];
+                const glm::vec3& own = unit[i];
+                for (size_t k = 0; k < deg; ++k) // a face meets a vertex once: k == i is the own face
+                    if (k == i || glm::dot(own, unit[k]) >= cosCrease) sum += faceN[begin[k]];
                 const float len = glm::length(sum);
                 cornerN[i] = len > 0 ? sum / len : own;
             }
         } else {
-            clusterCornerNormals(begin, end, faceN, faceU, cosCrease, cornerN);
+            clusterCornerNormals(begin, end, faceN, unit, cosCrease, cornerN);
         }
         // One output vertex per distinct corner normal at this vertex.
         const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
@@ -367,9 +388,15 @@ void computeNormals(scene::Mesh& mesh, const std::vector<glm::vec3>& pos, std::v
                 mesh.normals.push_back(cornerN[i]);
             }
             Tri& t = tris[begin[i]];
-            t[cornerOf(t, v)] = out | 0x80000000u; // marked as remapped; unmarked below
+            t[cornerOf(t, v)] = out | 0x80000000u; // marked as remapped; unmarked by computeNormals
         }
     }
+}
+
+/// Crease-angle normals, the index array written once the face normals and the vertex → face
+/// table are gone (the load's memory peak at scale).
+void computeNormals(scene::Mesh& mesh, const std::vector<glm::vec3>& pos, std::vector<Tri>& tris, double creaseDeg) {
+    splitCornersByNormal(mesh, pos, tris, creaseDeg);
     mesh.indices.resize(3 * tris.size());
     for (size_t f = 0; f < tris.size(); ++f)
         for (int k = 0; k < 3; ++k) mesh.indices[3 * f + k] = tris[f][k] & 0x7fffffffu;
@@ -384,38 +411,52 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options) {
     r.inputVertices = mesh.positions.size();
     r.inputFaces = mesh.triangleCount();
     std::vector<Tri> tris = triangles(mesh);
-
-    const std::vector<char> ok = dropNonFinite(mesh, tris, r);
-    scene::Aabb box;
-    for (size_t i = 0; i < mesh.positions.size(); ++i)
-        if (ok[i]) box.add(mesh.positions[i]);
-    const double diag = box.empty() ? 0.0 : glm::length(glm::dvec3(box.extent()));
-    const double tol = std::max(0.0, options.mergeTolerance) * diag;
-
-    const std::vector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, r);
-    for (Tri& t : tris)
-        for (uint32_t& v : t) v = rep[v];
-    dropDegenerate(mesh.positions, tris, tol, r);
-    dropDuplicateFaces(mesh.positions.size(), tris, r);
-
-    // Compact: keep referenced vertices, in their original order.
-    std::vector<uint32_t> newIndex(mesh.positions.size(), kNone);
-    for (const Tri& t : tris)
-        for (uint32_t v : t) newIndex[v] = 0;
+    std::vector<uint32_t>().swap(mesh.indices); // tris hold them now: peak memory is what counts at scale
     std::vector<glm::vec3> pos;
-    pos.reserve(mesh.positions.size());
-    for (size_t i = 0; i < newIndex.size(); ++i) {
-        if (newIndex[i] == kNone) continue;
-        newIndex[i] = static_cast<uint32_t>(pos.size());
-        pos.push_back(mesh.positions[i]);
+    {
+        // Each temporary lives in this block only, so that none is held through computeNormals
+        // (the peak: face normals, vertex → faces and the output arrays at once).
+        const std::vector<char> ok = dropNonFinite(mesh, tris, r);
+        scene::Aabb box;
+        for (size_t i = 0; i < mesh.positions.size(); ++i)
+            if (ok[i]) box.add(mesh.positions[i]);
+        const double diag = box.empty() ? 0.0 : glm::length(glm::dvec3(box.extent()));
+        const double tol = std::max(0.0, options.mergeTolerance) * diag;
+
+        const std::vector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, r);
+        for (Tri& t : tris)
+            for (uint32_t& v : t) v = rep[v];
+        dropDegenerate(mesh.positions, tris, tol, r);
+        dropDuplicateFaces(mesh.positions.size(), tris, r);
+
+        // Compact: keep referenced vertices, in their original order.
+        std::vector<uint32_t> newIndex(mesh.positions.size(), kNone);
+        for (const Tri& t : tris)
+            for (uint32_t v : t) newIndex[v] = 0;
+        size_t kept = 0;
+        for (const uint32_t v : newIndex) kept += v != kNone;
+        pos.reserve(kept);
+        for (size_t i = 0; i < newIndex.size(); ++i) {
+            if (newIndex[i] == kNone) continue;
+            newIndex[i] = static_cast<uint32_t>(pos.size());
+            pos.push_back(mesh.positions[i]);
+        }
+        // Every finite vertex is either merged away, kept, or isolated.
+        r.isolatedVertices = r.inputVertices - r.nonFiniteVertices - r.mergedVertices - pos.size();
+        for (Tri& t : tris)
+            for (uint32_t& v : t) v = newIndex[v];
     }
-    // Every finite vertex is either merged away, kept, or isolated.
-    r.isolatedVertices = r.inputVertices - r.nonFiniteVertices - r.mergedVertices - pos.size();
-    for (Tri& t : tris)
-        for (uint32_t& v : t) v = newIndex[v];
+    std::vector<glm::vec3>().swap(mesh.positions); // computeNormals writes them anew
+    std::vector<glm::vec3>().swap(mesh.normals);
 
     if (options.fixOrientation) fixOrientation(pos.size(), tris, r);
     computeNormals(mesh, pos, tris, options.creaseAngleDeg);
+    std::vector<Tri>().swap(tris);
+    std::vector<glm::vec3>().swap(pos);
+    // The slack left for crease splits would stay resident for the model's life. Positions keep one
+    // spare vertex (Embree's last load, scene::reserveSpareVertex).
+    fitCapacity(mesh.positions, 1);
+    fitCapacity(mesh.normals, 0);
     mesh.chunks.clear(); // indices changed: chunk again (loadModel does)
     mesh.parts.clear();
     r.outputVertices = mesh.positions.size();
