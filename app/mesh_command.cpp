@@ -19,16 +19,20 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
     const auto& r = m.report;
     geometry::scene::Aabb bounds;
     size_t triangles = 0, vertices = 0;
+    uint64_t placed = 0;
     for (const auto& mesh : m.meshes) {
-        bounds.add(mesh.worldBounds());
+        if (!mesh.instanced()) bounds.add(mesh.worldBounds());
+        for (size_t i = 0; mesh.instanced() && i < mesh.instances.size(); ++i) bounds.add(mesh.placementBounds(i));
         triangles += mesh.triangleCount();
+        placed += mesh.placedTriangleCount();
         vertices += mesh.positions.size();
     }
     nlohmann::json j;
     j["format"] = m.format;
     j["up"] = std::string(geometry::io::upAxisName(m.up));
     j["meshes"] = m.meshes.size();
-    j["triangles"] = triangles;
+    j["triangles"] = triangles;     // held once
+    j["placed_triangles"] = placed; // a glTF mesh several nodes use, once per node
     j["vertices"] = vertices;
     j["bounds"] = {{"min", {bounds.lo.x, bounds.lo.y, bounds.lo.z}}, {"max", {bounds.hi.x, bounds.hi.y, bounds.hi.z}}};
     j["cleanup"] = {{"input_vertices", r.inputVertices},
@@ -54,7 +58,7 @@ void printText(const nlohmann::json& j) {
     std::cout << "format     " << j["format"].get<std::string>() << "\n"
               << "up axis    " << j["up"].get<std::string>() << " (turned to +y)\n"
               << "meshes     " << j["meshes"] << "\n"
-              << "triangles  " << j["triangles"] << "\n"
+              << "triangles  " << j["triangles"] << " (placed: " << j["placed_triangles"] << ")\n"
               << "vertices   " << j["vertices"] << "\n"
               << "bounds     " << b["min"].dump() << " .. " << b["max"].dump() << "\n"
               << "cleanup\n";
