@@ -178,12 +178,21 @@ TEST_F(MeshLoading, BinaryPly) { expectClosedTetra(loadModel(write("tetra.ply", 
 
 TEST_F(MeshLoading, ProgressReportsEveryStage) {
     std::vector<std::string> stages;
+    float cleaned = 0.f; // cleanup's fraction only grows, stage by stage
     (void)loadModel(write("tetra.stl", binaryStl(tetra())), {}, [&](float f, std::string_view stage) {
         EXPECT_GE(f, 0.f);
         EXPECT_LE(f, 1.f);
+        if (stage.starts_with("cleaning")) {
+            EXPECT_GE(f, cleaned) << stage;
+            cleaned = f;
+        }
         if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
     });
-    EXPECT_EQ(stages, (std::vector<std::string>{"reading", "cleaning", "chunking"}));
+    EXPECT_EQ(stages,
+              (std::vector<std::string>{"reading", "cleaning: non-finite vertices", "cleaning: merging vertices",
+                                        "cleaning: degenerate and duplicate faces", "cleaning: normals",
+                                        "cleaning: done", "chunking"}));
+    EXPECT_EQ(cleaned, 1.f);
 }
 
 TEST_F(MeshLoading, RoundTripEveryFormat) {

@@ -13,7 +13,8 @@ namespace geometry::io {
 
 namespace detail {
 // Defined in openmesh_io.cpp (no header of its own: loadModel() is its only caller).
-scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts);
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts,
+                             const Progress& progress);
 } // namespace detail
 
 namespace {
@@ -84,13 +85,12 @@ LoadedModel readModel(const std::string& path, const CleanupOptions& options, co
 
     report(progress, 0.f, "reading");
     CleanupReport reading; // what the reader did: polygon counters, corners welded
-    scene::Mesh mesh = detail::readOpenMeshFile(path, ext, reading);
+    scene::Mesh mesh = detail::readOpenMeshFile(path, ext, reading, progress);
     report(progress, 1.f, "reading");
 
-    report(progress, 0.f, "cleaning");
     LoadedModel model;
     model.format = ext;
-    model.report = cleanMesh(mesh, options);
+    model.report = cleanMesh(mesh, options, progress);
     if (reading.inputVertices > 0) { // the reader welded bit-equal corners (binary STL): count them too
         model.report.inputVertices = reading.inputVertices;
         model.report.mergedVertices += reading.mergedVertices;
@@ -98,7 +98,6 @@ LoadedModel readModel(const std::string& path, const CleanupOptions& options, co
     model.report.polygonsTriangulated = reading.polygonsTriangulated;
     model.report.nonPlanarFaces = reading.nonPlanarFaces;
     model.report.earClipFallbacks = reading.earClipFallbacks;
-    report(progress, 1.f, "cleaning");
     if (model.report.inputFaces == 0) throw std::runtime_error(path + ": the file has no triangles");
     if (mesh.triangleCount() == 0) throw std::runtime_error(path + ": no triangles left after cleanup");
 

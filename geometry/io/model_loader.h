@@ -65,7 +65,8 @@ struct LoadedModel {
 /// Cleans one triangle mesh in place (docs/design.md §2.1: drop NaN/Inf vertices and their faces, degenerate
 /// faces, merge duplicates, remove duplicate faces and isolated vertices, crease-angle normals,
 /// optional orientation fix) and returns what it did. Does not chunk.
-CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {});
+/// `progress` hears "cleaning: STAGE" at each stage's start, the fraction of the whole cleanup done.
+CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {}, const Progress& progress = {});
 
 /// Writes a mesh file (format from the extension: obj, stl, off, ply): binary STL directly, every
 /// triangle kept; the others through OpenMesh. Throws std::runtime_error naming the file on failure.

@@ -51,8 +51,10 @@
 
 namespace geometry::io::detail {
 
-/// Reads an OBJ/STL/OFF/PLY file (ext: lower case, no dot) into one uncleaned mesh.
-scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts);
+/// Reads an OBJ/STL/OFF/PLY file (ext: lower case, no dot) into one uncleaned mesh; binary STL
+/// reports its progress as "reading".
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts,
+                             const Progress& progress);
 
 namespace {
 
@@ -762,12 +764,13 @@ scene::Mesh readObj(const std::string& path, CleanupReport& counts) {
 
 } // namespace
 
-scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts) {
+scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, CleanupReport& readerCounts,
+                             const Progress& progress) {
     const uint64_t size = checkedFileSize(path);
     if (ext == "stl") {
         // Binary STL never goes through OpenMesh: its reader merges vertices through a std::map
         // whose comparator breaks on NaN, and drops degenerate facets silently.
-        if (validateStl(path, size) == StlKind::Binary) return readBinaryStl(path, size, readerCounts);
+        if (validateStl(path, size) == StlKind::Binary) return readBinaryStl(path, size, readerCounts, 0, progress);
         return readAsciiStl(path, readAll(path, size));
     }
     if (ext == "obj") return readObj(path, readerCounts);

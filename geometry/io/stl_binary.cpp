@@ -135,7 +135,7 @@ struct RangeWeld {
     size_t welded = 0;
 };
 
-void weldRange(const char* data, RangeWeld& r, std::vector<uint32_t>& indices) {
+void weldRange(const char* data, RangeWeld& r, std::vector<uint32_t>& indices, const Progress& progress = {}) {
     r.welder = Welder((r.last - r.first) * 3 / 5); // CAD surfaces: ~0.5 distinct corners per facet
     const char* released = data + kHeaderBytes + kFacetBytes * r.first;
     for (size_t t = r.first; t < r.last; ++t) {
@@ -149,13 +149,15 @@ void weldRange(const char* data, RangeWeld& r, std::vector<uint32_t>& indices) {
         if (facet - released >= kReleaseBytes) {
             MappedFile::release(released, facet);
             released = facet;
+            if (progress) progress(float(t - r.first) / float(r.last - r.first), "reading");
         }
     }
 }
 
 } // namespace
 
-scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport& counts, unsigned threads) {
+scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport& counts, unsigned threads,
+                          const Progress& progress) {
     const size_t n = (size - kHeaderBytes) / kFacetBytes;
     const MappedFile file(path, size);
     if (threads == 0) // automatic: as many as the cores, each with enough facets to be worth it
@@ -174,7 +176,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
         std::vector<std::jthread> workers;
         for (unsigned i = 1; i < threads; ++i)
             workers.emplace_back([&, i] { weldRange(file.data(), ranges[i], mesh.indices); });
-        weldRange(file.data(), ranges[0], mesh.indices);
+        weldRange(file.data(), ranges[0], mesh.indices, progress); // this thread: progress may be reported
     }
     // The ranges in order, each range's corners welded against what came before: the result is
     // what one thread reading the file front to back would give.

@@ -14,7 +14,8 @@ namespace geometry::io::detail {
 /// mergedVertices, the corners welded here; the mesh's positions are the distinct corners in
 /// order of first use (the same with any thread count; 0: one per core for files large enough to
 /// gain from it). Throws std::runtime_error "PATH: problem".
+/// `progress` hears "reading" with the fraction of the first range read (the calling thread's).
 [[nodiscard]] scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport& counts,
-                                        unsigned threads = 0);
+                                        unsigned threads = 0, const Progress& progress = {});
 
 } // namespace geometry::io::detail
