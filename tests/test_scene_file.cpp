@@ -402,6 +402,8 @@ TEST(SceneFile, EveryErrorIsOneLineNamingTheFileAndTheKey) {
          "meshes[0].grid.count[0]: expected an integer in 1..1048576"},
         {R"({"meshes": [{"builtin": "plane", "grid": {"count": [1024, 1024, 2], "spacing": [1, 1, 1]}}]})",
          "meshes[0].grid.count: 2097152 placements; at most 1048576"},
+        {R"({"meshes": [{"builtin": "plane", "translate": [3e38, 0, 0], "instances": [{"translate": [3e38, 0, 0]}]}]})",
+         "meshes[0]: 'ground' placement 0 lies beyond the float range"},
     };
     const fs::path dir = freshDir("errors");
     int index = 0;

@@ -310,6 +310,18 @@ void instance(const Reader& r, const std::string& key, scene::Mesh& mesh, const 
     mesh.instances = std::move(out);
 }
 
+/// Placements compose: two finite translations or scales can reach infinity, and a mesh there has
+/// no bounds to frame, cull or trace.
+void checkFinitePlacements(const Reader& r, const std::string& key, const scene::Mesh& mesh) {
+    const auto finite = [](const glm::vec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
+    for (size_t i = 0; i < mesh.placementCount(); ++i)
+        if (const scene::Aabb b = mesh.placementBounds(i); !b.empty() && !(finite(b.lo) && finite(b.hi)))
+            r.fail(key, "'" + mesh.name + "' placement " + std::to_string(i) +
+                            " lies beyond the float range (translate, scale or instances too large)");
+}
+
 /// A built-in scene's camera follows its meshes, so its view of them stays the same.
 scene::Camera place(scene::Camera c, const Placement& p) {
     c.eye = glm::vec3(p.matrix * glm::vec4(c.eye, 1.f));
@@ -464,6 +476,7 @@ void readMeshEntry(const Reader& r, const json& e, const std::string& key, const
     for (scene::Mesh& m : meshes) {
         place(m, placement);
         instance(r, key, m, instances);
+        checkFinitePlacements(r, key, m);
         if (color) m.color = *color;
         scene.meshes.push_back(std::move(m));
     }
