@@ -21,8 +21,9 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
     size_t triangles = 0, vertices = 0;
     uint64_t placed = 0;
     for (const auto& mesh : m.meshes) {
-        if (!mesh.instanced()) bounds.add(mesh.worldBounds());
-        for (size_t i = 0; mesh.instanced() && i < mesh.instances.size(); ++i) bounds.add(mesh.placementBounds(i));
+        if (!mesh.instanced()) bounds.add(mesh.worldBounds()); // the vertices' box, as before instancing
+        else
+            for (size_t i = 0; i < mesh.instances.size(); ++i) bounds.add(mesh.placementBounds(i));
         triangles += mesh.triangleCount();
         placed += mesh.placedTriangleCount();
         vertices += mesh.positions.size();
