@@ -5,6 +5,7 @@
 #include "geometry/io/model_loader.h"
 #include "geometry/io/scene_file.h"
 #include "geometry/io/up_axis.h"
+#include "geometry/scene/compact_vertices.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -20,7 +21,14 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
     geometry::scene::Aabb bounds;
     size_t triangles = 0, vertices = 0;
     uint64_t placed = 0;
+    size_t compact = 0;
+    float step = 0.f; // the coarsest compact mesh's
     for (const auto& mesh : m.meshes) {
+        if (!mesh.instanced())
+            if (const std::optional<float> s = geometry::scene::compactStep(mesh)) {
+                ++compact;
+                step = std::max(step, *s);
+            }
         if (!mesh.instanced()) bounds.add(mesh.worldBounds()); // the vertices' box, as before instancing
         else
             for (size_t i = 0; i < mesh.instances.size(); ++i) bounds.add(mesh.placementBounds(i));
@@ -36,6 +44,13 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
     j["placed_triangles"] = placed; // a glTF mesh several nodes use, once per node
     j["vertices"] = vertices;
     j["bounds"] = {{"min", {bounds.lo.x, bounds.lo.y, bounds.lo.z}}, {"max", {bounds.hi.x, bounds.hi.y, bounds.hi.z}}};
+    // What the GL buffers hold (geometry/scene/compact_vertices.h): chunk-local positions of
+    // kPositionBits on a grid of `step`, each coordinate within step / 2 of the file's (after cleanup).
+    j["gl_positions"] = {{"compact_meshes", compact},
+                         {"float_meshes", m.meshes.size() - compact},
+                         {"bits", geometry::scene::kPositionBits},
+                         {"step", step},
+                         {"max_error", 0.5f * step}};
     j["cleanup"] = {{"input_vertices", r.inputVertices},
                     {"input_faces", r.inputFaces},
                     {"non_finite_vertices", r.nonFiniteVertices},
@@ -61,8 +76,11 @@ void printText(const nlohmann::json& j) {
               << "meshes     " << j["meshes"] << "\n"
               << "triangles  " << j["triangles"] << " (placed: " << j["placed_triangles"] << ")\n"
               << "vertices   " << j["vertices"] << "\n"
-              << "bounds     " << b["min"].dump() << " .. " << b["max"].dump() << "\n"
-              << "cleanup\n";
+              << "bounds     " << b["min"].dump() << " .. " << b["max"].dump() << "\n";
+    if (const auto& g = j["gl_positions"]; g["compact_meshes"] != 0)
+        std::cout << "gl         " << g["compact_meshes"] << " of " << j["meshes"] << " meshes compact: " << g["bits"]
+                  << "-bit chunk-local positions, step " << g["step"] << ", error <= " << g["max_error"] << "\n";
+    std::cout << "cleanup\n";
     for (const auto& [key, value] : j["cleanup"].items())
         if (key != "notes") std::cout << "  " << key << ' ' << value << "\n";
     for (const auto& note : j["cleanup"]["notes"]) std::cout << "  note: " << note.get<std::string>() << "\n";

@@ -1,6 +1,7 @@
 #pragma once
 // The scene's meshes in GL buffers, drawn chunk by chunk.
 #include "geometry/lod/caster_lod.h"
+#include "geometry/scene/compact_vertices.h"
 #include "geometry/scene/scene.h"
 #include "geometry/shadow/culling.h"
 #include "gl/gl_api.h"
@@ -27,6 +28,13 @@ struct GpuMesh {
     glm::vec3 color{0.7f};
     std::vector<geometry::scene::Chunk> chunks;
     std::vector<geometry::scene::TriangleRun> parts; // as Mesh::parts
+    /// Compact vertices (geometry::scene::compactVertices): 16-bit chunk-local positions on a grid of
+    /// `step` in vao, the wide chunks' float positions in wideVao (same index buffer), 16-bit indices
+    /// drawn from each chunk's first vertex. Empty: float positions and 32-bit indices in vao
+    /// (instanced and unchunked meshes).
+    std::vector<geometry::scene::CompactChunk> compact;
+    float step = 0.f;
+    GLuint wideVao = 0, wideVbo = 0;
     uint64_t triangles = 0;
     bool twoSided = true; // casts from both faces (open surfaces)
     GpuLod lod;           // vao 0: none (instanced meshes draw their original triangles)
@@ -43,6 +51,9 @@ public:
     /// The vertex attribute of the model matrix (a mat4: this location and the next three), as
     /// eye.vert and depth.vert declare it.
     static constexpr GLuint kModelAttribute = 2;
+    /// The vertex attribute aDecode (origin, step): a vertex's position is origin + step · aPosition;
+    /// (0, 0, 0, 1) for float positions.
+    static constexpr GLuint kDecodeAttribute = 6;
 
     explicit GpuScene(const geometry::scene::Scene& scene);
     ~GpuScene();
@@ -69,7 +80,7 @@ public:
         std::vector<const geometry::lod::LodRange*>& simplified = simplified_; // reused: no per-pass allocation
         simplified.clear();
         bind(m);
-        RunMerger runs;
+        RunMerger runs(m);
         for (size_t i = 0; i < m.chunks.size(); ++i) {
             const geometry::scene::Chunk& c = m.chunks[i];
             const geometry::shadow::ClipOverlap o = overlap(c.bounds);
@@ -84,11 +95,13 @@ public:
                     continue;
                 }
             }
+            runs.chunk(i);
             for (const geometry::scene::TriangleRun& r : visible_) runs.add(r.firstTriangle, r.triangleCount);
         }
         count.drawn = runs.finish();
         if (simplified.empty()) return count;
         glBindVertexArray(m.lod.vao);
+        glVertexAttrib4f(kDecodeAttribute, 0.f, 0.f, 0.f, 1.f); // the levels' positions are floats
         for (const auto* r : simplified) {
             drawRun(r->firstTriangle, r->triangleCount);
             count.drawn += r->triangleCount;
@@ -102,11 +115,13 @@ public:
     template <class Overlap> uint64_t draw(const GpuMesh& m, Overlap&& overlap) const noexcept {
         if (m.instanced()) return drawInstances(m, overlap);
         bind(m);
-        RunMerger runs;
-        for (const auto& c : m.chunks) {
+        RunMerger runs(m);
+        for (size_t i = 0; i < m.chunks.size(); ++i) {
+            const geometry::scene::Chunk& c = m.chunks[i];
             const geometry::shadow::ClipOverlap o = overlap(c.bounds);
             if (o == geometry::shadow::ClipOverlap::Outside) continue;
             visibleRuns(m, c, o, overlap);
+            runs.chunk(i);
             for (const geometry::scene::TriangleRun& r : visible_) runs.add(r.firstTriangle, r.triangleCount);
         }
         return runs.finish();
@@ -114,15 +129,18 @@ public:
 
 private:
     /// Binds the mesh's vertex array; a mesh that is not instanced gets its one model matrix as
-    /// aModel's current value (context state, not the VAO's: set per mesh).
+    /// aModel's current value (context state, not the VAO's: set per mesh), and float positions
+    /// until a compact mesh's chunk says otherwise (RunMerger::chunk).
     static void bind(const GpuMesh& m) noexcept {
         glBindVertexArray(m.vao);
         for (GLuint c = 0; c < 4; ++c) glVertexAttrib4fv(kModelAttribute + c, &m.transform[int(c)][0]);
+        glVertexAttrib4f(kDecodeAttribute, 0.f, 0.f, 0.f, 1.f);
     }
     /// Every triangle of `m` once per placement that `overlap(box)` does not put Outside:
     /// consecutive placements in view share one instanced call.
     template <class Overlap> uint64_t drawInstances(const GpuMesh& m, Overlap& overlap) const noexcept {
         glBindVertexArray(m.vao);
+        glVertexAttrib4f(kDecodeAttribute, 0.f, 0.f, 0.f, 1.f);
         const auto count = GLsizei(m.triangles * 3);
         uint64_t placed = 0;
         size_t first = 0, run = 0;
@@ -149,9 +167,22 @@ private:
         glDrawElements(GL_TRIANGLES, GLsizei(triangles * 3), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(uintptr_t(firstTriangle) * 3 * sizeof(uint32_t)));
     }
-    /// Collects runs of consecutive triangles and draws each maximal run with one call.
+    /// Collects runs of consecutive triangles and draws each maximal run with one call; a compact
+    /// mesh's runs do not cross chunks (each chunk has its own origin and first vertex).
     class RunMerger {
     public:
+        explicit RunMerger(const GpuMesh& m) noexcept : mesh_(m) {}
+        /// The runs that follow are chunk i's: its vertex array, and its grid where it is narrow.
+        void chunk(size_t i) noexcept {
+            if (mesh_.compact.empty() || i == chunk_) return;
+            flush();
+            chunk_ = i;
+            const geometry::scene::CompactChunk& c = mesh_.compact[i];
+            if (c.wide != wide_) glBindVertexArray(c.wide ? mesh_.wideVao : mesh_.vao);
+            wide_ = c.wide;
+            if (c.wide) glVertexAttrib4f(kDecodeAttribute, 0.f, 0.f, 0.f, 1.f);
+            else glVertexAttrib4f(kDecodeAttribute, c.origin.x, c.origin.y, c.origin.z, mesh_.step);
+        }
         void add(uint32_t first, uint32_t count) noexcept {
             if (count_ > 0 && first == first_ + count_) {
                 count_ += count;
@@ -169,10 +200,17 @@ private:
 
     private:
         void flush() noexcept {
-            drawRun(first_, count_);
+            if (mesh_.compact.empty()) drawRun(first_, count_);
+            else if (count_ > 0)
+                glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(count_ * 3), GL_UNSIGNED_SHORT,
+                                         reinterpret_cast<const void*>(uintptr_t(first_) * 3 * sizeof(uint16_t)),
+                                         GLint(mesh_.compact[chunk_].firstVertex));
             drawn_ += count_;
             count_ = 0;
         }
+        const GpuMesh& mesh_;
+        size_t chunk_ = SIZE_MAX;
+        bool wide_ = false; // bind() bound vao
         uint32_t first_ = 0, count_ = 0;
         uint64_t drawn_ = 0;
     };

@@ -157,6 +157,13 @@ TEST(Cli, MeshInfoAndCleanReportTheCleanup) {
     EXPECT_EQ(j.at("triangles"), 2);
     EXPECT_EQ(j.at("cleanup").at("merged_vertices"), 2);
     EXPECT_EQ(j.at("cleanup").at("degenerate_faces"), 1);
+    // The GL form (geometry/scene/compact_vertices.h): largest coordinate 1, so 8 float spacings
+    // there, 2^-20, half of it the error.
+    const nlohmann::json& gl = j.at("gl_positions");
+    EXPECT_EQ(gl.at("compact_meshes"), 1);
+    EXPECT_EQ(gl.at("bits"), 16);
+    EXPECT_EQ(gl.at("step").get<double>(), std::ldexp(1.0, -20));
+    EXPECT_EQ(gl.at("max_error").get<double>(), std::ldexp(1.0, -21));
     const CommandResult clean = run("mesh clean " + (dir / "in.obj").string() + " " + (dir / "out.stl").string());
     ASSERT_EQ(clean.exitCode, 0) << clean.output;
     const CommandResult again = run("mesh info --json " + (dir / "out.stl").string());

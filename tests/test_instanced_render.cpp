@@ -1,6 +1,8 @@
 // Instanced meshes drawn with GPU instancing (renderer/gpu_scene.h) and traced through Embree
 // instances give the picture and the verdicts of the same scene flattened into one mesh per
-// placement: the eye image, the shadow mask and every pixel's truth class identical.
+// placement: the eye image, the shadow mask and every pixel's truth class identical. The flattened
+// meshes draw from compact vertices, the instanced ones from floats (geometry/scene/compact_vertices.h),
+// so this compares those too; and a chunked scene draws the pixels its unchunked twin (floats) does.
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/analysis/inspection.h"
 #include "geometry/io/preset.h"
@@ -92,4 +94,24 @@ TEST(InstancedRender, EqualsTheFlattenedScenePixelForPixel) {
         for (const uint8_t o : *a.inspection.occluded) shadowed += o;
         EXPECT_GT(shadowed, 50u);
     }
+}
+
+TEST(CompactRender, DrawsThePixelsOfTheSameTrianglesInFloats) {
+    const auto context = renderer::createOSMesaContext();
+    const Scene chunked = makePlatformScene();
+    Scene floats = chunked; // one run of the same triangles in the same order: GpuScene keeps floats
+    for (Mesh& m : floats.meshes) {
+        m.chunks.clear();
+        m.parts.clear();
+        reserveSpareVertex(m);
+    }
+    ShadowSettings settings = geometry::io::loadPreset(kResources + "presets/pssm3.json");
+    const Frame a = render(chunked, settings), b = render(floats, settings);
+    ASSERT_EQ(a.eye.rgba.size(), b.eye.rgba.size());
+    EXPECT_EQ(0, std::memcmp(a.eye.rgba.data(), b.eye.rgba.data(), a.eye.rgba.size()));
+    ASSERT_EQ(a.inspection.shadow.size(), b.inspection.shadow.size());
+    EXPECT_EQ(0, std::memcmp(a.inspection.shadow.data(), b.inspection.shadow.data(),
+                             a.inspection.shadow.size() * sizeof(float)));
+    EXPECT_TRUE(a.inspection.classes == b.inspection.classes);
+    EXPECT_LT(a.eyeTriangles, b.eyeTriangles); // the chunks culled: the compact path did the drawing
 }

@@ -1,5 +1,7 @@
 #include "geometry/scene/chunking.h"
 
+#include "geometry/scene/compact_vertices.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -93,6 +95,7 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
         }
         mesh.chunks.push_back(c);
     }
+    snapToGrid(mesh); // the GL buffers' compact positions are these exactly (compact_vertices.h)
     reboundRuns(mesh);
 }
 

@@ -11,8 +11,9 @@ inline constexpr uint32_t kMaxPartTriangles = 256;
 /// Reorders the mesh's triangles into spatially coherent runs of at most `maxTriangles`
 /// (recursive median split along the longest axis) and fills mesh.chunks with their
 /// world-space bounds, so culling against a light frustum rejects whole runs. The same split
-/// goes on inside each chunk down to runs of at most `maxPartTriangles`: mesh.parts. Leaves the
-/// positions spare capacity for one vertex (reserveSpareVertex).
+/// goes on inside each chunk down to runs of at most `maxPartTriangles`: mesh.parts. Moves the
+/// positions onto the mesh's grid (snapToGrid: at most 4 float spacings at the largest coordinate).
+/// Leaves the positions spare capacity for one vertex (reserveSpareVertex).
 void chunkMesh(Mesh& mesh, uint32_t maxTriangles = kMaxChunkTriangles, uint32_t maxPartTriangles = kMaxPartTriangles);
 
 /// Recomputes every chunk's and part's world bounds from its own triangles under mesh.transform

@@ -6,6 +6,9 @@ layout(location = 0) in vec3 aPosition;
 invariant gl_Position; // the eye pass's depth pre-pass (depth.vert) must match eye.vert bit for bit
 // Object → world: per instance (GpuScene draws instanced meshes so), else one value per draw.
 layout(location = 2) in mat4 aModel;
+// Compact positions (GpuScene): the chunk's grid origin and step, one value per draw; (0, 0, 0, 1)
+// for float positions. origin + step · q is exact in float (geometry/scene/compact_vertices.h).
+layout(location = 6) in vec4 aDecode;
 #ifdef EYE_DEPTH
 uniform mat4 uViewProj;
 #else
@@ -15,7 +18,7 @@ uniform int uSplit;
 out vec3 vWorldPos; // only the variants that compute linear depth need it
 #endif
 void main() {
-    vec4 world = aModel * vec4(aPosition, 1.0);
+    vec4 world = aModel * vec4(aDecode.xyz + aDecode.w * aPosition, 1.0);
 #if defined(LINEAR_Z) || defined(MOMENTS)
     vWorldPos = world.xyz;
 #endif
