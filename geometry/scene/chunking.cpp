@@ -3,7 +3,10 @@
 #include "geometry/scene/compact_vertices.h"
 
 #include <algorithm>
+#include <bit>
+#include <exception>
 #include <numeric>
+#include <thread>
 
 namespace geometry::scene {
 
@@ -11,12 +14,17 @@ namespace {
 
 using Range = std::pair<uint32_t, uint32_t>; // [begin, end) into the triangle order
 
+/// Ranges this large are split on two threads (the halves are independent; each thread keeps its own
+/// lists, joined in order, so the result is the same for any thread count).
+constexpr uint32_t kParallelTriangles = 1u << 16;
+
 struct Splitter {
     const std::vector<glm::vec3>& centroids;
     uint32_t maxTriangles, maxPartTriangles;
     std::vector<Range> chunks, parts; // each in order of begin
 
-    void split(std::vector<uint32_t>& order, uint32_t begin, uint32_t end, bool inChunk) {
+    /// `spawn`: levels below this one that may still hand their upper half to a new thread.
+    void split(std::vector<uint32_t>& order, uint32_t begin, uint32_t end, bool inChunk, int spawn) {
         if (!inChunk && end - begin <= maxTriangles) {
             chunks.emplace_back(begin, end);
             inChunk = true;
@@ -32,10 +40,38 @@ struct Splitter {
         const uint32_t mid = begin + (end - begin) / 2;
         std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
                          [&](uint32_t a, uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
-        split(order, begin, mid, inChunk);
-        split(order, mid, end, inChunk);
+        if (spawn <= 0 || end - begin < kParallelTriangles) {
+            split(order, begin, mid, inChunk, 0);
+            split(order, mid, end, inChunk, 0);
+            return;
+        }
+        Splitter upper{centroids, maxTriangles, maxPartTriangles, {}, {}};
+        std::exception_ptr failed;
+        std::thread t([&] {
+            try {
+                upper.split(order, mid, end, inChunk, spawn - 1);
+            } catch (...) {
+                failed = std::current_exception();
+            }
+        });
+        try {
+            split(order, begin, mid, inChunk, spawn - 1);
+        } catch (...) {
+            t.join();
+            throw;
+        }
+        t.join();
+        if (failed) std::rethrow_exception(failed);
+        chunks.insert(chunks.end(), upper.chunks.begin(), upper.chunks.end());
+        parts.insert(parts.end(), upper.parts.begin(), upper.parts.end());
     }
 };
+
+/// Levels of the split that may start a thread: enough for one per core.
+int spawnLevels() noexcept {
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    return int(std::bit_width(cores)) - 1 + (std::has_single_bit(cores) ? 0 : 1);
+}
 
 /// World bounds of a run's triangles: the box of the transformed vertices (a transformed local box
 /// is loose under rotation).
@@ -71,7 +107,7 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
     std::vector<uint32_t> order(triCount);
     std::iota(order.begin(), order.end(), 0u);
     Splitter splitter{centroids, maxTriangles, maxPartTriangles, {}, {}};
-    splitter.split(order, 0, triCount, false);
+    splitter.split(order, 0, triCount, false, spawnLevels());
 
     std::vector<uint32_t> indices(mesh.indices.size());
     for (uint32_t i = 0; i < triCount; ++i)
