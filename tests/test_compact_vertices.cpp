@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -88,6 +89,26 @@ TEST(CompactVertices, SnappedPositionsStayWithinHalfAStepOfTheOriginals) {
     // 40 m in steps of 2^-7 is 5120 counts: every chunk narrow.
     for (const CompactChunk& cc : c->chunks) EXPECT_FALSE(cc.wide);
     EXPECT_TRUE(c->floatPositions.empty());
+}
+
+// Coordinates at float's largest value stay finite: the nearest grid point, 2^128, is out of range,
+// so those round towards zero, less than a step away.
+TEST(CompactVertices, TheLargestFloatsStayFinite) {
+    const float big = std::numeric_limits<float>::max();
+    Mesh m = strip(glm::vec3(0.f), 1.f, 3);
+    m.positions[0] = glm::vec3(big, -big, 1e38f);
+    const std::vector<glm::vec3> original = m.positions;
+    chunkMesh(m);
+    const float step = gridStep(m);
+    EXPECT_EQ(step, std::ldexp(1.f, 107));
+    for (size_t i = 0; i < original.size(); ++i)
+        for (int a = 0; a < 3; ++a) {
+            ASSERT_TRUE(std::isfinite(m.positions[i][a])) << i << ' ' << a;
+            EXPECT_LT(std::abs(double(m.positions[i][a]) - double(original[i][a])), double(step));
+        }
+    // float's largest value is (2^24 - 1) · 2^104; the grid point below it, (2^21 - 1) · 2^107.
+    EXPECT_EQ(m.positions[0].x, std::ldexp(2097151.f, 107));
+    EXPECT_EQ(m.positions[0].y, -std::ldexp(2097151.f, 107));
 }
 
 TEST(CompactVertices, SharedVerticesAreStoredOncePerChunkAndDecodeAlikeInEach) {

@@ -106,8 +106,17 @@ float gridStep(const Mesh& mesh) noexcept {
 
 void snapToGrid(Mesh& mesh) noexcept {
     const double step = gridStep(mesh);
-    for (glm::vec3& p : mesh.positions)
-        if (finite(p)) p = glm::vec3(glm::round(glm::dvec3(p) / step) * step); // a multiple of the step: exact
+    constexpr double kLargest = std::numeric_limits<float>::max();
+    for (glm::vec3& p : mesh.positions) {
+        if (!finite(p)) continue;
+        for (int a = 0; a < 3; ++a) {
+            double x = std::round(double(p[a]) / step) * step; // a multiple of the step: exact in float
+            // Within half a step of float's largest value, rounding up would leave its range: round
+            // towards zero instead (less than a step away).
+            if (std::abs(x) > kLargest) x = std::trunc(double(p[a]) / step) * step;
+            p[a] = float(x);
+        }
+    }
 }
 
 std::optional<float> compactStep(const Mesh& mesh) {

@@ -53,8 +53,8 @@ struct CompactVertices {
 /// The mesh's grid: kGridUlps float spacings (ulp) at its largest finite coordinate, a power of two.
 [[nodiscard]] float gridStep(const Mesh& mesh) noexcept;
 /// Moves every finite position to the nearest point of gridStep(mesh)'s grid (by at most half a step
-/// along each axis). chunkMesh does, so that what GL draws from compactVertices and what the truth
-/// traces from the mesh's own arrays are the same points.
+/// along each axis; less than a step, towards zero, within half a step of float's largest value). chunkMesh does, so
+/// that what GL draws from compactVertices and what the truth traces from the mesh's own arrays are the same points.
 void snapToGrid(Mesh& mesh) noexcept;
 /// compactVertices(mesh)'s step without building it (none where compactVertices gives none).
 [[nodiscard]] std::optional<float> compactStep(const Mesh& mesh);
