@@ -29,16 +29,16 @@ void vertexArray(GLuint& vao, GLuint& vbo, GLuint ebo, const std::vector<Positio
     glBindVertexArray(0);
 }
 
-/// A VAO as vertexArray's, with a new index buffer holding `indices`.
+/// A VAO as vertexArray's, with a new index buffer holding `indices` (filled through a target that
+/// no vertex array owns).
 template <class Position, class Index>
 void upload(GLuint& vao, GLuint& vbo, GLuint& ebo, const std::vector<Position>& positions,
             const std::vector<uint32_t>& normals, const std::vector<Index>& indices, GLenum positionType) {
-    vertexArray(vao, vbo, 0, positions, normals, positionType);
-    glBindVertexArray(vao); // an index buffer is bound within a vertex array
     glGenBuffers(1, &ebo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, bytes(indices), indices.data(), GL_STATIC_DRAW);
-    glBindVertexArray(0);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, ebo);
+    glBufferData(GL_COPY_WRITE_BUFFER, bytes(indices), indices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    vertexArray(vao, vbo, ebo, positions, normals, positionType);
 }
 
 /// Float positions, normals packed on the way (a vertex without one gets +y).

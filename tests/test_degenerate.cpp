@@ -37,7 +37,6 @@ renderer::GlContext& context() {
 }
 
 bool finite(const glm::vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool finite(const glm::mat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)

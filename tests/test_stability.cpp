@@ -23,12 +23,6 @@ using namespace geometry::scene;
 using namespace geometry::shadow;
 using namespace geometry::analysis;
 
-namespace {
-
-bool finite(const glm::vec3& x) { return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z); }
-
-} // namespace
-
 TEST(LightAngle, KnownAngles) {
     const glm::vec3 v = glm::normalize(glm::vec3(1, -0.2f, -0.5f));
     const glm::vec3 ref(-0.5f, -1.f, -0.3f);

@@ -40,7 +40,7 @@ constexpr size_t kCompactAboveTriangles = 8'000'000; // Impl::build: BVH memory 
 
 // ---- [SECTION] Small helpers ----------------------------------------------------------------
 
-bool finite(const glm::vec3& v) noexcept { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+using scene::finite;
 
 float maxAbs(const glm::vec3& v) noexcept { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 

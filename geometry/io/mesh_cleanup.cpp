@@ -3,7 +3,7 @@
 //
 // Index
 //   [SECTION] Cleanup report ............. CleanupReport::operator+=
-//   [SECTION] Small helpers .............. mix, tableSize, triangles, finite, fitCapacity
+//   [SECTION] Small helpers .............. mix, tableSize, triangles, fitCapacity
 //   [SECTION] Bad faces and duplicates ... dropNonFinite, mergeDuplicates, dropDegenerate, dropDuplicateFaces
 //   [SECTION] Orientation ................ VertexFaces, cornerOf, fixOrientation
 //   [SECTION] Normals .................... clusterCornerNormals, splitCornersByNormal, computeNormals
@@ -68,8 +68,6 @@ std::vector<Tri> triangles(const scene::Mesh& mesh) {
     return tris;
 }
 
-bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
 /// Reallocates `v` to its size plus `spare` when it holds more than 1/16 beyond that.
 template <class T> void fitCapacity(std::vector<T>& v, size_t spare) {
     const size_t want = v.size() + spare;
@@ -86,7 +84,7 @@ template <class T> void fitCapacity(std::vector<T>& v, size_t spare) {
 /// finite-vertex mask.
 std::vector<char> dropNonFinite(const scene::Mesh& mesh, std::vector<Tri>& tris, CleanupReport& r) {
     std::vector<char> ok(mesh.positions.size());
-    for (size_t i = 0; i < ok.size(); ++i) ok[i] = finite(mesh.positions[i]);
+    for (size_t i = 0; i < ok.size(); ++i) ok[i] = scene::finite(mesh.positions[i]);
     r.nonFiniteVertices = static_cast<size_t>(std::count(ok.begin(), ok.end(), 0));
     const size_t n = ok.size();
     std::erase_if(tris, [&](const Tri& t) {

@@ -1,10 +1,16 @@
 #pragma once
 // Axis-aligned bounding box; empty() until a point is added.
 #include <array>
+#include <cmath>
 #include <glm/glm.hpp>
 #include <limits>
 
 namespace geometry::scene {
+
+/// Every coordinate finite (not NaN, not ±inf).
+[[nodiscard]] inline bool finite(const glm::vec3& p) noexcept {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
 struct Aabb {
     glm::vec3 lo{std::numeric_limits<float>::max()};

@@ -67,11 +67,8 @@ struct Splitter {
     }
 };
 
-/// Levels of the split that may start a thread: enough for one per core.
-int spawnLevels() noexcept {
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    return int(std::bit_width(cores)) - 1 + (std::has_single_bit(cores) ? 0 : 1);
-}
+/// Levels of the split that may start a thread: enough for one per core, ⌈log2 cores⌉.
+int spawnLevels() noexcept { return int(std::bit_width(std::max(1u, std::thread::hardware_concurrency()) - 1)); }
 
 /// World bounds of a run's triangles: the box of the transformed vertices (a transformed local box
 /// is loose under rotation).

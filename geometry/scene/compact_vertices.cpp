@@ -12,8 +12,6 @@ constexpr uint32_t kUnseen = std::numeric_limits<uint32_t>::max();
 constexpr uint32_t kMaxChunkVertices = 1u << 16;                // 16-bit indices
 constexpr double kMaxCount = double((1u << kPositionBits) - 1); // the largest 16-bit count
 
-bool finite(const glm::vec3& p) noexcept { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
 /// The chunks must tile the index buffer in order, each naming vertices that exist.
 bool chunksTile(const Mesh& mesh) noexcept {
     uint32_t next = 0;
