@@ -57,6 +57,7 @@ nlohmann::json reportJson(const geometry::io::LoadedModel& m) {
                     {"non_finite_faces", r.nonFiniteFaces},
                     {"degenerate_faces", r.degenerateFaces},
                     {"merged_vertices", r.mergedVertices},
+                    {"merge_tolerance", r.mergeTolerance},
                     {"duplicate_faces", r.duplicateFaces},
                     {"isolated_vertices", r.isolatedVertices},
                     {"flipped_faces", r.flippedFaces},
@@ -91,7 +92,8 @@ void printText(const nlohmann::json& j) {
 geometry::io::LoadedModel load(const MeshOptions& o, bool turnUp) {
     geometry::io::CleanupOptions c;
     c.creaseAngleDeg = o.creaseAngleDeg;
-    c.mergeTolerance = o.mergeTolerance;
+    c.mergeTolerance = o.mergeToleranceOfDiagonal.value_or(o.mergeTolerance);
+    c.mergeToleranceOfDiagonal = o.mergeToleranceOfDiagonal.has_value();
     c.fixOrientation = o.fixOrientation;
     return geometry::io::loadModel(o.input, c, {}, turnUp ? o.up : std::optional(geometry::io::UpAxis::Y));
 }
@@ -118,9 +120,15 @@ void addCleanupOptions(CLI::App& cmd, MeshOptions& o) {
     cmd.add_option("--crease-angle", o.creaseAngleDeg, "Normals: sharper edges than this stay sharp (degrees)")
         ->check(CLI::Range(0.0, 180.0))
         ->capture_default_str();
-    cmd.add_option("--merge-tolerance", o.mergeTolerance, "Merge vertices closer than this × the bounds' diagonal")
+    CLI::Option* absolute =
+        cmd.add_option("--merge-tolerance", o.mergeTolerance, "Merge vertices closer than this, in model units")
+            ->check(CLI::Range(0.0, 1e30))
+            ->capture_default_str();
+    cmd.add_option("--merge-tolerance-of-diagonal", o.mergeToleranceOfDiagonal,
+                   "Instead: merge vertices closer than this fraction of the bounds' diagonal (one far-away "
+                   "triangle widens it)")
         ->check(CLI::Range(0.0, 0.1))
-        ->capture_default_str();
+        ->excludes(absolute);
     cmd.add_flag("--fix-orientation", o.fixOrientation, "Make face winding consistent per connected part");
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // `shadowscope mesh info FILE [--json]` and `shadowscope mesh clean IN OUT`.
+#include "geometry/io/model_loader.h"
 #include "geometry/io/up_axis.h"
 
 #include <optional>
@@ -15,7 +16,8 @@ struct MeshOptions {
     std::string input, output;
     bool json = false;
     double creaseAngleDeg = 30.0;
-    double mergeTolerance = 1e-6;
+    double mergeTolerance = geometry::io::kDefaultMergeTolerance; // model units
+    std::optional<double> mergeToleranceOfDiagonal;               // instead: a fraction of the bounds' diagonal
     bool fixOrientation = false;
     std::optional<geometry::io::UpAxis> up; // info: the file's up axis (default: its format's)
 };

@@ -28,6 +28,7 @@ CleanupReport& CleanupReport::operator+=(const CleanupReport& o) {
     nonFiniteFaces += o.nonFiniteFaces;
     degenerateFaces += o.degenerateFaces;
     mergedVertices += o.mergedVertices;
+    mergeTolerance = std::max(mergeTolerance, o.mergeTolerance);
     duplicateFaces += o.duplicateFaces;
     isolatedVertices += o.isolatedVertices;
     flippedFaces += o.flippedFaces;
@@ -424,7 +425,11 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
         for (size_t i = 0; i < mesh.positions.size(); ++i)
             if (ok[i]) box.add(mesh.positions[i]);
         const double diag = box.empty() ? 0.0 : glm::length(glm::dvec3(box.extent()));
-        const double tol = std::max(0.0, options.mergeTolerance) * diag;
+        // NaN and negative mean no tolerance (bit-equal points still merge); so does infinity, which
+        // has no cell size.
+        const double asked = std::isfinite(options.mergeTolerance) ? std::max(0.0, options.mergeTolerance) : 0.0;
+        const double tol = options.mergeToleranceOfDiagonal ? asked * diag : asked;
+        r.mergeTolerance = tol;
 
         stage(0.05f, "cleaning: merging vertices");
         const std::vector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, r);

@@ -73,6 +73,12 @@ LoadedModel loadModel(const std::string& path, const CleanupOptions& options, co
                       std::optional<UpAxis> up) {
     LoadedModel model = readModel(path, options, progress);
     turnUp(model, up.value_or(defaultUpAxis(model.format)));
+    // Finite transforms can compose to infinity (a glTF node's scale 1e38 on a translation 3e38).
+    for (const scene::Mesh& mesh : model.meshes)
+        if (const size_t i = mesh.firstPlacementBeyondFloat(); i < mesh.placementCount())
+            throw std::runtime_error(path + ": mesh '" + mesh.name + "'" +
+                                     (mesh.instanced() ? " placement " + std::to_string(i) : std::string()) +
+                                     " lies beyond the float range (its node transforms are too large)");
     return model;
 }
 

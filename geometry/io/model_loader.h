@@ -14,10 +14,17 @@
 
 namespace geometry::io {
 
+/// Vertices closer than this, in model units, merge by default (docs/design.md §2.1 "Merge
+/// tolerance"): 10 nm in a millimetre model, 10 µm in a metre one, below any CAD feature and above
+/// the rounding of six-decimal text exports. Absolute, so that one stray far-away triangle cannot
+/// widen it and merge a small part away.
+inline constexpr double kDefaultMergeTolerance = 1e-5;
+
 struct CleanupOptions {
-    double mergeTolerance = 1e-6; // duplicate vertices closer than this × the bounds' diagonal merge
-    double creaseAngleDeg = 30.0; // normals: faces meeting at more than this keep a sharp edge
-    bool fixOrientation = false;  // make face winding consistent per connected component
+    double mergeTolerance = kDefaultMergeTolerance; // model units: duplicate vertices closer than this merge
+    bool mergeToleranceOfDiagonal = false;          // mergeTolerance is a fraction of the bounds' diagonal instead
+    double creaseAngleDeg = 30.0;                   // normals: faces meeting at more than this keep a sharp edge
+    bool fixOrientation = false;                    // make face winding consistent per connected component
 };
 
 /// What cleanup did, step by step (each counter is what that step removed or changed).
@@ -27,6 +34,7 @@ struct CleanupReport {
     size_t nonFiniteFaces = 0;    // faces dropped with them
     size_t degenerateFaces = 0;   // repeated indices or zero area
     size_t mergedVertices = 0;    // duplicates within the tolerance
+    double mergeTolerance = 0;    // the tolerance used, in model units (the largest of several meshes)
     size_t duplicateFaces = 0;    // same three vertices, any order or winding
     size_t isolatedVertices = 0;  // referenced by no face
     size_t flippedFaces = 0;      // orientation fix
@@ -68,8 +76,9 @@ struct LoadedModel {
 /// `progress` hears "cleaning: STAGE" at each stage's start, the fraction of the whole cleanup done.
 CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {}, const Progress& progress = {});
 
-/// Writes a mesh file (format from the extension: obj, stl, off, ply): binary STL directly, every
-/// triangle kept; the others through OpenMesh. Throws std::runtime_error naming the file on failure.
+/// Writes a mesh file (format from the extension: obj, stl, off, ply), every triangle kept, so that
+/// every float reads back bit for bit (mesh_save.cpp: binary STL and PLY, shortest round-trip
+/// decimals in OBJ and OFF). Throws std::runtime_error naming the file on failure.
 void saveMesh(const std::string& path, const scene::Mesh& mesh);
 
 } // namespace geometry::io

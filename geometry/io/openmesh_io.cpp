@@ -31,7 +31,6 @@
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
@@ -323,7 +322,7 @@ public:
     /// The next token, empty at the end of the file.
     std::string_view next() {
         while (pos_ < text_.size() && isSpace(text_[pos_])) {
-            if (text_[pos_] == '\n') ++line_;
+            if (endsLine(pos_)) ++line_;
             ++pos_;
         }
         if (pos_ < text_.size()) tokenLine_ = line_; // at the end, messages name the last token's line
@@ -331,9 +330,13 @@ public:
         while (pos_ < text_.size() && !isSpace(text_[pos_])) checkByte(text_[pos_++]);
         return text_.substr(start, pos_ - start);
     }
-    /// Skips the rest of the current line (a solid's name), still refusing control bytes.
+    /// Skips the rest of the current line (a solid's name, which may hold tabs), still refusing
+    /// other control bytes. A line ends in LF, CRLF or CR alone (old Mac exporters).
     void skipLine() {
-        while (pos_ < text_.size() && text_[pos_] != '\n') checkByte(text_[pos_++]);
+        while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') {
+            if (text_[pos_] != '\t') checkByte(text_[pos_]);
+            ++pos_;
+        }
     }
     [[noreturn]] void failHere(const std::string& problem) const {
         fail(path_, "line " + std::to_string(tokenLine_) + ": " + problem);
@@ -341,6 +344,10 @@ public:
 
 private:
     static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+    /// LF, or a CR not followed by LF: one line end each, whichever convention the file uses.
+    [[nodiscard]] bool endsLine(size_t i) const {
+        return text_[i] == '\n' || (text_[i] == '\r' && (i + 1 == text_.size() || text_[i + 1] != '\n'));
+    }
     void checkByte(char c) {
         const auto u = static_cast<unsigned char>(c);
         if (u >= 0x20 && u != 0x7f) return;
@@ -785,89 +792,3 @@ scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, Cl
 }
 
 } // namespace geometry::io::detail
-
-// ---- [SECTION] Saving -----------------------------------------------------------------------
-
-namespace geometry::io {
-
-namespace {
-
-using OmMesh = OpenMesh::TriMesh_ArrayKernelT<>;
-
-/// A TriMesh holding the mesh's triangles. Triangles the halfedge structure refuses
-/// (non-manifold edges, CAD's daily bread) get their own copies of their vertices, so nothing
-/// is lost; loading merges them again.
-OmMesh toOpenMesh(const scene::Mesh& mesh) {
-    OmMesh om;
-    om.reserve(mesh.positions.size(), mesh.indices.size(), mesh.triangleCount());
-    std::vector<OmMesh::VertexHandle> vh;
-    vh.reserve(mesh.positions.size());
-    for (const glm::vec3& p : mesh.positions) vh.push_back(om.add_vertex({p.x, p.y, p.z}));
-    for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const uint32_t* tri = &mesh.indices[3 * t];
-        std::array<OmMesh::VertexHandle, 3> f{vh[tri[0]], vh[tri[1]], vh[tri[2]]};
-        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue; // degenerate: nothing to draw
-        if (om.add_face(f[0], f[1], f[2]).is_valid()) continue;
-        for (int k = 0; k < 3; ++k) {
-            const glm::vec3& p = mesh.positions[tri[k]];
-            f[k] = om.add_vertex({p.x, p.y, p.z});
-        }
-        om.add_face(f[0], f[1], f[2]);
-    }
-    return om;
-}
-
-} // namespace
-
-namespace {
-
-/// Binary STL (compact, and what CAD tools exchange), written directly: every triangle as it is,
-/// at 50 bytes each, where OpenMesh's halfedge mesh would drop non-manifold faces and cost
-/// ~100 bytes per triangle more on the way (50 M-triangle test files).
-void saveBinaryStl(const std::string& path, const scene::Mesh& mesh) {
-    const size_t tris = mesh.triangleCount();
-    if (tris > UINT32_MAX) throw std::runtime_error(path + ": more than 2^32 - 1 triangles do not fit a binary STL");
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot write file");
-    std::string header(80, ' ');
-    header.replace(0, 22, "shadowscope binary STL");
-    const auto count = static_cast<uint32_t>(tris); // little-endian, as x86-64 stores it
-    out.write(header.data(), 80).write(reinterpret_cast<const char*>(&count), 4);
-    std::vector<char> block;
-    constexpr size_t kPerBlock = 1 << 16;
-    for (size_t t0 = 0; t0 < tris; t0 += kPerBlock) {
-        const size_t n = std::min(kPerBlock, tris - t0);
-        block.assign(50 * n, '\0');
-        for (size_t k = 0; k < n; ++k) {
-            const uint32_t* v = &mesh.indices[3 * (t0 + k)];
-            const glm::vec3 &a = mesh.positions[v[0]], &b = mesh.positions[v[1]], &c = mesh.positions[v[2]];
-            const glm::vec3 cross = glm::cross(b - a, c - a);
-            const float len = glm::length(cross);
-            const glm::vec3 normal = len > 0.f && std::isfinite(len) ? cross / len : glm::vec3(0.f);
-            char* rec = block.data() + 50 * k;
-            std::memcpy(rec, &normal, 12);
-            std::memcpy(rec + 12, &a, 12);
-            std::memcpy(rec + 24, &b, 12);
-            std::memcpy(rec + 36, &c, 12); // the attribute count stays 0
-        }
-        out.write(block.data(), static_cast<std::streamsize>(block.size()));
-    }
-    if (!out.flush()) throw std::runtime_error(path + ": cannot write file (disk full?)");
-}
-
-} // namespace
-
-void saveMesh(const std::string& path, const scene::Mesh& mesh) {
-    const std::string ext = modelFormat(path);
-    if (ext != "obj" && ext != "stl" && ext != "off" && ext != "ply")
-        throw std::runtime_error(path + ": cannot save '." + ext + "' (supported: .obj, .stl, .off, .ply)");
-    for (uint32_t i : mesh.indices)
-        if (i >= mesh.positions.size()) throw std::runtime_error(path + ": mesh has an index out of range");
-    if (ext == "stl") return saveBinaryStl(path, mesh);
-    const detail::QuietOpenMesh quiet;
-    OmMesh om = toOpenMesh(mesh);
-    OpenMesh::IO::Options options;
-    if (!OpenMesh::IO::write_mesh(om, path, options)) throw std::runtime_error(path + ": cannot write file");
-}
-
-} // namespace geometry::io

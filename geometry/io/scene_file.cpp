@@ -313,10 +313,9 @@ void instance(const Reader& r, const std::string& key, scene::Mesh& mesh, const 
 /// Placements compose: two finite translations or scales can reach infinity, and a mesh there has
 /// no bounds to frame, cull or trace.
 void checkFinitePlacements(const Reader& r, const std::string& key, const scene::Mesh& mesh) {
-    for (size_t i = 0; i < mesh.placementCount(); ++i)
-        if (const scene::Aabb b = mesh.placementBounds(i); !b.empty() && !(scene::finite(b.lo) && scene::finite(b.hi)))
-            r.fail(key, "'" + mesh.name + "' placement " + std::to_string(i) +
-                            " lies beyond the float range (translate, scale or instances too large)");
+    if (const size_t i = mesh.firstPlacementBeyondFloat(); i < mesh.placementCount())
+        r.fail(key, "'" + mesh.name + "' placement " + std::to_string(i) +
+                        " lies beyond the float range (translate, scale or instances too large)");
 }
 
 /// A built-in scene's camera follows its meshes, so its view of them stays the same.

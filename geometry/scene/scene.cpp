@@ -30,6 +30,12 @@ Aabb Mesh::placementBounds(size_t i) const noexcept {
     return b;
 }
 
+size_t Mesh::firstPlacementBeyondFloat() const noexcept {
+    for (size_t i = 0; i < placementCount(); ++i)
+        if (const Aabb b = placementBounds(i); !b.empty() && !(finite(b.lo) && finite(b.hi))) return i;
+    return placementCount();
+}
+
 glm::vec3 Camera::viewDir() const noexcept {
     const glm::vec3 d = target - eye;
     const float len = glm::length(d);

@@ -56,6 +56,9 @@ struct Mesh {
     /// Placement i's world box: its chunks' boxes, each carried by the instance matrix (so a
     /// flattened copy, flattenInstances(), has exactly these bounds).
     [[nodiscard]] Aabb placementBounds(size_t i) const noexcept;
+    /// The first placement whose box reaches beyond the float range (transforms that compose to
+    /// infinity), or placementCount() when there is none: such a mesh cannot be framed, culled or traced.
+    [[nodiscard]] size_t firstPlacementBeyondFloat() const noexcept;
     /// Triangles drawn when every placement is: triangleCount() × placementCount().
     [[nodiscard]] uint64_t placedTriangleCount() const noexcept { return uint64_t(triangleCount()) * placementCount(); }
 };
