@@ -1,5 +1,5 @@
 #pragma once
-// CAD meshes in: OBJ, STL (ASCII and binary), OFF, PLY through OpenMesh; glTF 2.0 (.gltf, .glb)
+// CAD meshes in: OBJ, STL (ASCII and binary), PLY (ply_reader.cpp), OFF through OpenMesh; glTF 2.0
 // through tinygltf. Every mesh is cleaned (cleanup counted in a report) and chunked after
 // cleanup. Bad input gives a std::runtime_error whose one-line message names the file and the
 // problem; memory stays bounded by the file's real size, never by counts a header claims.

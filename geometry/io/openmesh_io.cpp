@@ -1,14 +1,15 @@
-// OBJ, STL, OFF and PLY: OFF and PLY through OpenMesh's readers; OBJ and STL read here (OBJ by
-// its validator, which keeps a polygon's repeated corners; STL by strict parsers); saving
-// through OpenMesh's writers. Polygons are ear-clipped (polygon_triangulation.h).
+// OBJ, STL, OFF and PLY: OFF through OpenMesh's reader; OBJ, STL and PLY read here (OBJ by its
+// validator, which keeps a polygon's repeated corners; STL by strict parsers; PLY by
+// ply_reader.cpp, which follows the format's spec where OpenMesh's reader read a subset of it).
+// Saving is mesh_save.cpp's. Polygons are ear-clipped (polygon_triangulation.h).
 //
-// Reading OFF and PLY goes through OpenMesh's IOManager with our own importer that collects flat arrays,
+// Reading OFF goes through OpenMesh's IOManager with our own importer that collects flat arrays,
 // not through a TriMesh: a halfedge mesh drops non-manifold faces ("complex edge"), which CAD
 // exports are full of, and building the connectivity is the slow part of read_mesh anyway.
 //
 // OpenMesh's readers trust their input (they reserve and loop by header counts and per-face
-// valences), so every file is validated here first, against its real size, before a reader sees
-// it (OBJ in obj_validate.cpp). Every error is a std::runtime_error "PATH: problem" on one line.
+// valences), so an OFF file is validated here first, against its real size, before the reader
+// sees it (OBJ in obj_validate.cpp). Every error is a std::runtime_error "PATH: problem" on one line.
 //
 // Index
 //   [SECTION] Files ...................... fail, checkedFileSize, readAll, readHead
@@ -17,14 +18,12 @@
 //   [SECTION] STL ........................ validateStl (binary STL is read by stl_binary.cpp)
 //   [SECTION] ASCII STL .................. StlTokens, StlParser, readAsciiStl
 //   [SECTION] OFF ........................ validateOff
-//   [SECTION] PLY ........................ plyTypeSize, readBinaryUint, checkPlyTextRecord, PlyHeader,
-//                                          readPlyHeader, checkPlyCounts, checkPlyBinaryRecord, checkPlyBody,
-//                                          validatePly
 //   [SECTION] Reading .................... QuietOpenMesh, readThroughOpenMesh, readObj, readOpenMeshFile
-//   [SECTION] Saving ..................... toOpenMesh, saveMesh
+//                                          (PLY: readPly, ply_reader.cpp)
 #include "geometry/io/mesh_limits.h"
 #include "geometry/io/model_loader.h"
 #include "geometry/io/obj_validate.h"
+#include "geometry/io/ply_reader.h"
 #include "geometry/io/polygon_triangulation.h"
 #include "geometry/io/stl_binary.h"
 
@@ -95,23 +94,6 @@ std::string readHead(const std::string& path, uint64_t size, size_t n) {
 // ---- [SECTION] Importer ---------------------------------------------------------------------
 
 using namespace OpenMesh;
-
-/// Appends the triangles of one polygon face (ear-clipped when it has more than three corners).
-void appendPolygon(std::span<const glm::vec3> positions, std::span<const uint32_t> corners,
-                   std::vector<uint32_t>& indices, PolygonStats& stats) {
-    if (corners.size() == 3) {
-        indices.insert(indices.end(), corners.begin(), corners.end());
-        return;
-    }
-    for (const auto& tri : triangulatePolygon(positions, corners, stats))
-        indices.insert(indices.end(), tri.begin(), tri.end());
-}
-
-void addPolygonCounts(const PolygonStats& stats, CleanupReport& report) {
-    report.polygonsTriangulated += stats.polygons;
-    report.nonPlanarFaces += stats.nonPlanar;
-    report.earClipFallbacks += stats.fallbacks;
-}
 
 /// Collects vertices and (triangulated) faces into flat arrays. Out-of-range indices are
 /// recorded, not trusted: some readers pass them through unchecked.
@@ -500,214 +482,6 @@ void validateOff(const std::string& path, uint64_t size) {
     }
 }
 
-// ---- [SECTION] PLY --------------------------------------------------------------------------
-
-struct PlyProperty {
-    std::string name;
-    int size = 0;      // scalar size in bytes, or the list's item size
-    int countSize = 0; // list count size in bytes; 0 for a scalar
-    bool countSigned = false, itemSigned = false;
-};
-struct PlyElement {
-    std::string name;
-    uint64_t count = 0;
-    std::vector<PlyProperty> props;
-};
-
-int plyTypeSize(std::string_view t, bool& isSigned) {
-    isSigned = !(t.starts_with("u"));
-    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-    if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" || t == "float32") return 4;
-    if (t == "double" || t == "float64") return 8;
-    return 0;
-}
-
-uint64_t readBinaryUint(const char* p, int size, bool bigEndian, bool isSigned, int64_t& asSigned) {
-    uint64_t v = 0;
-    for (int i = 0; i < size; ++i) {
-        const int b = bigEndian ? i : size - 1 - i;
-        v = (v << 8) | static_cast<unsigned char>(p[b]);
-    }
-    asSigned = static_cast<int64_t>(v);
-    if (isSigned && size < 8 && (v >> (8 * size - 1)) & 1)
-        asSigned = static_cast<int64_t>(v) - (int64_t(1) << (8 * size));
-    return v;
-}
-
-/// One ASCII PLY record must hold exactly its properties' values (OpenMesh reads token by
-/// token: a stray value would shift every later record, and could become a list count).
-void checkPlyTextRecord(const std::string& path, const PlyElement& e, const std::vector<std::string_view>& tok,
-                        uint64_t record, uint64_t vertexCount) {
-    const std::string where = "element '" + e.name + "' record " + std::to_string(record);
-    size_t at = 0;
-    for (const PlyProperty& prop : e.props) {
-        if (!prop.countSize) {
-            if (at++ >= tok.size()) fail(path, where + " has too few values (corrupt file)");
-            continue;
-        }
-        int64_t k = 0;
-        if (at >= tok.size() || !parseInt(tok[at], k) || k < 0 || static_cast<uint64_t>(k) > kMaxFaceValence ||
-            at + 1 + static_cast<uint64_t>(k) > tok.size())
-            fail(path, where + " has a bad list count (corrupt file)");
-        if (e.name == "face" && (prop.name == "vertex_indices" || prop.name == "vertex_index")) {
-            std::vector<std::string_view> face(tok.begin() + at, tok.begin() + at + 1 + k);
-            checkTextFace(path, face, record, vertexCount, false);
-        }
-        at += 1 + k;
-    }
-    if (at != tok.size()) fail(path, where + " has more values than its properties (corrupt file)");
-}
-
-/// A PLY header as validated: its format and its elements with their properties.
-struct PlyHeader {
-    std::string format;
-    std::vector<PlyElement> elements;
-};
-
-/// A header's property line: "property TYPE NAME" or "property list COUNT_TYPE ITEM_TYPE NAME".
-PlyProperty parsePlyProperty(const std::string& path, const std::vector<std::string_view>& tok) {
-    PlyProperty p;
-    if (tok.size() >= 5 && tok[1] == "list") {
-        p.countSize = plyTypeSize(tok[2], p.countSigned);
-        p.size = plyTypeSize(tok[3], p.itemSigned);
-        p.name = tok[4];
-        if (p.countSize == 0 || p.countSize > 4 || p.size == 0) fail(path, "bad list type in PLY header");
-    } else if (tok.size() >= 3) {
-        p.size = plyTypeSize(tok[1], p.itemSigned);
-        p.name = tok[2];
-        if (p.size == 0) fail(path, "unknown property type '" + std::string(tok[1]) + "' in PLY header");
-    } else fail(path, "bad property line in PLY header");
-    return p;
-}
-
-/// A header line other than a comment and end_header: the format, an element or a property of the last element.
-void parsePlyHeaderLine(const std::string& path, const std::vector<std::string_view>& tok, PlyHeader& header) {
-    if (tok[0] == "format") {
-        // OpenMesh's header reader loops for ever on a version it cannot parse: accept only
-        // the one version PLY has, exactly.
-        if (tok.size() != 3 || tok[2] != "1.0" ||
-            (tok[1] != "ascii" && tok[1] != "binary_little_endian" && tok[1] != "binary_big_endian"))
-            fail(path, "bad PLY format line (expected 'format ascii|binary_little_endian|binary_big_endian 1.0')");
-        header.format = tok[1];
-    } else if (tok[0] == "element" && tok.size() >= 3) {
-        // OpenMesh's PLY header reader misbehaves (copies without end) on elements it does not
-        // know; CAD meshes need only vertices and faces.
-        if (tok.size() != 3 || (tok[1] != "vertex" && tok[1] != "face"))
-            fail(path, "unsupported PLY element line (only 'element vertex N' and 'element face N')");
-        int64_t n = 0;
-        if (!parseInt(tok[2], n) || n < 0) fail(path, "bad element count in PLY header");
-        header.elements.push_back({std::string(tok[1]), static_cast<uint64_t>(n), {}});
-    } else if (tok[0] == "property" && !header.elements.empty()) {
-        header.elements.back().props.push_back(parsePlyProperty(path, tok));
-    } else fail(path, "unexpected line in PLY header (corrupt file)");
-}
-
-/// Reads the header from the 'ply' magic to end_header, leaving `lines` at the body.
-PlyHeader readPlyHeader(const std::string& path, LineScanner& lines) {
-    std::string_view line;
-    std::vector<std::string_view> tok;
-    if (!lines.nextLine(line) || !line.starts_with("ply")) fail(path, "missing 'ply' magic (corrupt file)");
-    PlyHeader header;
-    bool ended = false;
-    while (!ended && lines.nextLine(line)) {
-        for (const char c : line)
-            if ((c < 32 || c > 126) && c != '\t' && c != '\r')
-                fail(path, "PLY header is not plain text (corrupt file)");
-        tokenize(line, tok);
-        if (tok.empty() || tok[0] == "comment" || tok[0] == "obj_info") continue;
-        if (tok[0] == "end_header") {
-            ended = true;
-            break;
-        }
-        parsePlyHeaderLine(path, tok, header);
-    }
-    if (!ended) fail(path, "PLY header has no end_header (truncated file)");
-    const std::string& format = header.format;
-    if (format != "ascii" && format != "binary_big_endian" && format != "binary_little_endian")
-        fail(path, "unknown PLY format '" + format + "'");
-    return header;
-}
-
-/// Checks the element counts against the limits and the body's size (`available` bytes); returns the vertex count.
-uint64_t checkPlyCounts(const std::string& path, const PlyHeader& header, uint64_t available) {
-    const bool ascii = header.format == "ascii";
-    uint64_t nv = 0, nf = 0, minBytes = 0;
-    for (const PlyElement& e : header.elements) {
-        if (e.name == "vertex") nv = e.count;
-        if (e.name == "face") nf = e.count;
-        uint64_t perRecord = 0; // smallest possible record: a token per scalar, a count per list
-        for (const PlyProperty& p : e.props) perRecord += ascii ? 2 : (p.countSize ? p.countSize : p.size);
-        if (e.count > kMaxIndexed)
-            fail(path, "element '" + e.name + "' count " + std::to_string(e.count) +
-                           " is over the 2^32 - 1 that 32-bit indices reach");
-        minBytes += std::max<uint64_t>(perRecord, 1) * e.count;
-    }
-    checkCounts(path, nv, nf, minBytes, available);
-    return nv;
-}
-
-/// One binary PLY record at `p` (advanced past it): list counts, the bytes left, a face's vertex indices.
-void checkPlyBinaryRecord(const std::string& path, const PlyElement& e, uint64_t record, const char*& p,
-                          const char* end, bool bigEndian, uint64_t vertexCount) {
-    const bool isFace = e.name == "face";
-    for (const PlyProperty& prop : e.props) {
-        uint64_t items = 1;
-        if (prop.countSize) {
-            if (end - p < prop.countSize) fail(path, "truncated PLY body in element '" + e.name + "'");
-            int64_t k = 0;
-            readBinaryUint(p, prop.countSize, bigEndian, prop.countSigned, k);
-            p += prop.countSize;
-            if (k < 0 || static_cast<uint64_t>(k) > kMaxFaceValence)
-                fail(path, "list of " + std::to_string(k) + " items in element '" + e.name + "' (corrupt file)");
-            items = static_cast<uint64_t>(k);
-        }
-        if (static_cast<uint64_t>(end - p) < items * prop.size)
-            fail(path, "truncated PLY body in element '" + e.name + "'");
-        if (isFace && prop.countSize && (prop.name == "vertex_indices" || prop.name == "vertex_index")) {
-            for (uint64_t j = 0; j < items; ++j) {
-                int64_t idx = 0;
-                readBinaryUint(p + j * prop.size, prop.size, bigEndian, prop.itemSigned, idx);
-                if (idx < 0 || static_cast<uint64_t>(idx) >= vertexCount)
-                    fail(path, "face " + std::to_string(record) + " references vertex " + std::to_string(idx) +
-                                   " but the file has only " + std::to_string(vertexCount) + " vertices");
-            }
-        }
-        p += items * prop.size;
-    }
-}
-
-/// Walks the body from `lines` and checks every record (a face's valence and indices) before OpenMesh sees it.
-void checkPlyBody(const std::string& path, const PlyHeader& header, LineScanner& lines, uint64_t vertexCount) {
-    const bool ascii = header.format == "ascii";
-    const bool bigEndian = header.format == "binary_big_endian";
-    const char* p = lines.text.data() + lines.pos;
-    const char* end = lines.text.data() + lines.text.size();
-    std::string_view line;
-    std::vector<std::string_view> tok;
-    for (const PlyElement& e : header.elements) {
-        for (uint64_t r = 0; r < e.count; ++r) {
-            if (!ascii) {
-                checkPlyBinaryRecord(path, e, r, p, end, bigEndian, vertexCount);
-                continue;
-            }
-            if (!lines.nextDataLine(line, false))
-                fail(path, "element '" + e.name + "' has " + std::to_string(r) + " of " + std::to_string(e.count) +
-                               " records (truncated file)");
-            tokenize(line, tok);
-            checkPlyTextRecord(path, e, tok, r, vertexCount);
-        }
-    }
-}
-
-void validatePly(const std::string& path, uint64_t size) {
-    const std::string data = readAll(path, size);
-    LineScanner lines{data};
-    const PlyHeader header = readPlyHeader(path, lines);
-    const uint64_t vertexCount = checkPlyCounts(path, header, size - lines.pos);
-    checkPlyBody(path, header, lines, vertexCount);
-}
-
 // ---- [SECTION] Reading ----------------------------------------------------------------------
 
 } // namespace
@@ -781,13 +555,9 @@ scene::Mesh readOpenMeshFile(const std::string& path, const std::string& ext, Cl
         return readAsciiStl(path, readAll(path, size));
     }
     if (ext == "obj") return readObj(path, readerCounts);
-    if (ext == "off") {
-        validateOff(path, size);
-    } else if (ext == "ply") {
-        validatePly(path, size);
-    } else {
-        fail(path, "unsupported mesh extension '" + ext + "'");
-    }
+    if (ext == "ply") return readPly(path, size, readerCounts);
+    if (ext != "off") fail(path, "unsupported mesh extension '" + ext + "'");
+    validateOff(path, size);
     return readThroughOpenMesh(path, size, readerCounts);
 }
 

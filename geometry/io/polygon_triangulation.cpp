@@ -7,8 +7,10 @@
 // Index
 //   [SECTION] Plane and projection ....... newellNormal, diameter, projectToPlane
 //   [SECTION] Ear clipping ............... Ring, cross, isEar, filterPoints, clipEars
-//   [SECTION] Triangulating a polygon .... triangulatePolygon
+//   [SECTION] Triangulating a polygon .... triangulatePolygon, appendPolygon, addPolygonCounts
 #include "geometry/io/polygon_triangulation.h"
+
+#include "geometry/io/model_loader.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -219,6 +221,22 @@ std::vector<Tri> triangulatePolygon(std::span<const glm::vec3> points, std::span
         if (q == start) break;
     }
     return fan(std::move(tris), rest);
+}
+
+void appendPolygon(std::span<const glm::vec3> positions, std::span<const uint32_t> corners,
+                   std::vector<uint32_t>& indices, PolygonStats& stats) {
+    if (corners.size() == 3) {
+        indices.insert(indices.end(), corners.begin(), corners.end());
+        return;
+    }
+    for (const Tri& tri : triangulatePolygon(positions, corners, stats))
+        indices.insert(indices.end(), tri.begin(), tri.end());
+}
+
+void addPolygonCounts(const PolygonStats& stats, CleanupReport& report) {
+    report.polygonsTriangulated += stats.polygons;
+    report.nonPlanarFaces += stats.nonPlanar;
+    report.earClipFallbacks += stats.fallbacks;
 }
 
 } // namespace geometry::io

@@ -12,6 +12,8 @@
 
 namespace geometry::io {
 
+struct CleanupReport; // model_loader.h
+
 /// What triangulation met, summed over faces (faces with more than three corners only).
 struct PolygonStats {
     size_t polygons = 0;  // faces with more than three corners triangulated
@@ -24,5 +26,13 @@ struct PolygonStats {
 /// Repeated corners (a ring's bridge) and collinear corners are allowed.
 [[nodiscard]] std::vector<std::array<uint32_t, 3>>
 triangulatePolygon(std::span<const glm::vec3> points, std::span<const uint32_t> indices, PolygonStats& stats);
+
+/// Appends the triangles of one polygon face to `indices`: a triangle as it is, a larger face
+/// ear-clipped (the readers of OBJ, OFF and PLY share this).
+void appendPolygon(std::span<const glm::vec3> positions, std::span<const uint32_t> corners,
+                   std::vector<uint32_t>& indices, PolygonStats& stats);
+
+/// Adds a reader's polygon counters to its report.
+void addPolygonCounts(const PolygonStats& stats, CleanupReport& report);
 
 } // namespace geometry::io
