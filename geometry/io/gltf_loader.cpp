@@ -1,18 +1,19 @@
 // glTF 2.0 loading (see gltf_loader.h). tinygltf parses the JSON / GLB container and resolves
 // buffers; everything it leaves unchecked (accessor ranges, component types, index values, the
-// shape of the node graph) is validated here before any element is read.
+// shape of the node graph) is validated here, or by gltf_accessor.cpp (accessors, sparse and
+// quantized data, EXT_meshopt_compression), before any element is read.
 //
 // Index
-//   [SECTION] Errors .................... GltfError, oneLine, str
+//   [SECTION] Errors .................... oneLine, firstLine
 //   [SECTION] Files ..................... readRegularFile, fsReadWholeFile, looksLikeJson, nestingWithinLimit,
-//                                         precheck, parse
+//                                         checkDracoPrimitive, precheck, withJson, parse
 //   [SECTION] Node hierarchy ............ localMatrix, NodeWalker, rootNodes, collectInstances
-//   [SECTION] Accessors ................. viewAccessor, componentName, typeName, readVec3, readIndices
 //   [SECTION] Primitives ................ toTriangleList, baseColor, readNormals, decodePrimitive
 //   [SECTION] Cleaning and instancing ... decodeCost, checkDecodeBudget, cleanUsedMeshes, emitInstances
 //   [SECTION] Loading ................... loadChecked, loadGltf
 #include "geometry/io/gltf_loader.h"
 
+#include "geometry/io/gltf_accessor.h"
 #include "geometry/scene/chunking.h"
 
 #include <tiny_gltf.h>
@@ -43,6 +44,14 @@ namespace geometry::io {
 namespace {
 
 namespace fs = std::filesystem;
+using gltf::Accessors;
+using gltf::AccessorView;
+using gltf::componentName;
+using gltf::GltfError;
+using gltf::indexInto;
+using gltf::member;
+using gltf::str;
+using gltf::typeName;
 
 // Real CAD assemblies nest a few levels; 64 leaves headroom and bounds the recursion.
 constexpr int kMaxNodeDepth = 64;
@@ -55,17 +64,11 @@ constexpr size_t kMaxInstancedTriangles = size_t{1} << 27;
 constexpr uintmax_t kMaxFileBytes = std::numeric_limits<uint32_t>::max();
 // tinygltf quotes whole data URIs in some messages; keep ours readable.
 constexpr size_t kMaxMessageChars = 400;
+constexpr size_t kMaxReasonChars = 200;
 constexpr glm::vec3 kDefaultColor{0.8f};
-
-static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "positions are copied as packed floats");
 
 // ---------------------------------------------------------------------------------------------
 // [SECTION] Errors
-
-/// A problem with the file's content; loadGltf() prefixes the path.
-struct GltfError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
 
 /// tinygltf's messages span lines; the loader's contract is one line.
 std::string oneLine(std::string_view text) {
@@ -82,7 +85,24 @@ std::string oneLine(std::string_view text) {
     return out;
 }
 
-std::string str(size_t n) { return std::to_string(n); }
+/// The first non-blank line of `text`, trimmed and bounded: why tinygltf gave up, in a message
+/// that must stay one line.
+std::string firstLine(std::string_view text) {
+    constexpr std::string_view kBlank = " \t\r\n";
+    while (!text.empty()) {
+        const size_t end = text.find_first_of("\r\n");
+        std::string_view line = text.substr(0, end);
+        const size_t first = line.find_first_not_of(kBlank);
+        if (first != std::string_view::npos) {
+            line = line.substr(first, line.find_last_not_of(kBlank) - first + 1);
+            if (line.size() <= kMaxReasonChars) return std::string(line);
+            return std::string(line.substr(0, kMaxReasonChars)) + "...";
+        }
+        if (end == std::string_view::npos) break;
+        text.remove_prefix(end + 1);
+    }
+    return {};
+}
 
 // ---------------------------------------------------------------------------------------------
 // [SECTION] Files
@@ -184,29 +204,14 @@ std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary) 
 
 constexpr const char* kGltf1 = "glTF 1.0 is not supported (convert to glTF 2.0)";
 
-// Extensions a file may require that loading geometry honours: Draco is decoded; the rest
-// change shading or textures only, which shadows never read.
+// Extensions a file may require that loading geometry honours: Draco and meshopt are decoded,
+// quantized positions read; the rest change shading or textures only, which shadows never read.
 bool supportedRequiredExtension(const std::string& name) {
-    static const char* const kSupported[] = {"KHR_draco_mesh_compression", "KHR_texture_transform",
-                                             "KHR_texture_basisu",         "EXT_texture_webp",
-                                             "KHR_lights_punctual",        "KHR_materials_variants"};
+    static const char* const kSupported[] = {
+        "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization", "KHR_texture_transform",
+        "KHR_texture_basisu",         "EXT_texture_webp",        "KHR_lights_punctual",   "KHR_materials_variants"};
     if (name.starts_with("KHR_materials_")) return true;
     return std::find(std::begin(kSupported), std::end(kSupported), name) != std::end(kSupported);
-}
-
-/// The JSON index `value` when it is an integer naming one of `array`'s elements.
-std::optional<size_t> indexInto(const nlohmann::json& value, const nlohmann::json& array) {
-    if (!value.is_number_integer() || !array.is_array()) return std::nullopt;
-    const auto i = value.get<int64_t>();
-    if (i < 0 || uint64_t(i) >= array.size()) return std::nullopt;
-    return size_t(i);
-}
-
-const nlohmann::json& member(const nlohmann::json& object, const char* key) {
-    static const nlohmann::json kNull;
-    if (!object.is_object()) return kNull;
-    const auto it = object.find(key);
-    return it == object.end() ? kNull : *it;
 }
 
 /// The file as the pre-check sees it, with the buffers it has read so far.
@@ -382,13 +387,21 @@ void checkDracoPrimitive(Source& source, const nlohmann::json& doc, const nlohma
     checkDracoStream({first, first + std::ptrdiff_t(length.get<uint64_t>())}, attributes, indexType, name);
 }
 
+/// What the pre-check learnt that reading the model needs, and the JSON tinygltf must parse
+/// instead of the file's own (empty: the file's).
+struct Prechecked {
+    std::string json;
+    gltf::JsonFacts facts;
+};
+
 /// What tinygltf would report badly or not at all: glTF 1.0 (a different schema: tinygltf
 /// complains about some missing field), required extensions we cannot honour (tinygltf ignores
-/// extensionsRequired) and Draco references (see checkDracoPrimitive). Malformed JSON is left
-/// to tinygltf, whose message names the position.
-void precheck(const std::vector<unsigned char>& bytes, bool binary, const std::string& baseDir) {
-    const nlohmann::json doc = nlohmann::json::parse(jsonText(bytes, binary), nullptr, false);
-    if (!doc.is_object()) return;
+/// extensionsRequired), Draco references (see checkDracoPrimitive) and EXT_meshopt_compression
+/// (tinygltf ignores it, and refuses its fallback buffers: rewritten). Malformed JSON is left to
+/// tinygltf, whose message names the position.
+Prechecked precheck(const std::vector<unsigned char>& bytes, bool binary, const std::string& baseDir) {
+    nlohmann::json doc = nlohmann::json::parse(jsonText(bytes, binary), nullptr, false);
+    if (!doc.is_object()) return {};
     const nlohmann::json& version = member(member(doc, "asset"), "version");
     if ((version.is_string() && version.get<std::string>().starts_with("1.")) || member(doc, "meshes").is_object())
         throw GltfError(kGltf1);
@@ -396,10 +409,15 @@ void precheck(const std::vector<unsigned char>& bytes, bool binary, const std::s
         for (const nlohmann::json& name : required)
             if (name.is_string() && !supportedRequiredExtension(name.get<std::string>()))
                 throw GltfError("requires the unsupported glTF extension " + name.get<std::string>());
+    Prechecked out;
+    gltf::JsonFacts& facts = out.facts;
+    facts.meshopt = gltf::readMeshoptViews(doc);
+    facts.fallbackBuffers = gltf::replaceFallbackBuffers(doc, binary, facts.meshopt);
+    facts.lentViews = gltf::lendIndexViews(doc);
+    // Draco is checked against the document tinygltf will see.
     const nlohmann::json& meshes = member(doc, "meshes");
-    if (!meshes.is_array()) return;
     Source source{bytes, binary, baseDir, {}, {}};
-    for (size_t m = 0; m < meshes.size(); ++m) {
+    for (size_t m = 0; meshes.is_array() && m < meshes.size(); ++m) {
         const nlohmann::json& prims = member(meshes[m], "primitives");
         if (!prims.is_array()) continue;
         for (size_t p = 0; p < prims.size(); ++p) {
@@ -408,12 +426,44 @@ void precheck(const std::vector<unsigned char>& bytes, bool binary, const std::s
                 checkDracoPrimitive(source, doc, prims[p], ext, "mesh " + str(m) + " primitive " + str(p));
         }
     }
+    if (!facts.fallbackBuffers.empty() || !facts.lentViews.empty())
+        out.json = doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    return out;
+}
+
+void putU32(std::vector<unsigned char>& out, size_t v) {
+    for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+
+/// The file with its JSON replaced: the whole text, or a GLB's JSON chunk, the rest of the
+/// container kept byte for byte and its lengths updated. Empty where the GLB header disagrees
+/// with the file: tinygltf refuses such a file whatever its JSON.
+std::vector<unsigned char> withJson(const std::vector<unsigned char>& bytes, bool binary, std::string json) {
+    if (!binary) return {json.begin(), json.end()};
+    uint32_t length = 0, jsonLength = 0;
+    if (bytes.size() < 20) return {};
+    std::memcpy(&length, bytes.data() + 8, 4); // GLB is little-endian, as are we
+    std::memcpy(&jsonLength, bytes.data() + 12, 4);
+    const uint64_t header = 20 + uint64_t(jsonLength);
+    if (header > bytes.size() || length > bytes.size() || length < header) return {};
+    while (json.size() % 4) json += ' ';
+    const uint64_t total = uint64_t(length) - jsonLength + json.size();
+    if (total > kMaxFileBytes) throw GltfError("file larger than 4 GiB once its fallback buffers are replaced");
+    std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 8);
+    out.reserve(bytes.size() - jsonLength + json.size());
+    putU32(out, size_t(total));
+    putU32(out, json.size());
+    out.insert(out.end(), bytes.begin() + 16, bytes.begin() + 20);
+    out.insert(out.end(), json.begin(), json.end());
+    out.insert(out.end(), bytes.begin() + std::ptrdiff_t(header), bytes.end());
+    return out;
 }
 
 struct Parsed {
     tinygltf::Model model;
     bool binary = false;
     std::vector<std::string> notes; // tinygltf's warnings on a successful load
+    gltf::JsonFacts facts;
 };
 
 Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
@@ -428,26 +478,36 @@ Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
     if (!nestingWithinLimit(jsonText(bytes, parsed.binary)))
         throw GltfError("JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");
     const std::string baseDir = fs::path(path).parent_path().string();
-    precheck(bytes, parsed.binary, baseDir);
+    Prechecked prechecked = precheck(bytes, parsed.binary, baseDir);
+    std::vector<unsigned char> rewritten;
+    if (!prechecked.json.empty()) rewritten = withJson(bytes, parsed.binary, std::move(prechecked.json));
+    // What tinygltf sees must be what the facts describe: nothing replaced or lent without a rewrite.
+    if (rewritten.empty()) {
+        prechecked.facts.fallbackBuffers.clear();
+        prechecked.facts.lentViews.clear();
+    }
+    parsed.facts = std::move(prechecked.facts);
+    const std::vector<unsigned char>& input = rewritten.empty() ? bytes : rewritten;
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(ignoreImage, nullptr);
     loader.SetFsCallbacks({fsFileExists, fsExpandPath, fsReadWholeFile, fsWriteWholeFile, nullptr});
-    const auto size = static_cast<unsigned int>(bytes.size());
+    const auto size = static_cast<unsigned int>(input.size());
     std::string err, warn;
     bool ok = false;
     try {
-        ok = parsed.binary ? loader.LoadBinaryFromMemory(&parsed.model, &err, &warn, bytes.data(), size, baseDir)
+        ok = parsed.binary ? loader.LoadBinaryFromMemory(&parsed.model, &err, &warn, input.data(), size, baseDir)
                            : loader.LoadASCIIFromString(&parsed.model, &err, &warn,
-                                                        reinterpret_cast<const char*>(bytes.data()), size, baseDir);
+                                                        reinterpret_cast<const char*>(input.data()), size, baseDir);
     } catch (const std::bad_alloc&) {
         throw;
     } catch (const std::exception& e) {
         throw GltfError(std::string("glTF parser: ") + e.what());
     }
     if (!ok) {
-        const std::string message = oneLine(err + "\n" + warn);
-        throw GltfError(message.empty() ? "tinygltf could not load the file" : message);
+        // The first line, bounded: tinygltf appends to `err` as it goes, quoting data URIs whole.
+        const std::string reason = firstLine(err.find_first_not_of(" \t\r\n") != std::string::npos ? err : warn);
+        throw GltfError("tinygltf could not load the file" + (reason.empty() ? "" : ": " + reason));
     }
     for (const std::string* text : {&err, &warn})
         if (const std::string line = oneLine(*text); !line.empty()) parsed.notes.push_back(line);
@@ -553,12 +613,20 @@ private:
     std::vector<Instance> instances_;
 };
 
-/// Root nodes: the default scene's, else every node no other node lists as a child.
-std::vector<int> rootNodes(const tinygltf::Model& model) {
-    if (model.defaultScene >= 0) {
-        if (size_t(model.defaultScene) >= model.scenes.size())
+/// Root nodes: the default scene's; without one, scene 0's (the spec leaves the choice to the
+/// viewer, and merging scenes would overlay alternatives, such as variants of one part); without
+/// scenes, every node no other node lists as a child.
+std::vector<int> rootNodes(const tinygltf::Model& model, std::vector<std::string>& notes) {
+    // tinygltf's -1: no "scene" property.
+    if (model.defaultScene != -1) {
+        if (model.defaultScene < 0 || size_t(model.defaultScene) >= model.scenes.size())
             throw GltfError("default scene " + std::to_string(model.defaultScene) + " does not exist");
         return model.scenes[size_t(model.defaultScene)].nodes;
+    }
+    if (!model.scenes.empty()) {
+        if (model.scenes.size() > 1)
+            notes.push_back("no default scene: scene 0 of " + str(model.scenes.size()) + " shown");
+        return model.scenes[0].nodes;
     }
     std::vector<char> isChild(model.nodes.size(), 0);
     for (const auto& node : model.nodes)
@@ -580,132 +648,8 @@ std::vector<Instance> collectInstances(const tinygltf::Model& model, std::vector
         return all;
     }
     NodeWalker walker(model);
-    for (int root : rootNodes(model)) walker.walk(root, glm::mat4(1.f), 0);
+    for (int root : rootNodes(model, notes)) walker.walk(root, glm::mat4(1.f), 0);
     return walker.take();
-}
-
-// ---------------------------------------------------------------------------------------------
-// [SECTION] Accessors
-
-/// A bounds-checked window on an accessor's elements: element(i) is valid for i < count.
-struct AccessorView {
-    const unsigned char* data = nullptr;
-    size_t count = 0;
-    size_t stride = 0;
-    int componentType = 0;
-    int type = 0;
-    [[nodiscard]] const unsigned char* element(size_t i) const { return data + i * stride; }
-};
-
-const tinygltf::Buffer& viewedBuffer(const tinygltf::Model& model, int viewIndex) {
-    const std::string name = "buffer view " + std::to_string(viewIndex);
-    if (viewIndex < 0 || size_t(viewIndex) >= model.bufferViews.size()) throw GltfError(name + " does not exist");
-    const tinygltf::BufferView& view = model.bufferViews[size_t(viewIndex)];
-    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
-        throw GltfError(name + " references missing buffer " + std::to_string(view.buffer));
-    const tinygltf::Buffer& buffer = model.buffers[size_t(view.buffer)];
-    const size_t size = buffer.data.size();
-    if (view.byteOffset > size || view.byteLength > size - view.byteOffset)
-        throw GltfError(name + " (offset " + str(view.byteOffset) + ", length " + str(view.byteLength) +
-                        ") exceeds buffer " + std::to_string(view.buffer) + " (" + str(size) + " bytes)");
-    return buffer;
-}
-
-/// Checks everything an accessor claims against the bytes that really exist, overflow-safely,
-/// so neither a read nor an allocation can follow an absurd count or offset.
-AccessorView viewAccessor(const tinygltf::Model& model, int index) {
-    const std::string name = "accessor " + std::to_string(index);
-    if (index < 0 || size_t(index) >= model.accessors.size()) throw GltfError(name + " does not exist");
-    const tinygltf::Accessor& acc = model.accessors[size_t(index)];
-    if (acc.sparse.isSparse) throw GltfError(name + " is sparse (not supported)");
-    if (acc.bufferView < 0) throw GltfError(name + " has no buffer view");
-    const tinygltf::Buffer& buffer = viewedBuffer(model, acc.bufferView);
-    const tinygltf::BufferView& view = model.bufferViews[size_t(acc.bufferView)];
-
-    const int componentSize = tinygltf::GetComponentSizeInBytes(uint32_t(acc.componentType));
-    const int components = tinygltf::GetNumComponentsInType(uint32_t(acc.type));
-    if (componentSize <= 0 || components <= 0) throw GltfError(name + " has an invalid componentType or type");
-    const size_t elementSize = size_t(componentSize) * size_t(components);
-    const size_t stride = view.byteStride ? view.byteStride : elementSize;
-    if (stride < elementSize)
-        throw GltfError(name + ": byteStride " + str(stride) + " is smaller than an element (" + str(elementSize) +
-                        " bytes)");
-
-    if (acc.count > 0) {
-        // byteOffset + (count - 1) * stride + elementSize <= byteLength, without overflow.
-        const size_t length = view.byteLength;
-        bool fits = acc.byteOffset <= length && elementSize <= length - acc.byteOffset;
-        if (fits) fits = acc.count - 1 <= (length - acc.byteOffset - elementSize) / stride;
-        if (!fits)
-            throw GltfError(name + ": " + str(acc.count) + " elements (stride " + str(stride) + ", offset " +
-                            str(acc.byteOffset) + ") exceed buffer view " + std::to_string(acc.bufferView) + " (" +
-                            str(length) + " bytes)");
-    }
-    return {buffer.data.data() + view.byteOffset + acc.byteOffset, acc.count, stride, acc.componentType, acc.type};
-}
-
-std::string componentName(int componentType) {
-    switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_INT: return "INT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
-    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return "DOUBLE";
-    default: return "componentType " + std::to_string(componentType);
-    }
-}
-
-std::string typeName(int type) {
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
-    default: return "type " + std::to_string(type);
-    }
-}
-
-bool isFloatVec3(const AccessorView& v) {
-    return v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT && v.type == TINYGLTF_TYPE_VEC3;
-}
-
-/// The elements listed in `which` (each < v.count), in that order.
-std::vector<glm::vec3> readVec3(const AccessorView& v, const std::vector<uint32_t>& which) {
-    std::vector<glm::vec3> out(which.size());
-    for (size_t i = 0; i < which.size(); ++i) std::memcpy(&out[i], v.element(which[i]), sizeof(glm::vec3));
-    return out;
-}
-
-template <typename T> uint32_t readIndex(const AccessorView& v, size_t i) {
-    T value;
-    std::memcpy(&value, v.element(i), sizeof(T));
-    return uint32_t(value);
-}
-
-/// Index values as stored (before triangle assembly), each checked against the vertex count.
-std::vector<uint32_t> readIndices(const AccessorView& v, size_t vertexCount, const std::string& where) {
-    if (v.type != TINYGLTF_TYPE_SCALAR) throw GltfError(where + ": indices must be SCALAR, not " + typeName(v.type));
-    uint32_t (*read)(const AccessorView&, size_t) = nullptr;
-    switch (v.componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: read = readIndex<uint8_t>; break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: read = readIndex<uint16_t>; break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: read = readIndex<uint32_t>; break;
-    default: throw GltfError(where + ": indices must be unsigned integers, not " + componentName(v.componentType));
-    }
-    std::vector<uint32_t> out(v.count);
-    for (size_t i = 0; i < v.count; ++i) {
-        out[i] = read(v, i);
-        if (out[i] >= vertexCount)
-            throw GltfError(where + ": index " + std::to_string(out[i]) + " out of range (" + str(vertexCount) +
-                            " vertices)");
-    }
-    return out;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -761,24 +705,24 @@ glm::vec3 baseColor(const tinygltf::Model& model, int material, const std::strin
 
 /// NORMAL is optional and recomputable, so a malformed one is dropped with a note rather than
 /// rejecting the file; an out-of-range one is still an error (the file is corrupt).
-void readNormals(const tinygltf::Model& model, const tinygltf::Primitive& prim, scene::Mesh& mesh, size_t accessorCount,
+void readNormals(Accessors& accessors, const tinygltf::Primitive& prim, scene::Mesh& mesh, size_t accessorCount,
                  const std::vector<uint32_t>& vertices, const std::string& where, std::vector<std::string>& notes) {
     const auto it = prim.attributes.find("NORMAL");
     if (it == prim.attributes.end()) return;
-    const AccessorView v = viewAccessor(model, it->second);
-    if (!isFloatVec3(v)) {
+    const AccessorView& v = accessors.view(it->second);
+    if (!gltf::isNormalType(v)) {
         notes.push_back(where + ": NORMAL is " + componentName(v.componentType) + " " + typeName(v.type) +
-                        ", not FLOAT VEC3; normals recomputed");
+                        ", not FLOAT or normalized BYTE or SHORT VEC3; normals recomputed");
     } else if (v.count != accessorCount) {
         notes.push_back(where + ": NORMAL count differs from POSITION; normals recomputed");
     } else {
-        mesh.normals = readVec3(v, vertices);
+        mesh.normals = gltf::readVec3(v, vertices);
     }
 }
 
 /// One primitive as an object-space Mesh, or nothing (with a note) when it holds no triangles.
-std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t meshIndex, size_t primIndex,
-                                           std::vector<std::string>& notes) {
+std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, Accessors& accessors, size_t meshIndex,
+                                           size_t primIndex, std::vector<std::string>& notes) {
     const tinygltf::Mesh& gltfMesh = model.meshes[meshIndex];
     const tinygltf::Primitive& prim = gltfMesh.primitives[primIndex];
     const std::string where = "mesh " + str(meshIndex) + " primitive " + str(primIndex);
@@ -793,16 +737,16 @@ std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t 
         notes.push_back(where + ": no POSITION attribute, skipped");
         return std::nullopt;
     }
-    const AccessorView positions = viewAccessor(model, position->second);
-    if (!isFloatVec3(positions))
-        throw GltfError(where + ": POSITION must be FLOAT VEC3, not " + componentName(positions.componentType) + " " +
+    const AccessorView& positions = accessors.view(position->second);
+    if (!gltf::isPositionType(positions))
+        throw GltfError(where + ": POSITION must be VEC3 of FLOAT, or of (UNSIGNED_)BYTE or (UNSIGNED_)SHORT (" +
+                        "KHR_mesh_quantization), not " + componentName(positions.componentType) + " " +
                         typeName(positions.type));
 
     std::vector<uint32_t> sequence; // vertex sequence, as indices into `vertices` once remapped
     std::vector<uint32_t> vertices; // accessor elements this primitive uses, ascending
     if (prim.indices >= 0) {
-        const AccessorView indices = viewAccessor(model, prim.indices);
-        sequence = readIndices(indices, positions.count, where);
+        sequence = gltf::readIndices(accessors.view(prim.indices), positions.count, where);
         // Read only the vertices referenced: primitives often share one large vertex accessor,
         // and copying it whole per primitive would multiply memory by the primitive count.
         vertices = sequence;
@@ -811,7 +755,8 @@ std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t 
         for (uint32_t& i : sequence)
             i = uint32_t(std::lower_bound(vertices.begin(), vertices.end(), i) - vertices.begin());
     } else {
-        // positions.count is bounded by the buffer (>= 12 bytes a vertex), so it fits uint32.
+        // positions.count fits uint32: bounded by the buffer (>= 3 bytes a vertex) or, without
+        // one, by Accessors::view.
         vertices.resize(positions.count);
         for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = uint32_t(i);
         sequence = vertices;
@@ -820,8 +765,8 @@ std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, size_t 
     scene::Mesh mesh;
     mesh.name = (gltfMesh.name.empty() ? "mesh " + str(meshIndex) : gltfMesh.name) +
                 (gltfMesh.primitives.size() > 1 ? " #" + str(primIndex) : "");
-    mesh.positions = readVec3(positions, vertices);
-    readNormals(model, prim, mesh, positions.count, vertices, where, notes);
+    mesh.positions = gltf::readVec3(positions, vertices);
+    readNormals(accessors, prim, mesh, positions.count, vertices, where, notes);
     if (mode == TINYGLTF_MODE_TRIANGLES && sequence.size() % 3 != 0)
         notes.push_back(where + ": " + str(sequence.size() % 3) + " trailing indices ignored");
     mesh.indices = toTriangleList(std::move(sequence), mode);
@@ -846,12 +791,12 @@ struct CleanPrimitive {
 using CleanedMeshes = std::map<int, std::vector<CleanPrimitive>>;
 
 /// Upper bound of what decodePrimitive() allocates, from (validated) accessor counts alone.
-size_t decodeCost(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
+size_t decodeCost(Accessors& accessors, const tinygltf::Primitive& prim) {
     const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     const auto position = prim.attributes.find("POSITION");
     if (!isTriangleMode(mode) || position == prim.attributes.end()) return 0;
-    const size_t vertices = viewAccessor(model, position->second).count;
-    const size_t sequence = prim.indices >= 0 ? viewAccessor(model, prim.indices).count : vertices;
+    const size_t vertices = accessors.view(position->second).count;
+    const size_t sequence = prim.indices >= 0 ? accessors.view(prim.indices).count : vertices;
     // Index sequence, its sorted copy and the unrolled triangle list (strips triple); positions
     // and normals of at most min(vertices, sequence) vertices.
     return sequence * 5 * sizeof(uint32_t) + std::min(vertices, sequence) * 2 * sizeof(glm::vec3);
@@ -859,16 +804,19 @@ size_t decodeCost(const tinygltf::Model& model, const tinygltf::Primitive& prim)
 
 /// Every accessor fits its buffer, but any number of primitives may reference the same large
 /// accessor, so a small JSON could demand terabytes. Honest files decode to a few times their
-/// buffers' size; the margin is generous, the bound is what matters. Checked before decoding,
-/// so a hostile file fails fast.
-void checkDecodeBudget(const tinygltf::Model& model, const CleanedMeshes& used, size_t fileBytes) {
+/// buffers' size (meshopt-compressed views counted decoded, as they are while checked); the
+/// margin is generous, the bound is what matters. Checked before decoding, so a hostile file
+/// fails fast.
+void checkDecodeBudget(const tinygltf::Model& model, Accessors& accessors, const CleanedMeshes& used,
+                       size_t fileBytes) {
     size_t available = fileBytes;
     for (const tinygltf::Buffer& buffer : model.buffers) available += buffer.data.size();
-    const size_t budget = 16 * available + (size_t{64} << 20);
     size_t cost = 0;
     for (const auto& entry : used)
         for (const tinygltf::Primitive& prim : model.meshes[size_t(entry.first)].primitives) {
-            cost += decodeCost(model, prim); // each term < 2^40: no overflow before the check
+            // Each term < 2^44 (counts within 64 times a 4 GiB buffer): no overflow before the check.
+            cost += decodeCost(accessors, prim);
+            const size_t budget = 16 * (available + accessors.decodedBytes()) + (size_t{64} << 20);
             if (cost > budget)
                 throw GltfError("primitives would decode to more than " + str(budget >> 20) +
                                 " MiB (accessors shared by too many primitives)");
@@ -882,18 +830,19 @@ void notify(const Progress& progress, float fraction, std::string_view stage) {
 /// Decodes and cleans each used mesh once; primitives that cleanup empties are noted and their
 /// reports go to `emptied`. `hadTriangles` tells whether any primitive had triangles before
 /// cleanup, so an empty result can say which of the two it is.
-CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, const std::vector<Instance>& instances, size_t fileBytes,
-                              const CleanupOptions& options, const Progress& progress, CleanupReport& emptied,
-                              bool& hadTriangles, std::vector<std::string>& notes) {
+CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, Accessors& accessors,
+                              const std::vector<Instance>& instances, size_t fileBytes, const CleanupOptions& options,
+                              const Progress& progress, CleanupReport& emptied, bool& hadTriangles,
+                              std::vector<std::string>& notes) {
     CleanedMeshes cleaned;
     size_t total = 0, done = 0;
     for (const Instance& inst : instances)
         if (cleaned.try_emplace(inst.mesh).second) total += model.meshes[size_t(inst.mesh)].primitives.size();
-    checkDecodeBudget(model, cleaned, fileBytes);
+    checkDecodeBudget(model, accessors, cleaned, fileBytes);
     for (auto& [meshIndex, primitives] : cleaned) {
         for (size_t p = 0; p < model.meshes[size_t(meshIndex)].primitives.size(); ++p) {
             notify(progress, float(done++) / float(total), "cleaning");
-            std::optional<scene::Mesh> mesh = decodePrimitive(model, size_t(meshIndex), p, notes);
+            std::optional<scene::Mesh> mesh = decodePrimitive(model, accessors, size_t(meshIndex), p, notes);
             if (!mesh) continue;
             hadTriangles = hadTriangles || !mesh->indices.empty();
             CleanupReport report = cleanMesh(*mesh, options);
@@ -965,8 +914,9 @@ LoadedModel loadChecked(const std::string& path, const CleanupOptions& options, 
     LoadedModel result;
     result.format = parsed.binary ? "glb" : "gltf";
     bool hadTriangles = false;
+    Accessors accessors(model, std::move(parsed.facts));
     CleanedMeshes cleaned =
-        cleanUsedMeshes(model, instances, fileBytes, options, progress, result.report, hadTriangles, notes);
+        cleanUsedMeshes(model, accessors, instances, fileBytes, options, progress, result.report, hadTriangles, notes);
     emitInstances(instances, cleaned, progress, result);
     // The same words as the other formats; which primitives were skipped is no help to someone
     // who opened a point cloud or a file of lines.
