@@ -240,23 +240,25 @@ void writeText(const fs::path& path, const std::string& text) {
 
 /// What rendering the cases leaves for judging them, by case index.
 struct CaseResults {
-    explicit CaseResults(size_t n) : reports(n), metrics(n), rendered(n, nullptr), goldens(n), seconds(n) {}
+    explicit CaseResults(size_t n) : reports(n), metrics(n), rendered(n, nullptr), goldens(n), eyes(n), seconds(n) {}
     std::vector<CaseReport> reports;
     std::vector<json> metrics;
     std::vector<const json*> rendered; // &metrics[i] once case i rendered every figure it names
     std::vector<std::optional<Verdict>> goldens;
+    std::vector<std::optional<Image>> eyes; // --update: case i's eye view, until its golden verdict is made
     std::vector<double> seconds;
     // --update: a golden shared by several cases is written from the first of them; the others are
     // compared with what it wrote, as a later run would compare them.
     std::map<std::string, Image> updated;
 };
 
-/// A rendered case's golden verdict: --update writes the golden (from the case that owns it), else compares with it.
-std::optional<Verdict> goldenVerdict(const PreparedCase& p, const Image& eye, const fs::path& caseDir, bool update,
+/// A rendered case's golden verdict: --update writes the golden (from the case that owns it) when
+/// `write`, else it compares with it.
+std::optional<Verdict> goldenVerdict(const PreparedCase& p, const Image& eye, const fs::path& caseDir, bool write,
                                      std::map<std::string, Image>& updated, CaseReport& report) {
     const CheckCase& c = *p.spec;
     if (!c.golden) return std::nullopt;
-    if (update && p.ownsGolden) {
+    if (write && p.ownsGolden) {
         Verdict v = updateGolden(p, eye, caseDir, report);
         updated[p.golden] = eye;
         return v;
@@ -290,13 +292,41 @@ void renderCase(const PreparedCase& p, size_t i, const CheckOptions& o, CaseResu
         results.rendered[i] = &results.metrics[i];
         report.render = c.name + "/eye.png";
         report.facts = facts(c, out);
-        results.goldens[i] = goldenVerdict(p, out.eye, caseDir, o.update, results.updated, report);
+        if (o.update && c.golden) results.eyes[i] = out.eye; // updateGoldens decides, once expectations are judged
+        else results.goldens[i] = goldenVerdict(p, out.eye, caseDir, false, results.updated, report);
     } catch (const CheckFileError&) {
         throw;                          // the check file is wrong: runCheck stops
     } catch (const std::exception& e) { // GL errors, files that cannot be written: this case fails
         report.error = e.what();
     }
     results.seconds[i] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// --update, once every case has rendered: a case whose expectations pass writes its golden; one
+/// whose expectations fail keeps the golden it had (a regression must not become the reference)
+/// unless --force, and fails. Cases sharing a golden compare with what its owner left.
+void updateGoldens(const CheckFile& file, const std::vector<PreparedCase>& cases, const CheckOptions& o,
+                   CaseResults& results) {
+    for (size_t i = 0; i < cases.size(); ++i) {
+        if (!results.eyes[i]) continue;
+        const PreparedCase& p = cases[i];
+        const std::vector<Verdict> expectations = evaluateCase(file, i, results.rendered);
+        const bool passes =
+            std::all_of(expectations.begin(), expectations.end(), [](const Verdict& v) { return v.passed; });
+        const fs::path caseDir = fs::path(o.out) / p.spec->name;
+        CaseReport& report = results.reports[i];
+        if (p.ownsGolden && p.spec->golden && !passes && !o.force) {
+            const std::string word = p.goldenImage ? "kept" : "not written";
+            std::cout << "golden " << word << ": " << p.golden
+                      << " (the case's expectations fail; --update --force writes it)\n";
+            results.goldens[i] = Verdict{"golden", false,
+                                         "golden " + p.spec->golden->path + ": " + word +
+                                             ", as the case's expectations fail (--update --force writes it)"};
+        } else {
+            results.goldens[i] = goldenVerdict(p, *results.eyes[i], caseDir, true, results.updated, report);
+        }
+        results.eyes[i].reset();
+    }
 }
 
 /// Judges case i's expectations, adds its golden verdict and time, and prints what failed.
@@ -333,9 +363,11 @@ void addCheckCommand(CLI::App& cmd, CheckOptions& o) {
     cmd.add_option("--out", o.out, "Output folder: DIR/CASE/ per case (eye.png, metrics.json, diff.png), report.html")
         ->capture_default_str();
     cmd.add_option("--junit", o.junit, "Also write the verdicts as a JUnit XML file")->type_name("FILE.xml");
-    cmd.add_flag("--update", o.update,
-                 "Write each case's eye view as its golden image (new, changed or unchanged is printed); the "
-                 "expectations still apply");
+    CLI::Option* update =
+        cmd.add_flag("--update", o.update,
+                     "Write each case's eye view as its golden image (new, changed or unchanged is printed) where "
+                     "the case's expectations pass; a failing case keeps its golden");
+    cmd.add_flag("--force", o.force, "With --update: write the goldens of failing cases too")->needs(update);
     addBackendOption(cmd, o.backend, false);
 }
 
@@ -366,6 +398,11 @@ int runCheck(const CheckOptions& o) {
         }
     }
     // Ratios compare cases with each other, so expectations are judged once every case has rendered.
+    try {
+        if (o.update) updateGoldens(file, cases, o, results);
+    } catch (const CheckFileError& e) { // a case compared with lacks the figure
+        return fail(e.what());
+    }
     for (size_t i = 0; i < cases.size(); ++i) {
         try {
             judgeCase(file, i, results);

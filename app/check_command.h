@@ -15,11 +15,12 @@ struct CheckOptions {
     std::string file;              // the check file
     std::string out = "out/check"; // DIR: DIR/CASE/ per case, DIR/report.html
     std::string junit;             // JUnit XML file; empty: none
-    bool update = false;           // write each case's eye view as its golden
+    bool update = false;           // write each passing case's eye view as its golden
+    bool force = false;            // with update: failing cases' too
     std::string backend = "auto";
 };
 
-/// Adds FILE, --out, --junit, --update, --backend.
+/// Adds FILE, --out, --junit, --update, --force, --backend.
 void addCheckCommand(CLI::App& cmd, CheckOptions& options);
 
 int runCheck(const CheckOptions& options);

@@ -286,3 +286,47 @@ TEST(CheckCli, UpdateWritesGoldensThatTheNextRunPasses) {
     EXPECT_EQ(slurp(paper), slurp(out / "paper" / "eye.png"));
     EXPECT_EQ(magentaPixels(geometry::analysis::readImageFile((out / "paper" / "diff.png").string())), 14400u);
 }
+
+// (e2) --update leaves the golden of a case whose expectations fail alone (a regression must not
+// become the reference); --update --force writes it.
+TEST(CheckCli, UpdateKeepsTheGoldenOfAFailingCase) {
+    const fs::path dir = freshDir("check_update_failing");
+    const fs::path file = dir / "checks.json";
+    const auto writeCheck = [&](const char* bound) {
+        writeFile(file, std::string(R"({ "cases": [
+          { "name": "plane", "scene": "plane", "size": "64x36", "set": { "shadow_map.resolution": 256 },
+            "expect": { "aliasing.p95": )") +
+                            bound + R"( }, "golden": "golden/plane.png" } ] })");
+    };
+    const fs::path out = dir / "out", golden = dir / "golden" / "plane.png";
+    writeCheck(R"({ "max": 0.000001 })"); // no render meets this
+    SplitResult r = check(file, "--update --out " + out.string());
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("golden not written: " + golden.string()), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(golden));
+
+    writeCheck(R"({ "min": 0 })"); // passes: written
+    r = check(file, "--update --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    ASSERT_TRUE(fs::exists(golden));
+    Image grey = geometry::analysis::readImageFile(golden.string());
+    std::fill(grey.rgba.begin(), grey.rgba.end(), uint8_t(128));
+    geometry::analysis::writePng(golden.string(), grey);
+    const std::string before = slurp(golden);
+
+    writeCheck(R"({ "max": 0.000001 })");
+    r = check(file, "--update --out " + out.string());
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.out.find("golden kept: " + golden.string()), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("kept, as the case's expectations fail"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(golden), before);
+
+    r = check(file, "--update --force --out " + out.string());
+    EXPECT_EQ(r.exitCode, 1); // the expectation still fails; the golden is written all the same
+    EXPECT_NE(r.out.find("golden changed: " + golden.string()), std::string::npos) << r.out;
+    EXPECT_EQ(slurp(golden), slurp(out / "plane" / "eye.png"));
+    EXPECT_NE(slurp(golden), before);
+
+    r = check(file, "--force --out " + out.string()); // --force alone means nothing: refused
+    EXPECT_NE(r.exitCode, 0);
+}
