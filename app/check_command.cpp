@@ -16,6 +16,7 @@
 
 #include "geometry/io/json_file.h"
 #include "geometry/io/preset.h"
+#include "geometry/io/scene_file.h"
 #include "geometry/scene/builtin_scenes.h"
 
 #include <CLI/CLI.hpp>
@@ -68,9 +69,11 @@ struct PreparedCase {
     const CheckCase* spec = nullptr;
     RenderOptions render;                           // scene resolved; settings: presets, then "set"
     const geometry::io::SceneFile* scene = nullptr; // loaded once per scene, shared by its cases
-    std::string golden;                             // resolved path; empty without a golden
-    std::optional<Image> goldenImage;               // the stored golden, when there is one
-    bool ownsGolden = false;                        // the first case naming it: --update writes it from this one
+    // The case's own camera, lights and views (its "camera", "light(s)", "views"), without meshes.
+    std::optional<geometry::io::SceneFile> viewpoint;
+    std::string golden;               // resolved path; empty without a golden
+    std::optional<Image> goldenImage; // the stored golden, when there is one
+    bool ownsGolden = false;          // the first case naming it: --update writes it from this one
 };
 
 std::string sceneNames(const geometry::io::SceneFile& f) {
@@ -86,6 +89,20 @@ geometry::io::SceneFile loadCaseScene(const CheckCase& c, const RenderOptions& r
     } catch (const std::exception& e) {
         throw CheckFileError(c.where + ".scene", e.what());
     }
+}
+
+/// The scene's camera, lights and views with the case's own read on top (no meshes: they stay shared).
+geometry::io::SceneFile caseViewpoint(const CheckCase& c, const geometry::io::SceneFile& scene) {
+    geometry::io::SceneFile own;
+    own.scene.camera = scene.scene.camera;
+    own.scene.lights = scene.scene.lights;
+    own.views = scene.views;
+    try {
+        geometry::io::applyViewKeys(own, c.viewKeys, c.where);
+    } catch (const geometry::io::SceneFileError& e) { // "cases[i]: camera.eye: problem"
+        throw CheckFileError("", e.what());
+    }
+    return own;
 }
 
 /// Resolves and reads everything a case needs (scenes, presets, goldens) and checks its view, so a
@@ -112,12 +129,16 @@ std::vector<PreparedCase> prepare(const CheckFile& file, const fs::path& folder,
             throw CheckFileError(c.where + ".scene", "'" + c.scene + "' is neither a built-in scene (" + list +
                                                          ") nor a file (no such file: " + r.scene + ")");
         }
-        auto it = scenes.find(r.scene);
-        if (it == scenes.end()) it = scenes.emplace(r.scene, loadCaseScene(c, r)).first;
+        r.up = c.up;
+        const std::string key = r.scene + (c.up ? "|up " + std::string(geometry::io::upAxisName(*c.up)) : "");
+        auto it = scenes.find(key);
+        if (it == scenes.end()) it = scenes.emplace(key, loadCaseScene(c, r)).first;
         p.scene = &it->second;
-        if (!c.view.empty() && !p.scene->views.contains(c.view))
+        if (!c.viewKeys.empty()) p.viewpoint = caseViewpoint(c, *p.scene);
+        const geometry::io::SceneFile& views = p.viewpoint ? *p.viewpoint : *p.scene;
+        if (!c.view.empty() && !views.views.contains(c.view))
             throw CheckFileError(c.where + ".view",
-                                 "scene '" + c.scene + "' has no view '" + c.view + "' (" + sceneNames(*p.scene) + ")");
+                                 "scene '" + c.scene + "' has no view '" + c.view + "' (" + sceneNames(views) + ")");
         r.settings = {};
         for (size_t i = 0; i < c.presets.size(); ++i) {
             const std::string where =
@@ -217,7 +238,12 @@ std::vector<std::pair<std::string, std::string>> facts(const CheckCase& c, const
     for (const auto& p : c.presets) presets += (presets.empty() ? "" : ", ") + p;
     if (!presets.empty()) f.emplace_back("preset", presets);
     if (!c.set.empty()) f.emplace_back("set", c.set.dump());
-    f.emplace_back("truth", c.truth ? "on" : "off");
+    f.emplace_back("truth", !c.truth ? "off"
+                            : c.truthSamples > 1
+                                ? "on, " + std::to_string(c.truthSamples * c.truthSamples) + " samples per pixel"
+                                : "on");
+    if (!c.viewKeys.empty()) f.emplace_back("view keys", c.viewKeys.dump());
+    if (c.up) f.emplace_back("up", std::string(geometry::io::upAxisName(*c.up)));
     f.emplace_back("renderer", r.metrics.value("renderer", std::string("?")));
     if (const auto gamma = r.metrics.find("gamma_deg"); gamma != r.metrics.end() && gamma->is_number())
         f.emplace_back("gamma", formatFigure(gamma->get<double>()) + " deg");
@@ -282,9 +308,15 @@ void renderCase(const PreparedCase& p, size_t i, const CheckOptions& o, CaseResu
         if (!samePath(caseDir / stale, p.golden)) fs::remove(caseDir / stale, ec);
     ExportOptions exports;
     exports.truth.enabled = c.truth;
+    exports.truth.samples = c.truthSamples;
     if (c.truth) exports.views.push_back("truth");
     try {
         geometry::io::SceneFile scene = *p.scene;
+        if (p.viewpoint) {
+            scene.scene.camera = p.viewpoint->scene.camera;
+            scene.scene.lights = p.viewpoint->scene.lights;
+            scene.views = p.viewpoint->views;
+        }
         applyView(scene, p.render);
         const RenderOutput out = renderInto(std::move(scene.scene), p.render, exports);
         requireKeys(c, out.metrics); // a figure render does not produce: the check file is wrong

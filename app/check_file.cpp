@@ -8,6 +8,7 @@
 
 #include "render_options.h"
 
+#include "geometry/analysis/ground_truth.h"
 #include "geometry/io/preset.h"
 
 #include <algorithm>
@@ -147,9 +148,9 @@ GoldenSpec readGolden(const json& c, const std::string& path) {
 }
 
 CheckCase readCase(const json& c, const std::string& path) {
-    Reader::checkObject(
-        c, path,
-        {"name", "description", "scene", "view", "size", "preset", "set", "truth", "expect", "golden", "tolerance"});
+    Reader::checkObject(c, path,
+                        {"name", "description", "scene", "view", "size", "preset", "set", "truth", "truth_samples",
+                         "expect", "golden", "tolerance", "camera", "light", "lights", "views", "up"});
     CheckCase out;
     out.where = path;
     if (!c.contains("name")) Reader::fail(path, "a case needs a \"name\"");
@@ -186,6 +187,24 @@ CheckCase readCase(const json& c, const std::string& path) {
         (void)applySet(out, {}); // every key and value valid on its own, before any file is read
     }
     if (c.contains("truth")) out.truth = Reader::boolean(c["truth"], member(path, "truth"));
+    if (c.contains("truth_samples")) {
+        const std::string where = member(path, "truth_samples");
+        const json& n = c["truth_samples"];
+        constexpr int kMax = geometry::analysis::GroundTruth::kMaxSamplesPerAxis;
+        if (!n.is_number_integer() || n.get<int64_t>() < 1 || n.get<int64_t>() > kMax)
+            Reader::fail(where, "expected an integer in 1.." + std::to_string(kMax) +
+                                    " (rays per pixel per axis), got " + describe(n));
+        if (!out.truth) Reader::fail(where, "needs \"truth\": true");
+        out.truthSamples = int(n.get<int64_t>());
+    }
+    // Camera, light(s) and views are read against the case's scene once it is loaded (check_command.cpp).
+    for (const char* key : {"camera", "light", "lights", "views"})
+        if (c.contains(key)) out.viewKeys[key] = c[key];
+    if (c.contains("up")) {
+        const std::string text = Reader::string(c["up"], member(path, "up"));
+        out.up = geometry::io::parseUpAxis(text);
+        if (!out.up) Reader::fail(member(path, "up"), "expected one of y, z, -y, -z, x, -x, got '" + text + "'");
+    }
     if (c.contains("expect")) out.expect = readExpect(c["expect"], member(path, "expect"));
     if (c.contains("golden")) out.golden = readGolden(c, path);
     else if (c.contains("tolerance")) Reader::fail(member(path, "tolerance"), "needs a \"golden\" image to apply to");

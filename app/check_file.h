@@ -20,6 +20,7 @@
 // Errors are CheckFileError, whose message starts with the JSON path of the offending value.
 #include "check_expect.h"
 
+#include "geometry/io/up_axis.h"
 #include "geometry/shadow/settings.h"
 #include "geometry/shadow/shadow_plan.h"
 
@@ -58,6 +59,11 @@ struct CheckCase {
     std::vector<std::string> presets;              // paths as written
     nlohmann::json set = nlohmann::json::object(); // setting key → JSON value
     bool truth = false;
+    int truthSamples = 1; // per axis: N × N rays per pixel
+    // The case's own "camera", "light" or "lights" and "views", as written: read against its scene by
+    // geometry::io::applyViewKeys (the scene file's rules), before anything renders.
+    nlohmann::json viewKeys = nlohmann::json::object();
+    std::optional<geometry::io::UpAxis> up; // a model file's up axis; empty: its format's
     std::vector<Expectation> expect;
     std::optional<GoldenSpec> golden;
 };

@@ -182,6 +182,13 @@ TEST(CheckCli, BadCheckFilesGiveOneLineAndExitTwo) {
          true},
         {"golden", R"("golden": "golden/missing.png")",
          "shadowscope: check: cases[0].golden: no such file: " + (dir / "golden" / "missing.png").string(), false},
+        {"samples", R"("truth_samples": 2)", "shadowscope: check: cases[0].truth_samples: needs \"truth\": true",
+         false},
+        {"camera", R"("camera": {"eye": [0, "x", 0]})",
+         "shadowscope: check: " + (dir / "camera.json").string() + ": cases[0]: camera.eye", false},
+        {"view", R"("views": {"top": {"camera": {"fov_y": 40}}}, "view": "side")",
+         "shadowscope: check: cases[0].view: scene 'plane' has no view 'side' (available: default, top)", false},
+        {"up", R"("up": "w")", "shadowscope: check: cases[0].up: expected one of y, z, -y, -z, x, -x, got 'w'", false},
     };
     for (const Bad& b : bad) {
         const fs::path file = dir / (b.name + ".json");
@@ -197,6 +204,27 @@ TEST(CheckCli, BadCheckFilesGiveOneLineAndExitTwo) {
         EXPECT_EQ(r.out, "") << b.name;
         EXPECT_EQ(fs::exists(out / "a" / "eye.png"), b.renders) << b.name << ": validated before rendering";
     }
+}
+
+// A case carries its own camera, light, views and truth samples, read by the scene file's rules.
+TEST(CheckCli, ACaseCarriesItsOwnCameraLightViewsAndSamples) {
+    const fs::path dir = freshDir("check_view_keys");
+    const fs::path file = dir / "checks.json";
+    writeFile(file, R"({ "cases": [
+      { "name": "top", "scene": "plane", "size": "64x36", "set": { "shadow_map.resolution": 256 },
+        "light": { "direction": [0.3, -1, 0.1] }, "camera": { "fov_y": 40 },
+        "views": { "top": { "camera": { "eye": [0, 30, 0.5], "target": [0, 0, 0] } } }, "view": "top",
+        "truth": true, "truth_samples": 2 },
+      { "name": "plain", "scene": "plane", "size": "64x36", "set": { "shadow_map.resolution": 256 } } ] })");
+    const fs::path out = dir / "out";
+    const SplitResult r = check(file, "--out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    const nlohmann::json top = readJson(out / "top" / "metrics.json"), plain = readJson(out / "plain" / "metrics.json");
+    EXPECT_EQ(top.at("camera").at("eye"), nlohmann::json::parse("[0.0, 30.0, 0.5]"));
+    EXPECT_EQ(top.at("camera").at("target"), nlohmann::json::parse("[0.0, 0.0, 0.0]"));
+    EXPECT_EQ(top.at("truth").at("samples_per_pixel"), 4);
+    EXPECT_NE(top.at("light"), plain.at("light")); // the case's light, not the scene's
+    EXPECT_NE(plain.at("camera").at("eye"), top.at("camera").at("eye"));
 }
 
 // (d) The JUnit file is well-formed XML with one testsuite, a testcase per case and a failure per

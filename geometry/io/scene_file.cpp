@@ -579,6 +579,15 @@ void readPaths(const Reader& r, const json& j, SceneFile& f) {
     }
 }
 
+/// "camera", then "light" or "lights" (not both): a scene file's top level, or a check case.
+void readCameraAndLights(const Reader& r, const json& j, scene::Scene& scene, const scene::Camera& camera,
+                         const scene::Light& light) {
+    scene.camera = j.contains("camera") ? r.camera(j["camera"], "camera", camera) : camera;
+    if (j.contains("light") && j.contains("lights")) r.fail("lights", "give \"light\" or \"lights\", not both");
+    if (j.contains("lights")) scene.lights = r.lights(j["lights"], "lights", light);
+    else if (j.contains("light")) scene.lights = {r.light(j["light"], "light", light)};
+}
+
 SceneFile readSceneFile(const std::string& path, const json& j, const Progress& progress, std::optional<UpAxis> up) {
     const Reader r(path);
     r.checkObject(
@@ -596,11 +605,9 @@ SceneFile readSceneFile(const std::string& path, const json& j, const Progress& 
     if (f.scene.meshes.empty()) r.fail("", "empty scene: no meshes and no ground");
 
     const scene::Camera base = defaults.camera ? *defaults.camera : framedCamera(models, f.scene.bounds());
-    f.scene.camera = j.contains("camera") ? r.camera(j["camera"], "camera", base) : base;
     const scene::Light light = defaults.light ? *defaults.light : defaultLight();
-    if (j.contains("light") && j.contains("lights")) r.fail("lights", "give \"light\" or \"lights\", not both");
-    if (j.contains("lights")) f.scene.lights = r.lights(j["lights"], "lights", light);
-    else f.scene.lights = {j.contains("light") ? r.light(j["light"], "light", light) : light};
+    f.scene.lights = {light};
+    readCameraAndLights(r, j, f.scene, base, light);
     readOccluderEdge(r, j, f.scene);
     readViews(r, j, f);
     readPaths(r, j, f);
@@ -653,6 +660,15 @@ scene::Camera frameCamera(const scene::Aabb& bounds, float fovYDeg) {
 scene::Light defaultLight() {
     // From the left of frameCamera()'s view: shadows fall to the right, visible from the eye.
     return scene::Light{{0.6f, -1.f, -0.2f}};
+}
+
+void applyViewKeys(SceneFile& f, const json& j, const std::string& where) {
+    const Reader r(where);
+    if (!j.is_object()) r.fail("", std::string("expected an object, got ") + j.type_name());
+    const scene::Camera camera = f.scene.camera;
+    const scene::Light light = f.scene.lights.empty() ? defaultLight() : f.scene.lights[0];
+    readCameraAndLights(r, j, f.scene, camera, light);
+    readViews(r, j, f);
 }
 
 SceneFile loadSceneFile(const std::string& path, const Progress& progress, std::optional<UpAxis> up) {

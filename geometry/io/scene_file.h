@@ -26,6 +26,8 @@
 #include "geometry/io/model_loader.h"
 #include "geometry/scene/scene.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstddef>
 #include <map>
 #include <stdexcept>
@@ -85,6 +87,12 @@ struct SceneFile {
 /// `up` is the model's up axis (loadModel), or the default for a scene file's model files.
 [[nodiscard]] SceneFile resolveScene(const std::string& nameOrPath, const Progress& progress = {},
                                      std::optional<UpAxis> up = std::nullopt);
+
+/// Another file's "camera", "light" or "lights", and "views" (a check case's) on top of a loaded
+/// scene, read by the scene file's rules: the camera and lights start from the scene's, and the views
+/// are added (a name the scene has is replaced). Other members of `j` are ignored. Throws
+/// SceneFileError "WHERE: KEY.PATH: problem".
+void applyViewKeys(SceneFile& f, const nlohmann::json& j, const std::string& where);
 
 /// A 3/4 view from above looking at the centre of `bounds`, far enough that the bounds' sphere
 /// fits the vertical field of view; near = diagonal / 1000, far = diagonal · 3.
