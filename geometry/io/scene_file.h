@@ -4,25 +4,8 @@
 // light paths. Also resolveScene(), which turns whatever --scene names (a built-in scene, a scene
 // file, a model file) into a scene.
 //
-// Layout (every key optional unless marked; unknown keys are errors so typos cannot pass):
-//   { "name": "...", "description": "...",
-//     "meshes": [ { "file": "model.stl" | "builtin": "platform" | "plane",        (one of the two)
-//                   "params": {"triangles": 250000, "seed": 1},                 (platform only)
-//                   "translate": [x,y,z], "rotate_deg": [x,y,z], "scale": s | [sx,sy,sz],
-//                   "color": [r,g,b] } ],
-//     "ground": { "size": 200, "height": 0, "color": [r,g,b] },
-//     "camera": { "eye": [..], "target": [..], "up": [..], "fov_y": 60, "near": 0.5, "far": 1000 },
-//     "light": { "type": "directional" | "spot" | "point", "direction": [..], "position": [..],
-//                "cone_deg": 60, "range": 100, "radius": 0 },   (spot: cone in (0, 180); docs/design.md §3.10)
-//     "lights": [ {light}, ... ],                 (1 to scene::kMaxLights, instead of "light")
-//     "occluder_edge": [ [x,y,z], [x,y,z] ],      (a straight occluder edge, world space: the truth's
-//                                                  penumbra_width_error measures its shadow)
-//     "views": { "NAME": { "camera": {...}, "light": {...} } },
-//     "paths": { "NAME": { "camera": [ {"eye": [..], "target": [..]}, ... ], "light": [ [dx,dy,dz], ... ] } } }
-// File paths are relative to the scene file's folder. Camera and light objects may be partial:
-// missing members keep the scene's camera and light (for the top-level camera: the camera of the
-// first built-in entry, else one framed on the meshes). A file has the views it names, no more
-// (no implicit "default").
+// The format, every key with its type and default: docs/scene-files.md; its JSON Schema:
+// resources/scene.schema.json (tests/test_scene_schema.cpp holds the two to the same files).
 #include "geometry/io/model_loader.h"
 #include "geometry/scene/scene.h"
 
