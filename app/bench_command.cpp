@@ -17,14 +17,18 @@
 
 #include <CLI/CLI.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace app {
 
@@ -109,6 +113,7 @@ void addBenchCommand(CLI::App& cmd, BenchOptions& o) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     addTruthOptions(cmd, o.truth, "Also measure misclassification against ray-traced truth (Embree)");
+    addShardOption(cmd, o.shard, "configurations (each measures every view)");
     cmd.add_option("--path", o.path,
                    "Also walk this camera/light path of the scene file in --frames frames per configuration: "
                    "flicker_mean, flicker_p95 (world space), flicker_screen and seam columns");
@@ -125,6 +130,7 @@ void addBenchCommand(CLI::App& cmd, BenchOptions& o) {
 namespace {
 
 struct Row {
+    size_t configIndex = 0, viewIndex = 0; // in the whole run (every shard)
     std::string config, preset, view;
     double gamma = 0, gpuMs = 0, cpuMs = 0, p95 = 0, falseLit = 0, falseShadow = 0, memoryMiB = 0, shadowMs = 0;
     double soft = NAN; // soft_mean_abs, with truth and a sun of non-zero size
@@ -229,18 +235,18 @@ Row benchRow(const BenchConfiguration& cfg, const std::string& viewName, const r
     return row;
 }
 
-/// Writes results.csv: one line per row, the path figures of its configuration when there was a --path.
-void writeResultsCsv(const std::filesystem::path& dir, const BenchOptions& o,
-                     const std::vector<BenchConfiguration>& configs, const std::vector<Row>& rows,
-                     const std::vector<renderer::PathFigures>& paths, bool hasPath, const std::string& rendererName) {
-    std::ofstream csv(dir / "results.csv");
-    csv << "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
-           "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
-           "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam,shadow_ms_median,"
-           "shadow_triangles,shadow_triangles_without_lod,soft_mean_abs,umbra_light,contact_false_lit,contact_gap_"
-           "p95,"
-           "interior_mean_abs,edge_width_px,edge_width_texels,truth_singular\n";
-    for (const Row& w : rows) {
+constexpr const char* kResultsCsvHeader =
+    "config,preset,view,gamma_deg,gpu_ms_median,cpu_ms_median,p95,false_lit,false_shadow,misclassified,"
+    "shadow_memory_mib,frames,width,height,renderer,interior_false_shadow,interior_false_lit,edge_error,"
+    "edge_displacement_texels,ambiguous,flicker_mean,flicker_p95,flicker_screen,seam,shadow_ms_median,"
+    "shadow_triangles,shadow_triangles_without_lod,soft_mean_abs,umbra_light,contact_false_lit,contact_gap_p95,"
+    "interior_mean_abs,edge_width_px,edge_width_texels,truth_singular\n";
+
+/// One line of results.csv: a row, with the path figures of its configuration when there was a --path.
+std::string resultsCsvLine(const Row& w, const BenchOptions& o, const renderer::PathFigures& f, bool hasPath,
+                           const std::string& rendererName) {
+    std::ostringstream csv;
+    {
         csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
             << w.cpuMs << ',' << w.p95 << ',';
         if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
@@ -252,9 +258,6 @@ void writeResultsCsv(const std::filesystem::path& dir, const BenchOptions& o,
             csv << c.interiorFalseShadow << ',' << c.interiorFalseLit << ',' << c.edgeError << ','
                 << c.edgeDisplacementTexelsMedian << ',' << c.ambiguous;
         else csv << ",,,,";
-        const auto cfg = std::find_if(configs.begin(), configs.end(),
-                                      [&](const BenchConfiguration& b) { return b.label == w.config; });
-        const renderer::PathFigures& f = paths[size_t(cfg - configs.begin())];
         if (hasPath) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
         else csv << ",,,,";
         csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << ',';
@@ -266,13 +269,94 @@ void writeResultsCsv(const std::filesystem::path& dir, const BenchOptions& o,
         else csv << ",,,,,,";
         csv << '\n';
     }
+    return csv.str();
+}
+
+/// Writes results.csv from its lines.
+void writeResultsCsv(const std::filesystem::path& dir, const std::vector<std::string>& lines) {
+    std::ofstream csv(dir / "results.csv", std::ios::binary);
+    csv << kResultsCsvHeader;
+    for (const std::string& line : lines) csv << line;
     if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
+}
+
+void writeJsonFile(const std::filesystem::path& path, const nlohmann::json& j) {
+    std::ofstream out(path, std::ios::binary);
+    out << j.dump(1) << '\n';
+    if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+/// NaN as JSON writes it (null), and back.
+nlohmann::json figure(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+double figure(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : NAN; }
+
+/// What the chart needs of a row, and its results.csv line: results.json, which `merge` reads.
+nlohmann::json rowJson(const Row& w, const std::string& csvLine) {
+    const auto& c = w.classes;
+    return {{"config_index", w.configIndex},
+            {"view_index", w.viewIndex},
+            {"config", w.config},
+            {"preset", w.preset},
+            {"view", w.view},
+            {"gpu_ms", figure(w.gpuMs)},
+            {"cpu_ms", figure(w.cpuMs)},
+            {"memory_mib", figure(w.memoryMiB)},
+            {"p95", figure(w.p95)},
+            {"truth", w.truth},
+            {"false_lit", figure(w.falseLit)},
+            {"false_shadow", figure(w.falseShadow)},
+            {"soft", figure(w.soft)},
+            {"interior_false_shadow", figure(c.interiorFalseShadow)},
+            {"interior_false_lit", figure(c.interiorFalseLit)},
+            {"edge_error", figure(c.edgeError)},
+            {"umbra_light", figure(c.umbraLight)},
+            {"csv", csvLine}};
+}
+
+Row rowFromJson(const nlohmann::json& j) {
+    Row w;
+    w.configIndex = j.at("config_index").get<size_t>();
+    w.viewIndex = j.at("view_index").get<size_t>();
+    w.config = j.at("config").get<std::string>();
+    w.preset = j.at("preset").get<std::string>();
+    w.view = j.at("view").get<std::string>();
+    w.gpuMs = figure(j.at("gpu_ms"));
+    w.cpuMs = figure(j.at("cpu_ms"));
+    w.memoryMiB = figure(j.at("memory_mib"));
+    w.p95 = figure(j.at("p95"));
+    w.truth = j.at("truth").get<bool>();
+    w.falseLit = figure(j.at("false_lit"));
+    w.falseShadow = figure(j.at("false_shadow"));
+    w.soft = figure(j.at("soft"));
+    w.classes.interiorFalseShadow = figure(j.at("interior_false_shadow"));
+    w.classes.interiorFalseLit = figure(j.at("interior_false_lit"));
+    w.classes.edgeError = figure(j.at("edge_error"));
+    w.classes.umbraLight = figure(j.at("umbra_light"));
+    return w;
+}
+
+/// The chart (tradeoff.svg and .png) of configurations, rows and path figures.
+void writeChart(const std::filesystem::path& dir, const std::vector<BenchConfiguration>& configs,
+                const std::vector<Row>& rows, const std::vector<renderer::PathFigures>& paths, ui::charts::TradeoffX x,
+                ui::charts::TradeoffY y) {
+    const ui::charts::Chart chart = benchChart(configs, rows, paths, x, y);
+    ui::charts::writeSvg(dir / "tradeoff.svg", chart, 1000, 620);
+    geometry::analysis::writePng((dir / "tradeoff.png").string(), ui::renderChartImage(chart, 1000, 620));
 }
 
 } // namespace
 
 int runBench(const BenchOptions& o) {
-    const std::vector<BenchConfiguration> configs = benchConfigurations(o);
+    // --shard: configurations dealt round robin; each measures every view, so a configuration's
+    // rows (and the ratios between them) come from one machine.
+    const std::vector<BenchConfiguration> all = benchConfigurations(o);
+    std::vector<BenchConfiguration> configs;
+    std::vector<size_t> configIndex; // configs[i] is all[configIndex[i]]
+    for (size_t c = 0; c < all.size(); ++c)
+        if (!o.shard || c % o.shard->count == o.shard->index) {
+            configs.push_back(all[c]);
+            configIndex.push_back(c);
+        }
     geometry::io::SceneFile file = geometry::io::resolveScene(findResource(o.common.scene), {}, o.common.up);
     const std::vector<NamedView> views = benchViews(file, o.common.views);
     const ui::charts::TradeoffX xAxis = ui::charts::parseTradeoffX(o.x).value_or(ui::charts::TradeoffX::GpuMs);
@@ -289,13 +373,18 @@ int runBench(const BenchOptions& o) {
     if (o.truth.enabled || path)
         truth = std::make_unique<geometry::analysis::GroundTruth>(geometry::analysis::GroundTruth::borrowing(scene));
     std::cerr << "bench: " << configs.size() << " configuration(s) × " << views.size() << " view(s), " << o.frames
-              << " frames each on " << context->rendererString() << '\n';
+              << " frames each on " << context->rendererString()
+              << (o.shard ? ", shard " + o.shard->text() + " of " + std::to_string(all.size()) + " configurations"
+                          : std::string())
+              << '\n';
 
     std::vector<Row> rows;
     bool gpuTimes = true;
     const size_t total = configs.size() * views.size();
-    for (const auto& cfg : configs)
-        for (const auto& [viewName, view] : views) {
+    for (size_t c = 0; c < configs.size(); ++c)
+        for (size_t v = 0; v < views.size(); ++v) {
+            const BenchConfiguration& cfg = configs[c];
+            const auto& [viewName, view] = views[v];
             scene.camera = view.camera;
             scene.lights[0] = view.light; // a view names the first light (geometry/io/scene_file.h)
             ensureCasterLod(r, scene, cfg.settings);
@@ -305,7 +394,9 @@ int runBench(const BenchOptions& o) {
                                   {.warmup = o.warmup, .frames = o.frames, .truthSamples = o.truth.samples},
                                   o.truth.enabled ? truth.get() : nullptr, measured.others);
             if (m.gpuFrames == 0) gpuTimes = false;
-            const Row& row = rows.emplace_back(benchRow(cfg, viewName, m));
+            Row& row = rows.emplace_back(benchRow(cfg, viewName, m));
+            row.configIndex = configIndex[c];
+            row.viewIndex = v;
             std::cerr << "[" << rows.size() << "/" << total << "] " << cfg.label << " @ " << viewName << ": GPU "
                       << row.gpuMs << " ms, CPU " << row.cpuMs << " ms, p95 m " << row.p95 << '\n';
         }
@@ -326,13 +417,98 @@ int runBench(const BenchOptions& o) {
         throw std::runtime_error("GL error: " + errors);
 
     const std::filesystem::path dir(o.common.out);
-    writeResultsCsv(dir, o, configs, rows, paths, path.has_value(), context->rendererString());
+    std::vector<std::string> lines;
+    nlohmann::json results = {{"kind", "bench"},
+                              {"config_count", all.size()},
+                              {"x", o.x},
+                              {"y", o.y},
+                              {"gpu_times", gpuTimes},
+                              {"rows", nlohmann::json::array()},
+                              {"paths", nlohmann::json::array()}};
+    for (const auto& cfg : all) results["configs"].push_back({{"label", cfg.label}, {"preset", cfg.preset}});
+    for (const Row& row : rows) {
+        const size_t c =
+            size_t(std::find(configIndex.begin(), configIndex.end(), row.configIndex) - configIndex.begin());
+        lines.push_back(resultsCsvLine(row, o, paths[c], path.has_value(), context->rendererString()));
+        results["rows"].push_back(rowJson(row, lines.back()));
+    }
+    for (size_t c = 0; c < configs.size(); ++c)
+        results["paths"].push_back({{"config_index", configIndex[c]}, {"flicker_mean", figure(paths[c].flickerMean)}});
+    writeResultsCsv(dir, lines);
     const ui::charts::TradeoffX x =
         xAxis == ui::charts::TradeoffX::GpuMs && !gpuTimes ? ui::charts::TradeoffX::CpuMs : xAxis;
-    const ui::charts::Chart chart = benchChart(configs, rows, paths, x, yAxis);
-    ui::charts::writeSvg(dir / "tradeoff.svg", chart, 1000, 620);
-    geometry::analysis::writePng((dir / "tradeoff.png").string(), ui::renderChartImage(chart, 1000, 620));
-    for (const char* f : {"results.csv", "tradeoff.svg", "tradeoff.png"}) std::cout << (dir / f).string() << '\n';
+    writeChart(dir, configs, rows, paths, x, yAxis);
+    writeJsonFile(dir / "results.json", results);
+    for (const char* f : {"results.csv", "tradeoff.svg", "tradeoff.png", "results.json"})
+        std::cout << (dir / f).string() << '\n';
+    return 0;
+}
+
+int mergeBench(const std::vector<nlohmann::json>& shards, const std::string& out) {
+    const auto fail = [](const std::string& problem) { throw std::invalid_argument("merge: " + problem); };
+    const nlohmann::json& first = shards.front();
+    const size_t count = first.at("config_count").get<size_t>();
+    std::vector<BenchConfiguration> configs(count);
+    for (size_t c = 0; c < count; ++c) {
+        configs[c].label = first.at("configs").at(c).at("label").get<std::string>();
+        configs[c].preset = first.at("configs").at(c).at("preset").get<std::string>();
+    }
+    std::vector<Row> rows;
+    std::vector<std::string> lines;
+    std::vector<renderer::PathFigures> paths(count);
+    std::vector<bool> seen(count, false);
+    bool gpuTimes = true;
+    for (const nlohmann::json& s : shards) {
+        if (s.at("configs") != first.at("configs") || s.at("x") != first.at("x") || s.at("y") != first.at("y"))
+            fail("the folders come from different bench runs (configurations or chart axes differ)");
+        gpuTimes = gpuTimes && s.at("gpu_times").get<bool>();
+        for (const auto& p : s.at("paths")) {
+            const size_t c = p.at("config_index").get<size_t>();
+            if (c >= count || seen[c])
+                fail("configuration " + std::to_string(c) + " is in two shards (or out of range)");
+            seen[c] = true;
+            paths[c].flickerMean = figure(p.at("flicker_mean"));
+        }
+        for (const auto& r : s.at("rows")) {
+            rows.push_back(rowFromJson(r));
+            lines.push_back(r.at("csv").get<std::string>());
+        }
+    }
+    for (size_t c = 0; c < count; ++c)
+        if (!seen[c]) fail("configuration '" + configs[c].label + "' is in no folder (a shard missing?)");
+    // The order one unsharded run writes: configuration, then view.
+    std::vector<size_t> order(rows.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return std::tie(rows[a].configIndex, rows[a].viewIndex) < std::tie(rows[b].configIndex, rows[b].viewIndex);
+    });
+    std::vector<Row> sortedRows;
+    std::vector<std::string> sortedLines;
+    nlohmann::json merged = first;
+    merged["gpu_times"] = gpuTimes;
+    merged["rows"] = nlohmann::json::array();
+    merged["paths"] = nlohmann::json::array();
+    for (const size_t i : order) {
+        sortedRows.push_back(rows[i]);
+        sortedLines.push_back(lines[i]);
+        merged["rows"].push_back(rowJson(rows[i], lines[i]));
+    }
+    for (size_t c = 0; c < count; ++c)
+        merged["paths"].push_back({{"config_index", c}, {"flicker_mean", figure(paths[c].flickerMean)}});
+    const std::filesystem::path dir(out);
+    createOutputFolder(out);
+    writeResultsCsv(dir, sortedLines);
+    // The chart's PNG is drawn with GL (ImGui's renderer), on the CPU: the same pixels on every machine.
+    const auto context = renderer::createHeadlessContext(renderer::parseBackend("osmesa"));
+    const ui::charts::TradeoffX xAxis =
+        ui::charts::parseTradeoffX(first.at("x").get<std::string>()).value_or(ui::charts::TradeoffX::GpuMs);
+    const ui::charts::TradeoffY yAxis =
+        ui::charts::parseTradeoffY(first.at("y").get<std::string>()).value_or(ui::charts::TradeoffY::P95);
+    writeChart(dir, configs, sortedRows, paths,
+               xAxis == ui::charts::TradeoffX::GpuMs && !gpuTimes ? ui::charts::TradeoffX::CpuMs : xAxis, yAxis);
+    writeJsonFile(dir / "results.json", merged);
+    for (const char* f : {"results.csv", "tradeoff.svg", "tradeoff.png", "results.json"})
+        std::cout << (dir / f).string() << '\n';
     return 0;
 }
 

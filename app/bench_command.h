@@ -2,8 +2,12 @@
 // `shadowscope bench`: configurations (presets × --sweep values) × canonical views, N timed frames
 // each after warm-up; results.csv, and the speed/accuracy trade-off chart with its Pareto front.
 #include "app/render_options.h"
+#include "app/shard.h"
 #include "geometry/shadow/settings.h"
 
+#include <nlohmann/json_fwd.hpp>
+
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +29,7 @@ struct BenchOptions {
     std::string path;         // a camera/light path of the scene file, walked in `frames` frames
     std::string x = "gpu_ms"; // the trade-off chart's axes (ui/charts/tradeoff_chart.h)
     std::string y = "p95";
+    std::optional<Shard> shard; // --shard I/N: only this share of the configurations
 
     [[nodiscard]] static RenderOptions benchDefaults() {
         RenderOptions o;
@@ -48,5 +53,10 @@ struct BenchConfiguration {
 
 void addBenchCommand(CLI::App& cmd, BenchOptions& options);
 int runBench(const BenchOptions& options);
+
+/// `merge` of bench folders: their results.json (kind "bench"), every configuration in exactly one,
+/// into OUT's results.csv, tradeoff.svg/png and results.json as one unsharded run writes them.
+/// Throws std::invalid_argument for folders of different runs, a configuration missing or twice.
+int mergeBench(const std::vector<nlohmann::json>& shards, const std::string& out);
 
 } // namespace app

@@ -13,6 +13,7 @@
 #include "render_command.h"
 #include "render_options.h"
 #include "resources.h"
+#include "shard.h"
 
 #include "geometry/io/json_file.h"
 #include "geometry/io/preset.h"
@@ -27,8 +28,10 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
@@ -108,6 +111,7 @@ geometry::io::SceneFile caseViewpoint(const CheckCase& c, const geometry::io::Sc
 /// Resolves and reads everything a case needs (scenes, presets, goldens) and checks its view, so a
 /// bad check file fails before anything renders. Throws CheckFileError.
 std::vector<PreparedCase> prepare(const CheckFile& file, const fs::path& folder, const CheckOptions& o,
+                                  const std::vector<bool>& selected,
                                   std::map<std::string, geometry::io::SceneFile>& scenes) {
     std::vector<PreparedCase> out;
     std::map<std::string, size_t> goldenOwners; // resolved golden path → the first case naming it
@@ -115,6 +119,10 @@ std::vector<PreparedCase> prepare(const CheckFile& file, const fs::path& folder,
     for (const CheckCase& c : file.cases) {
         PreparedCase p;
         p.spec = &c;
+        if (!selected[out.size()]) { // another shard's: nothing to read
+            out.push_back(std::move(p));
+            continue;
+        }
         RenderOptions& r = p.render;
         r.backend = o.backend;
         r.size = c.size;
@@ -373,18 +381,44 @@ void judgeCase(const CheckFile& file, size_t i, CaseResults& results) {
         if (!v.passed) std::cerr << "shadowscope: check: " << report.name << ": " << v.text << '\n';
 }
 
-/// Writes report.html (and --junit's file) and prints the summary table and where they are.
-void writeReports(const CheckOptions& o, const std::vector<CaseReport>& reports) {
-    const fs::path html = fs::path(o.out) / "report.html";
-    writeText(html, htmlReport("shadowscope check " + fs::path(o.file).filename().string(), reports));
-    std::cout << summaryTable(reports) << "report: " << html.string() << '\n';
-    if (!o.junit.empty()) {
-        writeText(o.junit, junitXml(fs::path(o.file).stem().string(), reports));
-        std::cout << "junit: " << o.junit << '\n';
+/// The cases this run renders: all, or --shard's share. Cases that must render together share a
+/// group: a ratio compares two cases of one run, and a golden several cases name is written by the
+/// first of them (--update).
+std::vector<bool> selectedCases(const CheckFile& file, const std::optional<Shard>& shard) {
+    const size_t n = file.cases.size();
+    std::vector<size_t> group(n);
+    std::iota(group.begin(), group.end(), size_t(0));
+    const std::function<size_t(size_t)> root = [&](size_t i) { return group[i] == i ? i : group[i] = root(group[i]); };
+    const auto join = [&](size_t a, size_t b) { group[std::max(root(a), root(b))] = std::min(root(a), root(b)); };
+    std::map<std::string, size_t> byGolden;
+    for (size_t i = 0; i < n; ++i) {
+        const CheckCase& c = file.cases[i];
+        for (const Expectation& e : c.expect)
+            for (const std::string* name : {&e.bound.minRatioTo, &e.bound.maxRatioTo})
+                if (const CheckCase* other = name->empty() ? nullptr : file.find(*name))
+                    join(i, size_t(other - file.cases.data()));
+        if (c.golden) join(i, byGolden.emplace(c.golden->path, i).first->second);
     }
+    for (size_t i = 0; i < n; ++i) group[i] = root(i);
+    std::vector<bool> selected(n, true);
+    if (!shard) return selected;
+    const std::vector<size_t> dealt = dealShards(group, shard->count);
+    for (size_t i = 0; i < n; ++i) selected[i] = dealt[i] == shard->index;
+    return selected;
 }
 
 } // namespace
+
+void writeCheckReports(const std::string& out, const std::string& junit, const CheckRun& run) {
+    const fs::path html = fs::path(out) / "report.html";
+    writeText(html, htmlReport(run.title, run.reports));
+    writeText(fs::path(out) / "results.json", checkRunJson(run).dump(1) + "\n");
+    std::cout << summaryTable(run.reports) << "report: " << html.string() << '\n';
+    if (!junit.empty()) {
+        writeText(junit, junitXml(run.suite, run.reports));
+        std::cout << "junit: " << junit << '\n';
+    }
+}
 
 // [SECTION] The command
 
@@ -400,6 +434,7 @@ void addCheckCommand(CLI::App& cmd, CheckOptions& o) {
                      "Write each case's eye view as its golden image (new, changed or unchanged is printed) where "
                      "the case's expectations pass; a failing case keeps its golden");
     cmd.add_flag("--force", o.force, "With --update: write the goldens of failing cases too")->needs(update);
+    addShardOption(cmd, o.shard, "cases (cases compared with each other or sharing a golden stay together)");
     addBackendOption(cmd, o.backend, false);
 }
 
@@ -410,10 +445,12 @@ int runCheck(const CheckOptions& o) {
     };
     CheckFile file;
     std::vector<PreparedCase> cases;
+    std::vector<bool> selected;
     std::map<std::string, geometry::io::SceneFile> scenes;
     try {
         file = parseCheckFile(geometry::io::readJsonFile(o.file, o.file, kMaxCheckFileBytes, kMaxCheckFileDepth));
-        cases = prepare(file, fs::path(o.file).parent_path(), o, scenes);
+        selected = selectedCases(file, o.shard);
+        cases = prepare(file, fs::path(o.file).parent_path(), o, selected, scenes);
     } catch (const CheckFileError& e) {
         return fail(e.path().empty() ? o.file + ": " + e.what() : e.what());
     } catch (const std::runtime_error& e) { // readJsonFile: "FILE: problem"
@@ -423,6 +460,7 @@ int runCheck(const CheckOptions& o) {
     createOutputFolder(o.out);
     CaseResults results(cases.size());
     for (size_t i = 0; i < cases.size(); ++i) {
+        if (!selected[i]) continue;
         try {
             renderCase(cases[i], i, o, results);
         } catch (const CheckFileError& e) {
@@ -436,6 +474,7 @@ int runCheck(const CheckOptions& o) {
         return fail(e.what());
     }
     for (size_t i = 0; i < cases.size(); ++i) {
+        if (!selected[i]) continue;
         try {
             judgeCase(file, i, results);
         } catch (const CheckFileError& e) { // a case compared with lacks the figure
@@ -443,8 +482,21 @@ int runCheck(const CheckOptions& o) {
         }
     }
 
-    writeReports(o, results.reports);
-    const std::vector<CaseReport>& reports = results.reports;
+    CheckRun run{fs::path(o.file).stem().string(),
+                 "shadowscope check " + fs::path(o.file).filename().string(),
+                 cases.size(),
+                 {},
+                 {}};
+    for (size_t i = 0; i < cases.size(); ++i)
+        if (selected[i]) {
+            run.indices.push_back(i);
+            run.reports.push_back(std::move(results.reports[i]));
+        }
+    if (o.shard)
+        std::cout << "shard " << o.shard->text() << ": " << run.reports.size() << " of " << cases.size()
+                  << " case(s)\n";
+    writeCheckReports(o.out, o.junit, run);
+    const std::vector<CaseReport>& reports = run.reports;
     return std::all_of(reports.begin(), reports.end(), [](const CaseReport& r) { return r.passed(); }) ? 0 : 1;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 namespace app {
 
@@ -95,6 +96,70 @@ std::string htmlReport(const std::string& title, const std::vector<CaseReport>& 
     }
     out << "</body></html>\n";
     return out.str();
+}
+
+namespace {
+
+nlohmann::json caseReportJson(const CaseReport& c) {
+    nlohmann::json verdicts = nlohmann::json::array(), facts = nlohmann::json::array();
+    for (const Verdict& v : c.verdicts) verdicts.push_back({{"what", v.what}, {"passed", v.passed}, {"text", v.text}});
+    for (const auto& [label, value] : c.facts) facts.push_back({label, value});
+    return {{"name", c.name},     {"status", c.status()}, {"verdicts", verdicts},
+            {"error", c.error},   {"seconds", c.seconds}, {"render", c.render},
+            {"golden", c.golden}, {"diff", c.diff},       {"facts", facts}};
+}
+
+CaseReport caseReportFromJson(const nlohmann::json& j) {
+    try {
+        CaseReport c;
+        c.name = j.at("name").get<std::string>();
+        for (const auto& v : j.at("verdicts"))
+            c.verdicts.push_back(
+                {v.at("what").get<std::string>(), v.at("passed").get<bool>(), v.at("text").get<std::string>()});
+        c.error = j.at("error").get<std::string>();
+        c.seconds = j.at("seconds").get<double>();
+        c.render = j.at("render").get<std::string>();
+        c.golden = j.at("golden").get<std::string>();
+        c.diff = j.at("diff").get<std::string>();
+        for (const auto& f : j.at("facts"))
+            c.facts.emplace_back(f.at(0).get<std::string>(), f.at(1).get<std::string>());
+        return c;
+    } catch (const nlohmann::json::exception& e) {
+        throw std::invalid_argument(std::string("not a case report: ") + e.what());
+    }
+}
+
+} // namespace
+
+nlohmann::json checkRunJson(const CheckRun& run) {
+    nlohmann::json cases = nlohmann::json::array();
+    for (size_t i = 0; i < run.reports.size(); ++i) {
+        nlohmann::json c = caseReportJson(run.reports[i]);
+        c["index"] = run.indices.at(i);
+        cases.push_back(std::move(c));
+    }
+    return {{"kind", "check"},
+            {"suite", run.suite},
+            {"title", run.title},
+            {"case_count", run.caseCount},
+            {"cases", std::move(cases)}};
+}
+
+CheckRun checkRunFromJson(const nlohmann::json& j) {
+    try {
+        if (j.at("kind") != "check") throw std::invalid_argument("not a check run's results");
+        CheckRun run;
+        run.suite = j.at("suite").get<std::string>();
+        run.title = j.at("title").get<std::string>();
+        run.caseCount = j.at("case_count").get<size_t>();
+        for (const auto& c : j.at("cases")) {
+            run.indices.push_back(c.at("index").get<size_t>());
+            run.reports.push_back(caseReportFromJson(c));
+        }
+        return run;
+    } catch (const nlohmann::json::exception& e) {
+        throw std::invalid_argument(std::string("not a check run's results: ") + e.what());
+    }
 }
 
 std::string junitXml(const std::string& suite, const std::vector<CaseReport>& cases) {

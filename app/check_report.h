@@ -1,8 +1,10 @@
 #pragma once
 // What `shadowscope check` reports, as text built from the results (no GL, no files): the summary
-// table on stdout, report.html and the JUnit XML file.
+// table on stdout, report.html, the JUnit XML file, and results.json (what `merge` reads back).
 #include "check_expect.h"
 #include "ui/charts/xml_text.h"
+
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <string_view>
@@ -38,6 +40,20 @@ struct CaseReport {
 /// with a <failure> per failing case (message: its failed checks, body: one per line), an <error>
 /// per case with an error, and every verdict in <system-out>.
 [[nodiscard]] std::string junitXml(const std::string& suite, const std::vector<CaseReport>& cases);
+
+/// What a check run, or one shard of it, reports: DIR/results.json.
+struct CheckRun {
+    std::string suite;               // the check file's stem: JUnit's suite name
+    std::string title;               // report.html's
+    size_t caseCount = 0;            // cases in the check file
+    std::vector<size_t> indices;     // each report's case index in the check file, ascending
+    std::vector<CaseReport> reports; // in the check file's order
+};
+
+/// results.json's content, and back; checkRunFromJson throws std::invalid_argument for anything
+/// checkRunJson does not write.
+[[nodiscard]] nlohmann::json checkRunJson(const CheckRun& run);
+[[nodiscard]] CheckRun checkRunFromJson(const nlohmann::json& j);
 
 /// Text for XML and HTML (shared with the charts' SVG).
 using ui::charts::xmlEscape;

@@ -3,6 +3,7 @@
 #include "check_command.h"
 #include "curves_command.h"
 #include "gui_command.h"
+#include "merge_command.h"
 #include "mesh_command.h"
 #include "render_command.h"
 #include "sweep_command.h"
@@ -64,6 +65,12 @@ int main(int argc, char** argv) {
                                                   "(exit 0 all pass, 1 a case fails, 2 a bad check file)");
     app::addCheckCommand(*check, checkOptions);
 
+    app::MergeOptions mergeOptions;
+    CLI::App* merge = cli.add_subcommand("merge", "Join the output folders of check or bench jobs run with --shard I/N "
+                                                  "into what one run writes (report.html, JUnit, results.csv, the "
+                                                  "trade-off chart)");
+    app::addMergeCommand(*merge, mergeOptions);
+
     try {
         cli.parse(argc, argv);
         if (mesh->parsed()) return app::runMesh(*mesh, meshOptions);
@@ -73,6 +80,7 @@ int main(int argc, char** argv) {
         if (bench->parsed()) return app::runBench(benchOptions);
         if (tune->parsed()) return app::runTune(tuneOptions);
         if (check->parsed()) return app::runCheck(checkOptions);
+        if (merge->parsed()) return app::runMerge(mergeOptions);
         return app::runGuiOrHeadless(guiOptions);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);

@@ -57,8 +57,10 @@ for p in "\$@"; do
 done
 SHIM
   chmod +x "$ci/bin/apt-get"
-  github=$(sed -n '/^```yaml/,/^```$/p' "$doc" | sed -n 's/^ *- run: //p')
-  gitlab=$(sed -n '/^  script:/,/^  [a-z]*:$/p' "$doc" | sed -n 's/^    - //p')
+  # The single-job examples of "Adding it to a CI job" (the sharded ones run GitHub's ${{ }} syntax).
+  section=$(sed -n '/^## Adding it to a CI job/,/^## Spreading/p' "$doc")
+  github=$(echo "$section" | sed -n '/^```yaml/,/^```$/p' | sed -n 's/^ *- run: //p')
+  gitlab=$(echo "$section" | sed -n '/^  script:/,/^  [a-z]*:$/p' | sed -n 's/^    - //p')
   [ "$(echo "$github" | wc -l)" -ge 2 ] && [ "$(echo "$gitlab" | wc -l)" -ge 2 ] ||
     { echo "FAIL: found no CI commands in docs/ci.md"; exit 1; }
   for flavour in github gitlab; do

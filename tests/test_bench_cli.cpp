@@ -228,3 +228,38 @@ TEST(Bench, PathFlickerColumnsAndChartAxes) {
         EXPECT_EQ(b.exitCode, 2) << bad << ": " << b.output;
     }
 }
+
+// --shard I/N and merge: three shards merged give one run's chart byte for byte (memory on x: no
+// timing in it) and its results.csv but for the timing columns.
+TEST(Bench, ThreeShardsMergedEqualOneRun) {
+    const auto dir = testutil::freshDir("bench_shards");
+    const std::string presets = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/presets/";
+    const std::string args = "bench --backend osmesa --scene " + std::string(SHADOWSCOPE_SOURCE_DIR) +
+                             "/resources/scenes/plane.json --preset " + presets + "ssm.json --preset " + presets +
+                             "lispsm.json --preset " + presets +
+                             "paper.json --frames 1 --warmup 1 --size 96x64 --truth --x memory_mib --y misclassified";
+    auto r = runShadowscope(args + " --out " + (dir / "all").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::string shards;
+    for (int s = 1; s <= 3; ++s) {
+        const auto out = dir / ("shard" + std::to_string(s));
+        r = runShadowscope(args + " --shard " + std::to_string(s) + "/3 --out " + out.string());
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_EQ(readCsv(out / "results.csv").size(), 3u) << "header and one configuration at two views";
+        shards += " " + out.string();
+    }
+    r = runShadowscope("merge" + shards + " --out " + (dir / "merged").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(slurp(dir / "merged" / "tradeoff.svg"), slurp(dir / "all" / "tradeoff.svg"));
+    const auto merged = readCsv(dir / "merged" / "results.csv"), all = readCsv(dir / "all" / "results.csv");
+    ASSERT_EQ(merged.size(), 7u);
+    ASSERT_EQ(merged.size(), all.size());
+    for (size_t row = 0; row < all.size(); ++row) {
+        ASSERT_EQ(merged[row].size(), all[row].size());
+        for (size_t c = 0; c < all[row].size(); ++c) {
+            const std::string& column = all[0][c];
+            if (column.find("_ms_") != std::string::npos) continue; // timings
+            EXPECT_EQ(merged[row][c], all[row][c]) << "row " << row << " " << column;
+        }
+    }
+}

@@ -358,3 +358,75 @@ TEST(CheckCli, UpdateKeepsTheGoldenOfAFailingCase) {
     r = check(file, "--force --out " + out.string()); // --force alone means nothing: refused
     EXPECT_NE(r.exitCode, 0);
 }
+
+// (f) --shard I/N and merge: three shards merged give what one run gives, byte for byte once the
+// timings are taken out; cases compared with each other stay in one shard.
+namespace {
+
+/// `text` without what a run's timing changes: "1.23 s" in report.html, time="..." in JUnit.
+std::string withoutTimings(std::string text) {
+    text = std::regex_replace(text, std::regex(R"([0-9]+\.[0-9]+ s<)"), "T s<");
+    text = std::regex_replace(text, std::regex(R"([0-9]+\.[0-9]+ s\n)"), "T s\n");
+    return std::regex_replace(text, std::regex(R"(time="[0-9.]+")"), "time=\"T\"");
+}
+
+nlohmann::json withoutSeconds(nlohmann::json j) {
+    for (auto& c : j.at("cases")) c.erase("seconds");
+    return j;
+}
+
+} // namespace
+
+TEST(CheckCli, ThreeShardsMergedEqualOneRun) {
+    const fs::path dir = freshDir("check_shards");
+    const fs::path file = dir / "checks.json";
+    std::string cases;
+    const std::vector<std::pair<std::string, int>> specs = {{"a", 256}, {"b", 512}, {"c", 128}, {"d", 384}, {"e", 640}};
+    for (const auto& [name, res] : specs) {
+        cases += std::string(cases.empty() ? "" : ",\n") + R"({ "name": ")" + name +
+                 R"(", "scene": "plane", "size": "64x36", "set": { "shadow_map.resolution": )" + std::to_string(res) +
+                 R"( }, "expect": { "aliasing.p95": )" +
+                 (name == "b" ? R"({ "max_ratio_to": "a", "max": 10 })" : R"({ "max": 1000 })") + " } }";
+    }
+    writeFile(file, "{ \"cases\": [\n" + cases + "\n] }");
+
+    const fs::path all = dir / "all";
+    SplitResult r = check(file, "--out " + all.string() + " --junit " + (all / "junit.xml").string());
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    std::vector<fs::path> shards;
+    std::string shardCases;
+    for (int s = 1; s <= 3; ++s) {
+        shards.push_back(dir / ("shard" + std::to_string(s)));
+        r = check(file, "--shard " + std::to_string(s) + "/3 --out " + shards.back().string());
+        ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+        const nlohmann::json results = readJson(shards.back() / "results.json");
+        for (const auto& c : results.at("cases"))
+            shardCases += std::to_string(s) + ":" + c.at("name").get<std::string>() + " ";
+    }
+    // a and b compare with each other: one group; groups dealt round robin in file order.
+    EXPECT_EQ(shardCases, "1:a 1:b 1:e 2:c 3:d ");
+
+    const fs::path merged = dir / "merged";
+    const SplitResult m = testutil::runShadowscopeSplit("merge " + shards[0].string() + " " + shards[1].string() + " " +
+                                                        shards[2].string() + " --out " + merged.string() + " --junit " +
+                                                        (merged / "junit.xml").string());
+    ASSERT_EQ(m.exitCode, 0) << m.out << m.err;
+    EXPECT_EQ(withoutTimings(slurp(merged / "report.html")), withoutTimings(slurp(all / "report.html")));
+    EXPECT_EQ(withoutTimings(slurp(merged / "junit.xml")), withoutTimings(slurp(all / "junit.xml")));
+    EXPECT_EQ(withoutSeconds(readJson(merged / "results.json")), withoutSeconds(readJson(all / "results.json")));
+    for (const auto& [name, res] : specs) {
+        EXPECT_EQ(slurp(merged / name / "eye.png"), slurp(all / name / "eye.png")) << name;
+        EXPECT_FALSE(slurp(merged / name / "eye.png").empty()) << name;
+    }
+
+    // A shard missing, or one given twice: one line, exit 2.
+    const SplitResult missing = testutil::runShadowscopeSplit("merge " + shards[0].string() + " " + shards[1].string() +
+                                                              " --out " + (dir / "partial").string());
+    EXPECT_EQ(missing.exitCode, 2);
+    EXPECT_NE(missing.err.find("is in no folder (a shard missing?)"), std::string::npos) << missing.err;
+    const SplitResult twice = testutil::runShadowscopeSplit("merge " + shards[0].string() + " " + shards[0].string() +
+                                                            " --out " + (dir / "twice").string());
+    EXPECT_EQ(twice.exitCode, 2);
+    EXPECT_NE(twice.err.find("is in two folders"), std::string::npos) << twice.err;
+    EXPECT_EQ(check(file, "--shard 4/3").exitCode, 2);
+}
