@@ -137,6 +137,17 @@ TEST_F(UserFiles, TheToleranceMergesNearDuplicatesWithinIt) {
     EXPECT_EQ(apart.report.mergedVertices, 0u);
 }
 
+TEST_F(UserFiles, AModelSmallerThanTheToleranceSaysSo) {
+    // A 4e-7 triangle (a part in metres this small is rare, but possible): every corner within
+    // 1e-5 of the others merges; the error names the tolerance, and a tolerance of 0 keeps it.
+    const std::string path =
+        write("tiny.stl", binaryStl({{glm::vec3(0, 0, 0), glm::vec3(4e-7f, 0, 0), glm::vec3(0, 4e-7f, 0)}}));
+    testutil::expectLoadRejected(path, "1 faces lie within the merge tolerance, 1e-05 model units");
+    CleanupOptions exact;
+    exact.mergeTolerance = 0;
+    EXPECT_EQ(loadModel(path, exact).meshes[0].triangleCount(), 1u);
+}
+
 // ---- Transforms beyond the float range --------------------------------------------------------
 
 TEST_F(UserFiles, ANodeTransformReachingInfinityIsRefused) {

@@ -921,7 +921,7 @@ LoadedModel loadChecked(const std::string& path, const CleanupOptions& options, 
     // The same words as the other formats; which primitives were skipped is no help to someone
     // who opened a point cloud or a file of lines.
     if (result.meshes.empty())
-        throw GltfError(hadTriangles ? "no triangles left after cleanup" : "the file has no triangles");
+        throw GltfError(hadTriangles ? nothingLeftMessage(result.report) : "the file has no triangles");
     result.report.notes.insert(result.report.notes.end(), notes.begin(), notes.end());
     return result;
 }

@@ -105,7 +105,7 @@ LoadedModel readModel(const std::string& path, const CleanupOptions& options, co
     model.report.nonPlanarFaces = reading.nonPlanarFaces;
     model.report.earClipFallbacks = reading.earClipFallbacks;
     if (model.report.inputFaces == 0) throw std::runtime_error(path + ": the file has no triangles");
-    if (mesh.triangleCount() == 0) throw std::runtime_error(path + ": no triangles left after cleanup");
+    if (mesh.triangleCount() == 0) throw std::runtime_error(path + ": " + nothingLeftMessage(model.report));
 
     report(progress, 0.f, "chunking");
     mesh.name = std::filesystem::path(path).stem().string();

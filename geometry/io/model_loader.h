@@ -76,6 +76,10 @@ struct LoadedModel {
 /// `progress` hears "cleaning: STAGE" at each stage's start, the fraction of the whole cleanup done.
 CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {}, const Progress& progress = {});
 
+/// "no triangles left after cleanup", with the reason when it is the merge tolerance: a model so
+/// small that its faces lie within the tolerance (in model units) merges away.
+[[nodiscard]] std::string nothingLeftMessage(const CleanupReport& report);
+
 /// Writes a mesh file (format from the extension: obj, stl, off, ply), every triangle kept, so that
 /// every float reads back bit for bit (mesh_save.cpp: binary STL and PLY, shortest round-trip
 /// decimals in OBJ and OFF). Throws std::runtime_error naming the file on failure.
