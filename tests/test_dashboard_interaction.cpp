@@ -148,6 +148,33 @@ TEST_F(DashboardInteraction, ResetCameraRestoresTheView) {
     EXPECT_EQ(differing(home, back, dash().rects().heatmap), 0u);
 }
 
+// A pinned pixel shows the current view's values (issue 32: pin, Reset camera, and the pin said
+// depth 5.3 "not a receiver" where hovering the same pixel said depth 331, split 2).
+TEST_F(DashboardInteraction, APinnedPixelReadsTheCurrentView) {
+    orbit(4, 25.f);
+    clock_ += 0.2;
+    (void)d_->render(1);
+    const glm::vec2 p = eyeCentre();
+    d_->step({p, {true, false, false}, 0.f}); // a click without a drag pins the pixel
+    d_->step({p, {false, false, false}, 0.f});
+    ASSERT_TRUE(dash().pinnedPixel());
+    const ui::PixelProbe moved = *dash().pinnedPixel();
+    dash().resetCamera();
+    clock_ += 0.2;
+    (void)d_->render(1);
+    ASSERT_TRUE(dash().pinnedPixel());
+    const ui::PixelProbe& pin = *dash().pinnedPixel();
+    // What hovering that pixel shows now.
+    const ui::PixelProbe hover = dash().probeEye(0, pin.pixel, ui::ViewPanel::Eye);
+    ASSERT_EQ(moved.pixel, pin.pixel);
+    EXPECT_NE(moved.viewDepth, hover.viewDepth) << "the camera moved: the pixel shows another point";
+    EXPECT_EQ(pin.viewDepth, hover.viewDepth);
+    EXPECT_EQ(pin.position, hover.position);
+    EXPECT_EQ(pin.split, hover.split);
+    EXPECT_EQ(pin.receiver, hover.receiver);
+    EXPECT_EQ(pin.shadow, hover.shadow);
+}
+
 TEST_F(DashboardInteraction, ANearFarEditReinspects) {
     const geometry::analysis::Image before = d_->render(1);
     const double p95 = dash().inspection(0)->aliasing.p95;

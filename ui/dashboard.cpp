@@ -136,6 +136,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     pollInspections();
     updateInspection();
     updateHeatmap();
+    refreshPin(); // before anything shows it: a pin follows every change of view, settings and scene
 
     widgetMapBeginFrame(width, height);
     ImGui::SetNextWindowPos(ImVec2(0, 0));

@@ -123,6 +123,10 @@ public:
     [[nodiscard]] const LoadedScene& scene() const noexcept { return scene_; }
     [[nodiscard]] bool loading() const noexcept { return loader_.busy(); }
     [[nodiscard]] const PassCounts& passCounts() const noexcept { return counts_; }
+    /// The pinned pixel, as the inspector shows it.
+    [[nodiscard]] const std::optional<PixelProbe>& pinnedPixel() const noexcept { return pinned_; }
+    /// The values at an image pixel of the eye or heatmap panel, from the last inspection.
+    [[nodiscard]] PixelProbe probeEye(int side, glm::ivec2 pixel, ViewPanel panel) const;
     /// When the front end should run the next frame without waiting for input: 0 now (something
     /// changed that is not drawn yet), t > 0 seconds (a coarse view to refine, background work to
     /// poll), nullopt: nothing pending, sleep until input.
@@ -271,8 +275,10 @@ private:
     /// An image filling `area` with zoom/pan/hover handling; returns the hovered image pixel.
     std::optional<glm::ivec2> imageArea(ViewPanel panel, GLuint texture, int width, int height, const Rect& area,
                                         bool cameraControls, const char* id);
-    void probeEye(int side, glm::ivec2 pixel, ViewPanel panel);
-    void probeLight(glm::ivec2 pixel);
+    /// The values at an image pixel of the light view (its stored depth).
+    [[nodiscard]] PixelProbe probeLight(glm::ivec2 pixel);
+    /// Reads the pinned pixel again, so that it never shows values of an earlier camera, setting or scene.
+    void refreshPin();
 
     LoadedScene scene_;
     DashboardState state_;

@@ -3,7 +3,7 @@
 //
 // Index
 //   [SECTION] Drawing helpers ................ drawImage, markPixel, panelBegin, zoomButtons, clickedWithoutDrag
-//   [SECTION] Image areas and pixel probes ... imageArea, probeEye, probeLight
+//   [SECTION] Image areas and pixel probes ... imageArea, probeEye, probeLight, refreshPin
 //   [SECTION] View panels .................... drawEyePanel, drawLightPanel, drawHeatmapPanel
 //   [SECTION] Splitters ...................... drawSplitters
 //   [SECTION] Status bar ..................... describeProbe, drawStatusBar
@@ -111,7 +111,7 @@ std::optional<glm::ivec2> Dashboard::imageArea(ViewPanel panel, GLuint texture, 
     return hovered ? pixelAt(view, area, w, h, mouse) : std::nullopt;
 }
 
-void Dashboard::probeEye(int side, glm::ivec2 px, ViewPanel panel) {
+PixelProbe Dashboard::probeEye(int side, glm::ivec2 px, ViewPanel panel) const {
     const Side& s = sides_[side];
     PixelProbe p;
     p.panel = panel;
@@ -132,10 +132,10 @@ void Dashboard::probeEye(int side, glm::ivec2 px, ViewPanel panel) {
         p.viewDepth = glm::dot(p.position - cam.eye, glm::normalize(cam.target - cam.eye));
         if (in.occluded) p.truthShadowed = (*in.occluded)[i] != 0;
     }
-    hovered_ = p;
+    return p;
 }
 
-void Dashboard::probeLight(glm::ivec2 px) {
+PixelProbe Dashboard::probeLight(glm::ivec2 px) {
     PixelProbe p;
     p.panel = ViewPanel::Light;
     p.side = shownSide();
@@ -149,7 +149,13 @@ void Dashboard::probeLight(glm::ivec2 px) {
         p.mapTexel = {px.x * res / lightViewSize_, (lightViewSize_ - 1 - px.y) * res / lightViewSize_};
         p.storedDepth = s.renderer->readShadowDepth(split, p.mapTexel.x, p.mapTexel.y);
     }
-    hovered_ = p;
+    return p;
+}
+
+void Dashboard::refreshPin() {
+    if (!pinned_) return;
+    const PixelProbe at = *pinned_;
+    pinned_ = at.panel == ViewPanel::Light ? probeLight(at.pixel) : probeEye(at.side, at.pixel, at.panel);
 }
 
 // ---- [SECTION] View panels ------------------------------------------------------------------
@@ -179,7 +185,7 @@ void Dashboard::drawEyePanel() {
                 ImGui::GetWindowDrawList()->AddText(ImVec2(r.x + 6, r.y + 4), IM_COL32(255, 255, 255, 230),
                                                     i == 0 ? "A" : "B");
                 if (px) {
-                    probeEye(i, *px, ViewPanel::Eye);
+                    hovered_ = probeEye(i, *px, ViewPanel::Eye);
                     if (clicked) pinned_ = hovered_;
                 }
             }
@@ -210,7 +216,7 @@ void Dashboard::drawEyePanel() {
             if (px) {
                 const bool onB =
                     mode == CompareMode::Split && float(px->x) >= state_.views.splitPosition * float(size.width);
-                probeEye(onB ? 1 : 0, *px, ViewPanel::Eye);
+                hovered_ = probeEye(onB ? 1 : 0, *px, ViewPanel::Eye);
                 if (clicked) pinned_ = hovered_;
             }
         }
@@ -257,7 +263,7 @@ void Dashboard::drawLightPanel() {
             const auto px =
                 imageArea(ViewPanel::Light, tex, lightViewSize_, lightViewSize_, lightArea_, false, "light_image");
             if (px) {
-                probeLight(*px);
+                hovered_ = probeLight(*px);
                 if (clickedWithoutDrag()) pinned_ = hovered_;
             }
         }
@@ -301,7 +307,7 @@ void Dashboard::drawHeatmapPanel() {
                                                 : needsSun ? "give the sun a size (light.angular_diameter_deg)"
                                                            : "turn on A/B compare (Views)");
         if (px) {
-            probeEye(side, *px, ViewPanel::Heatmap);
+            hovered_ = probeEye(side, *px, ViewPanel::Heatmap);
             if (clickedWithoutDrag()) pinned_ = hovered_;
         }
         if (pinned_ && pinned_->panel != ViewPanel::Light)
