@@ -64,6 +64,16 @@ void GpuTimers::endFrame() noexcept {
     collect(slots_[current_], true);
 }
 
+bool GpuTimers::poll() noexcept {
+    bool inFlight = false;
+    for (int k = 0; k < kFrames; ++k) { // oldest first, as endFrame
+        Slot& s = slots_[(current_ + k) % kFrames];
+        collect(s, false);
+        inFlight = inFlight || s.pending;
+    }
+    return inFlight;
+}
+
 const PassTimes& GpuTimers::waitForAll() noexcept {
     end();
     for (int k = 0; k < kFrames; ++k) collect(slots_[(current_ + k) % kFrames], true);

@@ -34,6 +34,9 @@ public:
     void endFrame() noexcept;
     /// The newest frame whose results have arrived (valid == false before the first).
     [[nodiscard]] const PassTimes& latest() const noexcept { return latest_; }
+    /// Collects the frames whose results have arrived, without closing one (a window that draws
+    /// nothing new still shows them); true while some are still in flight.
+    bool poll() noexcept;
     /// Waits for every frame in flight (for one-shot exports, not for the interactive loop).
     const PassTimes& waitForAll() noexcept;
 

@@ -128,6 +128,13 @@ public:
     /// size beyond the view memory limit, std::invalid_argument for n < 1 or no frame drawn.
     [[nodiscard]] std::vector<float> readShadowSamples(const geometry::shadow::ShadowPlan& plan, int n);
     [[nodiscard]] const FrameStats& stats() const noexcept { return stats_; }
+    /// Takes the GPU times that arrived since the last frame into stats().gpu, drawing nothing;
+    /// true while some are still in flight.
+    bool pollGpuTimes() noexcept {
+        const bool inFlight = timers_.poll();
+        stats_.gpu = timers_.latest();
+        return inFlight;
+    }
     /// Blocks until the GPU times of every rendered frame are in; for one-shot exports.
     const PassTimes& waitForTimings() noexcept;
 

@@ -175,6 +175,21 @@ TEST_F(DashboardInteraction, APinnedPixelReadsTheCurrentView) {
     EXPECT_EQ(pin.shadow, hover.shadow);
 }
 
+// The GPU rows are filled from the first frames, with no change to trigger a draw (issue 32: they
+// showed "–" until the first change): the dashboard keeps polling while times are in flight.
+TEST_F(DashboardInteraction, GpuTimesArriveWithoutAChange) {
+    const ui::PassCounts counts = dash().passCounts();
+    for (int i = 0; i < 10 && dash().nextFrameIn(); ++i) {
+        clock_ += 0.05;
+        d_->step({});
+    }
+    ASSERT_NE(dash().frameStats(0), nullptr);
+    EXPECT_TRUE(dash().frameStats(0)->gpu.valid);
+    EXPECT_GT(dash().frameStats(0)->gpu.of(renderer::Pass::Eye), 0.0);
+    EXPECT_TRUE(dash().passCounts() == counts) << "polling draws no pass";
+    EXPECT_FALSE(dash().nextFrameIn()) << "every time arrived: nothing pending";
+}
+
 TEST_F(DashboardInteraction, ANearFarEditReinspects) {
     const geometry::analysis::Image before = d_->render(1);
     const double p95 = dash().inspection(0)->aliasing.p95;

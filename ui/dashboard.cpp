@@ -130,6 +130,11 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     stepCasterLod();
     applyCameraInput(input);
     renderViews();
+    // GPU times arrive a frame or more after their passes: poll them while the views stand still,
+    // so the stats panel's GPU rows fill in without waiting for the next change.
+    gpuTimesInFlight_ = false;
+    for (Side& s : sides_)
+        if (s.renderer && s.renderer->pollGpuTimes()) gpuTimesInFlight_ = true;
     const MeasureContext measuring = measureContext();
     if (auto status = sweep_.step(measuring)) status_ = std::move(*status);
     if (auto status = recommend_.step(measuring)) status_ = std::move(*status);

@@ -123,6 +123,8 @@ public:
     [[nodiscard]] const LoadedScene& scene() const noexcept { return scene_; }
     [[nodiscard]] bool loading() const noexcept { return loader_.busy(); }
     [[nodiscard]] const PassCounts& passCounts() const noexcept { return counts_; }
+    /// Side 0's or 1's renderer statistics (GPU times, triangles), or nullptr before it draws.
+    [[nodiscard]] const renderer::FrameStats* frameStats(int side) const noexcept { return statsOf(side); }
     /// The pinned pixel, as the inspector shows it.
     [[nodiscard]] const std::optional<PixelProbe>& pinnedPixel() const noexcept { return pinned_; }
     /// The values at an image pixel of the eye or heatmap panel, from the last inspection.
@@ -292,7 +294,8 @@ private:
     geometry::shadow::Viewport eyeSize_{0, 0}; // this frame's full-resolution eye view size
     bool continuousInput_ = false;             // the last frame's input was a drag, the wheel or fly keys
     bool drewThisFrame_ = false;
-    double lastChange_ = 0; // seconds on now()'s clock
+    bool gpuTimesInFlight_ = false; // a drawn frame's GPU times have not arrived: poll them next frame
+    double lastChange_ = 0;         // seconds on now()'s clock
     [[nodiscard]] double now() const;
     uint64_t nextInspectionSerial_ = 1;
     std::vector<std::future<geometry::analysis::Inspection>> retiring_; // cancelled jobs winding down

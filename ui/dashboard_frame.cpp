@@ -338,7 +338,7 @@ std::optional<double> Dashboard::nextFrameIn() const {
     if (coarse()) {
         wait = std::max(0.0, kRefinePause - (now() - lastChange_));
     }
-    if (backgroundBusy()) wait = std::min(wait.value_or(0.05), 0.05);
+    if (backgroundBusy() || gpuTimesInFlight_) wait = std::min(wait.value_or(0.05), 0.05);
     return wait;
 }
 
