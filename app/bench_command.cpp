@@ -246,44 +246,35 @@ constexpr const char* kResultsCsvHeader =
 std::string resultsCsvLine(const Row& w, const BenchOptions& o, const renderer::PathFigures& f, bool hasPath,
                            const std::string& rendererName) {
     std::ostringstream csv;
-    {
-        csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ','
-            << w.cpuMs << ',' << w.p95 << ',';
-        if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
-        else csv << ",,";
-        csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.common.size.width << ',' << o.common.size.height
-            << ",\"" << rendererName << "\",";
-        const auto& c = w.classes;
-        if (w.truth)
-            csv << c.interiorFalseShadow << ',' << c.interiorFalseLit << ',' << c.edgeError << ','
-                << c.edgeDisplacementTexelsMedian << ',' << c.ambiguous;
-        else csv << ",,,,";
-        if (hasPath) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
-        else csv << ",,,,";
-        csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << ',';
-        if (std::isfinite(w.soft)) csv << w.soft;
-        csv << ',';
-        if (w.truth)
-            csv << c.umbraLight << ',' << c.contactFalseLit << ',' << c.contactGapP95 << ',' << c.interiorMeanAbs << ','
-                << c.edgeWidthPx << ',' << c.edgeWidthTexels << ',' << c.singular;
-        else csv << ",,,,,,";
-        csv << '\n';
-    }
+    csv << '"' << w.config << "\"," << w.preset << ',' << w.view << ',' << w.gamma << ',' << w.gpuMs << ',' << w.cpuMs
+        << ',' << w.p95 << ',';
+    if (w.truth) csv << w.falseLit << ',' << w.falseShadow << ',' << (w.falseLit + w.falseShadow);
+    else csv << ",,";
+    csv << ',' << w.memoryMiB << ',' << o.frames << ',' << o.common.size.width << ',' << o.common.size.height << ",\""
+        << rendererName << "\",";
+    const auto& c = w.classes;
+    if (w.truth)
+        csv << c.interiorFalseShadow << ',' << c.interiorFalseLit << ',' << c.edgeError << ','
+            << c.edgeDisplacementTexelsMedian << ',' << c.ambiguous;
+    else csv << ",,,,";
+    if (hasPath) csv << ',' << f.flickerMean << ',' << f.flickerP95 << ',' << f.flickerScreen << ',' << f.seam;
+    else csv << ",,,,";
+    csv << ',' << w.shadowMs << ',' << w.shadowTriangles << ',' << w.shadowTrianglesWithoutLod << ',';
+    if (std::isfinite(w.soft)) csv << w.soft;
+    csv << ',';
+    if (w.truth)
+        csv << c.umbraLight << ',' << c.contactFalseLit << ',' << c.contactGapP95 << ',' << c.interiorMeanAbs << ','
+            << c.edgeWidthPx << ',' << c.edgeWidthTexels << ',' << c.singular;
+    else csv << ",,,,,,";
+    csv << '\n';
     return csv.str();
 }
 
 /// Writes results.csv from its lines.
 void writeResultsCsv(const std::filesystem::path& dir, const std::vector<std::string>& lines) {
-    std::ofstream csv(dir / "results.csv", std::ios::binary);
-    csv << kResultsCsvHeader;
-    for (const std::string& line : lines) csv << line;
-    if (!csv) throw std::runtime_error("cannot write " + (dir / "results.csv").string());
-}
-
-void writeJsonFile(const std::filesystem::path& path, const nlohmann::json& j) {
-    std::ofstream out(path, std::ios::binary);
-    out << j.dump(1) << '\n';
-    if (!out) throw std::runtime_error("cannot write " + path.string());
+    std::string csv = kResultsCsvHeader;
+    for (const std::string& line : lines) csv += line;
+    writeTextFile(dir / "results.csv", csv);
 }
 
 /// NaN as JSON writes it (null), and back.
@@ -438,7 +429,7 @@ int runBench(const BenchOptions& o) {
     const ui::charts::TradeoffX x =
         xAxis == ui::charts::TradeoffX::GpuMs && !gpuTimes ? ui::charts::TradeoffX::CpuMs : xAxis;
     writeChart(dir, configs, rows, paths, x, yAxis);
-    writeJsonFile(dir / "results.json", results);
+    writeTextFile(dir / "results.json", results.dump(1) + "\n");
     for (const char* f : {"results.csv", "tradeoff.svg", "tradeoff.png", "results.json"})
         std::cout << (dir / f).string() << '\n';
     return 0;
@@ -506,7 +497,7 @@ int mergeBench(const std::vector<nlohmann::json>& shards, const std::string& out
         ui::charts::parseTradeoffY(first.at("y").get<std::string>()).value_or(ui::charts::TradeoffY::P95);
     writeChart(dir, configs, sortedRows, paths,
                xAxis == ui::charts::TradeoffX::GpuMs && !gpuTimes ? ui::charts::TradeoffX::CpuMs : xAxis, yAxis);
-    writeJsonFile(dir / "results.json", merged);
+    writeTextFile(dir / "results.json", merged.dump(1) + "\n");
     for (const char* f : {"results.csv", "tradeoff.svg", "tradeoff.png", "results.json"})
         std::cout << (dir / f).string() << '\n';
     return 0;

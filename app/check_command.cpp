@@ -259,17 +259,6 @@ std::vector<std::pair<std::string, std::string>> facts(const CheckCase& c, const
     return f;
 }
 
-void writeText(const fs::path& path, const std::string& text) {
-    if (const fs::path parent = path.parent_path(); !parent.empty()) {
-        std::error_code ec;
-        fs::create_directories(parent, ec);
-    }
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out) throw std::runtime_error("cannot write " + path.string());
-}
-
 // [SECTION] Cases
 
 /// What rendering the cases leaves for judging them, by case index.
@@ -411,11 +400,11 @@ std::vector<bool> selectedCases(const CheckFile& file, const std::optional<Shard
 
 void writeCheckReports(const std::string& out, const std::string& junit, const CheckRun& run) {
     const fs::path html = fs::path(out) / "report.html";
-    writeText(html, htmlReport(run.title, run.reports));
-    writeText(fs::path(out) / "results.json", checkRunJson(run).dump(1) + "\n");
+    writeTextFile(html, htmlReport(run.title, run.reports));
+    writeTextFile(fs::path(out) / "results.json", checkRunJson(run).dump(1) + "\n");
     std::cout << summaryTable(run.reports) << "report: " << html.string() << '\n';
     if (!junit.empty()) {
-        writeText(junit, junitXml(run.suite, run.reports));
+        writeTextFile(junit, junitXml(run.suite, run.reports));
         std::cout << "junit: " << junit << '\n';
     }
 }

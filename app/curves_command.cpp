@@ -66,13 +66,6 @@ std::string splitsCsv(const std::vector<SplitRow>& rows) {
     return out;
 }
 
-void writeText(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throw std::runtime_error("cannot write " + path.string());
-}
-
 } // namespace
 
 void addCurvesCommand(CLI::App& cmd, CurvesOptions& o) {
@@ -126,7 +119,7 @@ int runCurves(const CurvesOptions& o) {
         {dir / "splits.svg",
          ui::charts::chartsToSvg(ui::charts::splitChartsTitle(p), ui::charts::splitCharts(splits, p), 3, 440, 330)},
     };
-    for (const auto& [path, text] : files) writeText(path, text);
+    for (const auto& [path, text] : files) writeTextFile(path, text);
     for (const auto& [path, text] : files) std::cout << path.string() << '\n';
     return 0;
 }
