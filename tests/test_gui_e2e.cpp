@@ -340,6 +340,48 @@ protected:
         waitForMap("the " + key + " combo to close", [&](const WidgetMap& m) { return !m.has(item); });
     }
 
+    // ---- quick hands and drops (issue 32) ----------------------------------------------------
+
+    /// A key held for about 10 ms, as a quick hand does, in one xdotool call (unlike pressKey,
+    /// nothing waits for a frame to see it).
+    void tapKey(const std::string& key) { xdo({"keydown", key, "sleep", "0.01", "keyup", key}); }
+
+    /// Runs `send` with the app stopped (SIGSTOP, then SIGCONT), so that all it sends reaches the app
+    /// between two of its frames, as when one frame takes long on a loaded machine.
+    void betweenTwoFrames(const std::function<void()>& send) {
+        app_.signal(SIGSTOP);
+        try {
+            send();
+        } catch (...) {
+            app_.signal(SIGCONT);
+            throw;
+        }
+        app_.signal(SIGCONT);
+    }
+
+    /// A small model at tmp/NAME: a 1 m box on a 6 m ground, 14 triangles facing out.
+    fs::path writeModel(const std::string& name) {
+        const fs::path path = tmp_ / name;
+        writeText(path, "v -3 0 -3\nv 3 0 -3\nv 3 0 3\nv -3 0 3\n"
+                        "v -0.5 0 -0.5\nv 0.5 0 -0.5\nv 0.5 0 0.5\nv -0.5 0 0.5\n"
+                        "v -0.5 1 -0.5\nv 0.5 1 -0.5\nv 0.5 1 0.5\nv -0.5 1 0.5\n"
+                        "f 1 4 3\nf 1 3 2\n"                          // ground, up
+                        "f 9 12 11\nf 9 11 10\nf 5 6 7\nf 5 7 8\n"    // top, bottom
+                        "f 5 9 10\nf 5 10 6\nf 8 7 11\nf 8 11 12\n"   // -z, +z
+                        "f 5 8 12\nf 5 12 9\nf 6 10 11\nf 6 11 7\n"); // -x, +x
+        return path;
+    }
+
+    /// Drops files onto the window as a file manager does (XDND; tests/xdnd_drop.cpp).
+    void dropFiles(const std::vector<fs::path>& files) {
+        std::vector<std::string> args{std::to_string(window_)};
+        for (const auto& f : files) args.push_back(f.string());
+        const RunResult r = runProgram(SHADOWSCOPE_XDND_DROP, args, xEnvironment(), scaled(60));
+        if (r.timedOut || r.exitCode != 0)
+            throw std::runtime_error(std::string("xdnd_drop ") + (r.timedOut ? "timed out" : "failed") + ": " +
+                                     r.output + "\n" + context());
+    }
+
     // ---- config and screenshots -------------------------------------------------------------
 
     std::optional<json> config() {
@@ -711,13 +753,102 @@ TEST_F(GuiE2E, SamePixelsAsHeadless) {
     EXPECT_LE(panel.maxAbs, 2) << "the controls panel should look the same: " << panel.describe();
 }
 
-// A value typed into a ctrl+clicked slider applies once, when the field closes: typing 999999
-// into shadow_map.resolution (16..16384) must not apply the in-range prefixes 99, 999 and 9999 on
-// the way, so the refusal keeps the value from before the edit (2048).
-// Disabled in CI: on a loaded 2-core machine X drops or reorders some of the typed keystrokes, so
-// the test saw no refusal at all in 1 of 3 clean-clone runs. The behaviour it checks holds (run it
-// with --gtest_also_run_disabled_tests on an idle machine).
-TEST_F(GuiE2E, DISABLED_TypedValueIsAppliedOnlyWhenComplete) {
+// Issue 32: input that reaches the window between two frames reaches ImGui. Each gesture below has
+// about 10 ms between press and release, as a quick hand makes them, and is sent while the app is
+// stopped (betweenTwoFrames), so that it all arrives between two frames whatever the machine's
+// load. ImGui 1.86 sees one state per frame: before the input queue (ui/input_queue.h) each of
+// these tests failed. They wait on the effect (config, status line, widgets), never on a number of
+// frames: the queue feeds the events a frame at a time, how many frames depends on the split.
+
+// Return held for 10 ms right after typing into a ctrl+clicked slider applies the typed value.
+TEST_F(GuiE2E, QuickReturnAfterTypingAppliesTheValue) {
+    launch();
+    scrollIntoView("shadow_map.resolution");
+    ctrlClick("shadow_map.resolution");
+    betweenTwoFrames([&] {
+        typeText("1024");
+        tapKey("Return");
+    });
+    waitForConfig("shadow_map.resolution", 1024);
+    const WidgetMap closed =
+        waitForMap("the text field to close", [](const WidgetMap& m) { return m.counter("text_input") == 0.0; });
+    EXPECT_EQ(closed.status.find("refused"), std::string::npos) << closed.status;
+    closeGracefully();
+    EXPECT_EQ(configSetting("shadow_map.resolution"), "1024");
+}
+
+// Ctrl+A held for 10 ms in the file field selects its text ("plane"), so the typed path replaces
+// it rather than being appended, and Load loads that file.
+TEST_F(GuiE2E, QuickCtrlAInTheFileFieldMakesTypingReplaceTheText) {
+    const fs::path model = writeModel("typed_box.obj");
+    launch();
+    scrollIntoView("scene.file");
+    clickField("scene.file");
+    betweenTwoFrames([&] {
+        xdo({"keydown", "ctrl", "keydown", "a", "sleep", "0.01", "keyup", "a", "keyup", "ctrl"});
+        typeText(model.string());
+    });
+    click("scene.load");
+    const WidgetMap done = waitForMap("the typed path's load to end", [](const WidgetMap& m) {
+        return m.status.find("typed_box.obj") != std::string::npos &&
+               (m.status.rfind("loaded ", 0) == 0 || m.status.find("not loaded") != std::string::npos);
+    });
+    EXPECT_EQ(done.status.rfind("loaded " + model.string(), 0), 0u) << "the path typed over \"plane\": " << done.status;
+    closeGracefully();
+}
+
+// A click with a 10 ms press on the Trade-off tab, the pointer coming from the Stats tab and moving
+// on to the status bar at once, opens the tab at the first click: the press is seen where it
+// happened, not where the pointer is when the frame polls it.
+TEST_F(GuiE2E, QuickClickOnATabOpensItAtOnce) {
+    launch();
+    const Rect stats = widget("tab.stats");
+    xdo({"mousemove", screenX(stats.cx()), screenY(stats.cy())});
+    waitFrames(2);
+    ASSERT_FALSE(currentMap().has("tradeoff.x")) << "the Trade-off tab is open before the click";
+    const Rect tab = widget("tab.tradeoff");
+    betweenTwoFrames([&] {
+        xdo({"mousemove", screenX(tab.cx()), screenY(tab.cy()), "mousedown", "1", "sleep", "0.01", "mouseup", "1",
+             "mousemove", screenX(5), screenY(kHeight - 5)});
+    });
+    waitForMap("the Trade-off tab's controls after one quick click",
+               [](const WidgetMap& m) { return m.has("tradeoff.x"); });
+    closeGracefully();
+}
+
+// Model files dropped onto the window (XDND, as from a file manager) load as the scene: the first
+// of them (one scene at a time), drawn anew.
+TEST_F(GuiE2E, DroppedFileLoadsAsTheScene) {
+    const fs::path first = writeModel("dropped box.obj"), second = writeModel("second.obj");
+    launch();
+    const WidgetMap before = settle("before the drop");
+    dropFiles({first, second});
+    const WidgetMap done = waitForMap("the dropped file's load to end", [](const WidgetMap& m) {
+        return m.status.find(".obj") != std::string::npos &&
+               (m.status.rfind("loaded ", 0) == 0 || m.status.find("not loaded") != std::string::npos);
+    });
+    EXPECT_EQ(done.status.rfind("loaded " + first.string(), 0), 0u) << done.status;
+    EXPECT_EQ(done.status.find("second.obj"), std::string::npos) << "only the first file loads: " << done.status;
+    const WidgetMap after = settle("after the drop");
+    std::cout << "[ e2e ] drop: " << describePasses(before) << " -> " << describePasses(after) << '\n';
+    EXPECT_GT(after.counter("passes.shadow"), before.counter("passes.shadow")) << "the new scene's maps drawn";
+    EXPECT_GT(after.counter("passes.eye_full"), before.counter("passes.eye_full")) << "the new scene drawn";
+    closeGracefully();
+}
+
+// Ctrl+Q held for 10 ms closes the window cleanly (exit 0), as a close button does.
+TEST_F(GuiE2E, QuickCtrlQQuits) {
+    launch();
+    betweenTwoFrames([&] { xdo({"keydown", "ctrl", "keydown", "q", "sleep", "0.01", "keyup", "q", "keyup", "ctrl"}); });
+    ASSERT_TRUE(app_.waitExit(scaled(60))) << "the app still runs after Ctrl+Q\n" << context();
+    EXPECT_EQ(app_.exitCode(), 0) << context();
+}
+
+// (Disabled until issue 32: it saw no refusal in 1 of 3 runs on a loaded machine. Not X losing
+// keystrokes: when the last digit and Return reached ImGui in one frame, the field closed in the
+// frame that took the digit and the value stored at the keystroke before ("9999", in range) was
+// applied. The input queue gives Return a frame after the typed characters.)
+TEST_F(GuiE2E, TypedValueIsAppliedOnlyWhenComplete) {
     launch();
     scrollIntoView("shadow_map.resolution");
     ctrlClick("shadow_map.resolution");

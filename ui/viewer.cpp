@@ -1,7 +1,16 @@
+// The interactive window: GLFW events queued and fed to ImGui a frame at a time (input_queue.h),
+// the dashboard drawn when something changed, the config file read at start and saved on change.
+//
+// Index
+//   [SECTION] Window events ........ the GLFW callbacks: every event onto the input queue
+//   [SECTION] Applying input ....... a frame's events to ImGui, the pointer, the viewer's keys, drops
+//   [SECTION] Config file .......... configFilePath, loadStartConfig, ConfigSaver
+//   [SECTION] The loop ............. waitForInput, readInput, drawFrame, userActive, runViewer
 #include "viewer.h"
 
 #include "dashboard_config.h"
 #include "imgui_setup.h"
+#include "input_queue.h"
 #include "renderer/context.h"
 #include "renderer/texture.h"
 
@@ -18,6 +27,8 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace ui {
 
@@ -33,21 +44,132 @@ float contentScale(GLFWwindow* window) {
     return clampUiScale(std::max(sx, sy));
 }
 
-/// F12 presses counted by a key callback, not by polling the key: a press and release that arrive
-/// while the loop sleeps or skips a frame still count once each.
-int f12Presses = 0;
-GLFWkeyfun previousKeyCallback = nullptr;
-extern "C" void onKey(GLFWwindow* w, int key, int scancode, int action, int mods) {
-    if (key == GLFW_KEY_F12 && action == GLFW_PRESS) ++f12Presses;
-    if (previousKeyCallback) previousKeyCallback(w, key, scancode, action, mods);
+// The queue's codes are GLFW's.
+static_assert(input::kPress == GLFW_PRESS && input::kRelease == GLFW_RELEASE && input::kRepeat == GLFW_REPEAT);
+static_assert(input::kFirstModifierKey == GLFW_KEY_LEFT_SHIFT && input::kLastModifierKey == GLFW_KEY_RIGHT_SUPER);
+
+// ---- [SECTION] Window events ---------------------------------------------------------------------
+// ImGui's backend is installed without its callbacks: these queue every event instead, and the
+// loop applies them a frame at a time (one window per process, hence a file-level queue).
+
+input::InputQueue inputQueue;
+
+extern "C" void onKey(GLFWwindow*, int key, int scancode, int action, int mods) {
+    inputQueue.push(input::KeyEvent{key, scancode, action, mods});
+}
+extern "C" void onChar(GLFWwindow*, unsigned codepoint) { inputQueue.push(input::CharEvent{codepoint}); }
+extern "C" void onMouseButton(GLFWwindow*, int button, int action, int mods) {
+    inputQueue.push(input::MouseButtonEvent{button, action, mods});
+}
+extern "C" void onScroll(GLFWwindow*, double dx, double dy) { inputQueue.push(input::ScrollEvent{dx, dy}); }
+extern "C" void onCursorPos(GLFWwindow*, double x, double y) { inputQueue.push(input::CursorPosEvent{x, y}); }
+extern "C" void onFocus(GLFWwindow*, int focused) { inputQueue.push(input::FocusEvent{focused != 0}); }
+extern "C" void onCursorEnter(GLFWwindow*, int entered) { inputQueue.push(input::CursorEnterEvent{entered != 0}); }
+/// (GLFW's strings live only during the call: copied.)
+extern "C" void onDrop(GLFWwindow*, int count, const char** paths) {
+    if (count > 0) inputQueue.push(input::DropEvent{std::vector<std::string>(paths, paths + count)});
 }
 
-/// WASD/QE as (right, up, forward).
-glm::vec3 flyKeys(GLFWwindow* w) {
-    const auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.f : 0.f; };
+void installCallbacks(GLFWwindow* w) {
+    glfwSetKeyCallback(w, onKey);
+    glfwSetCharCallback(w, onChar);
+    glfwSetMouseButtonCallback(w, onMouseButton);
+    glfwSetScrollCallback(w, onScroll);
+    glfwSetCursorPosCallback(w, onCursorPos);
+    glfwSetWindowFocusCallback(w, onFocus);
+    glfwSetCursorEnterCallback(w, onCursorEnter);
+    glfwSetDropCallback(w, onDrop);
+}
+
+// ---- [SECTION] Applying input ----------------------------------------------------------------------
+
+/// The pointer as the events applied so far leave it. ImGui 1.86's backend reads the buttons and
+/// the position by polling GLFW in NewFrame, which is ahead of the queue (a press already released,
+/// a position already left): drawFrame puts these in their place.
+struct AppliedPointer {
+    std::optional<ImVec2> pos; // the last cursor event's; none before the first (the polled one stands)
+    bool down[ImGuiMouseButton_COUNT] = {};
+};
+
+/// What a frame's events ask of the viewer itself rather than of ImGui.
+struct FrameActions {
+    bool screenshot = false; // F12: counted per press, as each press has a frame of its own
+    bool quit = false;       // Ctrl+Q
+    bool acted = false;      // a key, character, button, wheel, focus or drop event (not a move)
+    std::vector<std::string> dropped;
+};
+
+/// Hands one event to ImGui through the backend's public callbacks (or the pointer state).
+struct ApplyEvent {
+    GLFWwindow* window;
+    AppliedPointer& pointer;
+    FrameActions& actions;
+
+    void operator()(const input::KeyEvent& e) const {
+        actions.acted = true;
+        ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, e.action, e.mods);
+        if (e.action != GLFW_PRESS) return;
+        if (e.key == GLFW_KEY_F12) actions.screenshot = true;
+        if (e.key == GLFW_KEY_Q && (e.mods & GLFW_MOD_CONTROL)) actions.quit = true;
+    }
+    void operator()(const input::CharEvent& e) const {
+        actions.acted = true;
+        ImGui_ImplGlfw_CharCallback(window, e.codepoint);
+    }
+    /// (1.86's button callback only latches a press for NewFrame's polling, which drawFrame replaces.)
+    void operator()(const input::MouseButtonEvent& e) const {
+        actions.acted = true;
+        if (e.button >= 0 && e.button < ImGuiMouseButton_COUNT) pointer.down[e.button] = e.action == GLFW_PRESS;
+    }
+    void operator()(const input::ScrollEvent& e) const {
+        actions.acted = true;
+        ImGui_ImplGlfw_ScrollCallback(window, e.dx, e.dy);
+    }
+    void operator()(const input::CursorPosEvent& e) const { pointer.pos = ImVec2(float(e.x), float(e.y)); }
+    void operator()(const input::FocusEvent& e) const {
+        actions.acted = true;
+        ImGui_ImplGlfw_WindowFocusCallback(window, e.focused);
+    }
+    void operator()(const input::CursorEnterEvent& e) const { ImGui_ImplGlfw_CursorEnterCallback(window, e.entered); }
+    void operator()(const input::DropEvent& e) const {
+        actions.acted = true;
+        actions.dropped = e.paths;
+    }
+};
+
+/// The next frame's events from the queue, applied.
+FrameActions applyNextFrameInput(GLFWwindow* w, AppliedPointer& pointer) {
+    FrameActions actions;
+    for (const input::InputEvent& e : inputQueue.takeFrame()) std::visit(ApplyEvent{w, pointer, actions}, e);
+    return actions;
+}
+
+/// After ImGui_ImplGlfw_NewFrame: the pointer as the applied events leave it, not as polled.
+void overridePolledPointer(const AppliedPointer& pointer) {
+    ImGuiIO& io = ImGui::GetIO();
+    // The backend leaves no position when the pointer is outside an unfocused window: keep that.
+    if (pointer.pos && ImGui::IsMousePosValid(&io.MousePos)) io.MousePos = *pointer.pos;
+    for (int b = 0; b < ImGuiMouseButton_COUNT; ++b) io.MouseDown[b] = pointer.down[b];
+}
+
+/// A dropped file loads as a scene (the first one: one scene at a time).
+void loadDropped(Dashboard& dashboard, const std::vector<std::string>& paths) {
+    if (paths.empty()) return;
+    dashboard.loadScene(paths.front());
+    if (paths.size() > 1)
+        dashboard.setStatus(dashboard.status() + " (" + std::to_string(paths.size() - 1) +
+                            " more dropped files ignored: one scene at a time)");
+}
+
+/// WASD/QE as (right, up, forward), from the keys as the applied events leave them.
+glm::vec3 flyKeys() {
+    const ImGuiIO& io = ImGui::GetIO();
+    const auto down = [&](int key) { return io.KeysDown[key] ? 1.f : 0.f; };
     return {down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
             down(GLFW_KEY_W) - down(GLFW_KEY_S)};
 }
+
+// ---- [SECTION] Config file -------------------------------------------------------------------------
 
 /// The config file: --config's, else dashboard.json in the config folder; empty when there is no config folder.
 std::filesystem::path configFilePath(const ViewerOptions& options) {
@@ -111,9 +233,12 @@ private:
     std::string saved_; // the config as last saved
 };
 
-/// Waits for input, or until a frame is due (at once while settling; no frame due: for as long as it takes).
-void waitForInput(std::optional<double> due, bool settling, bool unsaved, bool ticking) {
-    std::optional<double> wait = settling ? std::optional<double>(0.0) : due;
+// ---- [SECTION] The loop ----------------------------------------------------------------------------
+
+/// Waits for input, or until a frame is due (at once while settling or while queued input waits for
+/// its frames; no frame due: for as long as it takes).
+void waitForInput(std::optional<double> due, bool now, bool unsaved, bool ticking) {
+    std::optional<double> wait = now ? std::optional<double>(0.0) : due;
     if (unsaved) wait = std::min(wait.value_or(1.0), 1.0); // saved within a second of a change
     if (ticking) wait = std::min(wait.value_or(0.1), 0.1);
     if (!wait) glfwWaitEvents();
@@ -121,23 +246,20 @@ void waitForInput(std::optional<double> due, bool settling, bool unsaved, bool t
     else glfwPollEvents();
 }
 
-/// This frame's input from the keys: the screenshot key, flying, and Ctrl+Q closing the window.
-FrameInput readInput(GLFWwindow* w, float deltaSeconds) {
+/// This frame's input for the dashboard: the screenshot key and flying (not while typing).
+FrameInput readInput(const FrameActions& actions, float deltaSeconds) {
     FrameInput input;
     input.deltaSeconds = deltaSeconds;
-    const bool ctrl =
-        glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
-    if (ctrl && glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
-    input.screenshot = f12Presses > 0;
-    f12Presses = 0;
-    if (!ImGui::GetIO().WantTextInput) input.fly = flyKeys(w);
+    input.screenshot = actions.screenshot;
+    if (!ImGui::GetIO().WantTextInput) input.fly = flyKeys();
     return input;
 }
 
 /// Draws the dashboard into the window's framebuffer, then saves the screenshots it asked for.
-void drawFrame(Dashboard& dashboard, const FrameInput& input, int fbW, int fbH) {
+void drawFrame(Dashboard& dashboard, const FrameInput& input, const AppliedPointer& pointer, int fbW, int fbH) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    overridePolledPointer(pointer);
     ImGui::NewFrame();
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     dashboard.frame(display.x, display.y, input);
@@ -151,12 +273,13 @@ void drawFrame(Dashboard& dashboard, const FrameInput& input, int fbW, int fbH) 
     }
 }
 
-/// Whether the user is acting (a button held, the wheel turned, typing, flying, a screenshot): ImGui settles after.
-bool userActive(const FrameInput& input) {
+/// Whether the user is acting (a key, button or wheel event, a button held, typing, flying, a
+/// screenshot): ImGui settles after.
+bool userActive(const FrameInput& input, const FrameActions& actions) {
     const ImGuiIO& io = ImGui::GetIO();
     // (A pointer that only moves needs no extra frame: its hover shows in the frame that took it.)
-    return io.MouseWheel != 0.f || io.WantTextInput || ImGui::IsAnyItemActive() || io.MouseDown[0] || io.MouseDown[1] ||
-           io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
+    return actions.acted || io.MouseWheel != 0.f || io.WantTextInput || ImGui::IsAnyItemActive() || io.MouseDown[0] ||
+           io.MouseDown[1] || io.MouseDown[2] || glm::length(input.fly) > 0.f || input.screenshot;
 }
 
 } // namespace
@@ -178,10 +301,10 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
 
     renderer::GlfwWindowContext window(geometry.width, geometry.height, "shadowscope — " + scene.file.scene.name);
     GLFWwindow* w = window.window();
-    glfwSetInputMode(w, GLFW_STICKY_KEYS, GLFW_TRUE); // a press and release within one frame still counts
     ImGuiScope imgui(contentScale(w));
-    ImGui_ImplGlfw_InitForOpenGL(w, true);
-    previousKeyCallback = glfwSetKeyCallback(w, onKey); // ImGui's, called on from onKey
+    ImGui_ImplGlfw_InitForOpenGL(w, false); // its callbacks would show ImGui one state per frame
+    installCallbacks(w);
+    AppliedPointer pointer;
 
     Dashboard dashboard(std::move(scene), state, dashboardOptions(options, imgui.scale()));
     dashboard.setStatus(startStatus);
@@ -199,7 +322,7 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
         // change, a coarse view to refine or background work to poll. Otherwise sleep until input.
         const std::optional<double> due = dashboard.nextFrameIn();
         const bool unsaved = config.unsaved(dashboard);
-        waitForInput(due, settleFrames > 0, unsaved, ticking);
+        waitForInput(due, settleFrames > 0 || !inputQueue.empty(), unsaved, ticking);
         int fbW = 0, fbH = 0;
         glfwGetFramebufferSize(w, &fbW, &fbH);
         if (fbW <= 0 || fbH <= 0 || glfwGetWindowAttrib(w, GLFW_ICONIFIED)) { // minimised or zero-sized
@@ -211,12 +334,15 @@ int runViewer(LoadedScene scene, const ViewerOptions& options) {
             imgui.rescale(scale);
             dashboard.setUiScale(imgui.scale());
         }
+        const FrameActions actions = applyNextFrameInput(w, pointer);
+        if (actions.quit) glfwSetWindowShouldClose(w, GLFW_TRUE);
+        loadDropped(dashboard, actions.dropped);
         const auto now = std::chrono::steady_clock::now();
-        const FrameInput input = readInput(w, std::chrono::duration<float>(now - last).count());
+        const FrameInput input = readInput(actions, std::chrono::duration<float>(now - last).count());
         last = now;
-        drawFrame(dashboard, input, fbW, fbH);
+        drawFrame(dashboard, input, pointer, fbW, fbH);
         glfwSwapBuffers(w);
-        settleFrames = userActive(input) ? 2 : std::max(0, settleFrames - 1);
+        settleFrames = userActive(input, actions) ? 2 : std::max(0, settleFrames - 1);
         if (now - lastSave > std::chrono::seconds(1)) {
             config.save(dashboard, false);
             lastSave = now;
