@@ -79,10 +79,11 @@ bool typedValueComplete(const geometry::shadow::SettingInfo& info, const std::st
     }
     const auto it = typed.find(label);
     if (it == typed.end()) return edited;
-    // The field closed (Return, or a click elsewhere) since the last keystroke; Escape cancels.
+    // The field closed (Return, or a click elsewhere) since the last keystroke; Escape cancels. An
+    // edit in the closing frame itself (the last digit and Return together) is the freshest value.
     const bool escaped = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) ||
                          ImGui::IsKeyDown(ImGui::GetKeyIndex(ImGuiKey_Escape));
-    if (!escaped) value = it->second;
+    if (!escaped && !edited) value = it->second;
     typed.erase(it);
     return !escaped || edited;
 }
