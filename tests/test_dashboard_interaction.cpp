@@ -123,6 +123,36 @@ TEST_F(DashboardInteraction, ADragDrawsCoarseFramesThenOneFullFrame) {
     EXPECT_TRUE(dash().passCounts() == c) << describe(dash().passCounts());
 }
 
+TEST_F(DashboardInteraction, ASlowDiscreteChangeShowsCoarseFirstAndRefinesOnTheNextFrame) {
+    // A response budget no frame fits, as on a slow machine: the warp change (a combo, not a drag)
+    // shows at reduced resolution in the frame that takes it and at full resolution in the next,
+    // with no pause to wait for. (The window's budget is ui::kResponseBudgetMs; tests pin it.)
+    dash().setResponseBudget(0.0);
+    const ui::PassCounts a = dash().passCounts();
+    dash().state().settings[0].warp.method = geometry::shadow::WarpMethod::Lispsm;
+    d_->step({});
+    const ui::PassCounts b = dash().passCounts();
+    EXPECT_EQ(b.eyeCoarse, a.eyeCoarse + 1) << describe(b);
+    EXPECT_EQ(b.shadow, a.shadow + 1) << "the new warp's maps, at the coarse frame's reduction";
+    EXPECT_EQ(b.eyeFull, a.eyeFull);
+    EXPECT_TRUE(dash().coarse());
+    ASSERT_TRUE(dash().nextFrameIn());
+    EXPECT_EQ(*dash().nextFrameIn(), 0.0) << "refined at once: no more input follows a discrete change";
+    d_->step({}); // the clock has not moved
+    const ui::PassCounts c = dash().passCounts();
+    EXPECT_EQ(c.eyeFull, b.eyeFull + 1) << describe(c);
+    EXPECT_EQ(c.eyeCoarse, b.eyeCoarse);
+    EXPECT_EQ(c.shadow, b.shadow + 1) << "the coarse frame's maps were smaller: drawn again at full size";
+    EXPECT_FALSE(dash().coarse());
+
+    // Budget infinite (headless renders, tests by default): the same kind of change draws in full at once.
+    dash().setResponseBudget(INFINITY);
+    dash().state().settings[0].warp.method = geometry::shadow::WarpMethod::Uniform;
+    d_->step({});
+    EXPECT_EQ(dash().passCounts().eyeFull, c.eyeFull + 1);
+    EXPECT_EQ(dash().passCounts().eyeCoarse, c.eyeCoarse);
+}
+
 TEST_F(DashboardInteraction, ChangingTheViewCancelsTheStatisticsUnderWay) {
     dash().state().views.truthSamples = 4;
     d_->step({}); // a full frame; its statistics (16 truth rays a pixel) start on a worker

@@ -262,13 +262,23 @@ TEST(DashboardControls, EverySettingBelongsToAShownGroup) {
 
 TEST(Progressive, DecidesWhatASideDraws) {
     using ui::Draw;
-    EXPECT_EQ(ui::decideDraw(true, true, false, 0.0), Draw::Coarse);  // a drag step
-    EXPECT_EQ(ui::decideDraw(true, false, false, 0.0), Draw::Full);   // a typed value, a combo
-    EXPECT_EQ(ui::decideDraw(true, false, true, 0.0), Draw::Full);    // a discrete change ends a drag
-    EXPECT_EQ(ui::decideDraw(false, false, true, 0.05), Draw::None);  // coarse, input paused briefly
-    EXPECT_EQ(ui::decideDraw(false, true, true, 0.15), Draw::Full);   // … long enough: refine
-    EXPECT_EQ(ui::decideDraw(false, false, true, NAN), Draw::Full);   // unknown pause: refine
-    EXPECT_EQ(ui::decideDraw(false, false, false, 10.0), Draw::None); // idle
+    constexpr double pause = ui::kRefinePause;
+    EXPECT_EQ(ui::decideDraw(true, true, true, false, 0.0, pause), Draw::Coarse);  // a drag step
+    EXPECT_EQ(ui::decideDraw(true, false, true, false, 0.0, 0.0), Draw::Full);     // a typed value, a combo
+    EXPECT_EQ(ui::decideDraw(true, false, false, false, 0.0, 0.0), Draw::Coarse);  // … too slow in full: coarse first
+    EXPECT_EQ(ui::decideDraw(true, false, true, true, 0.0, 0.0), Draw::Full);      // a discrete change ends a drag
+    EXPECT_EQ(ui::decideDraw(false, false, true, true, 0.05, pause), Draw::None);  // coarse, input paused briefly
+    EXPECT_EQ(ui::decideDraw(false, true, true, true, 0.15, pause), Draw::Full);   // … long enough: refine
+    EXPECT_EQ(ui::decideDraw(false, false, true, true, 0.0, 0.0), Draw::Full);     // after a discrete change: at once
+    EXPECT_EQ(ui::decideDraw(false, false, true, true, NAN, pause), Draw::Full);   // unknown pause: refine
+    EXPECT_EQ(ui::decideDraw(false, false, true, false, 10.0, pause), Draw::None); // idle
+}
+
+TEST(Progressive, FullFrameFitsTheResponseBudget) {
+    EXPECT_TRUE(ui::fullFrameFits(NAN, 2, 150.0)); // nothing timed yet
+    EXPECT_TRUE(ui::fullFrameFits(70.0, 2, 150.0));
+    EXPECT_FALSE(ui::fullFrameFits(80.0, 2, 150.0)); // A/B: both sides count
+    EXPECT_FALSE(ui::fullFrameFits(151.0, 1, 150.0));
 }
 
 TEST(Progressive, CoarseDivisorFitsTheBudget) {

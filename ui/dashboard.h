@@ -46,6 +46,10 @@ struct DashboardOptions {
     /// Draw both passes at full resolution every frame, as the dashboard did before it drew only what
     /// changed: the "before" of the dashboard benchmark (tests/bench_dashboard.cpp), not a user option.
     bool redrawEveryFrame = false;
+    /// GPU milliseconds a full-resolution frame may take for the first response to a discrete change;
+    /// predicted above it, the change is drawn coarse first (ui::kResponseBudgetMs in the window).
+    /// Infinite (headless renders, tests): always at full resolution, whatever the machine's speed.
+    double responseBudgetMs = INFINITY;
     /// Seconds on a monotonic clock, for the pause after which a coarse frame is refined; empty:
     /// std::chrono::steady_clock. Tests inject their own and advance it instead of sleeping.
     std::function<double()> clock;
@@ -104,6 +108,8 @@ public:
     void setStatus(std::string message) { status_ = std::move(message); }
     /// The monitor's content scale changed (fixed sizes in the layout follow it).
     void setUiScale(float scale) noexcept { options_.uiScale = scale; }
+    /// DashboardOptions::responseBudgetMs from now on.
+    void setResponseBudget(double ms) noexcept { options_.responseBudgetMs = ms; }
 
     /// The user asked for a screenshot this frame (key or button): the front end calls
     /// saveScreenshots() with the window image after ImGui::Render().
@@ -222,7 +228,8 @@ private:
     void renderViews();
     [[nodiscard]] PassInputs passInputs(int side) const;
     [[nodiscard]] InspectionInputs inspectionInputs(int side) const;
-    void drawSide(int side, const PassInputs& in, int divisor);
+    /// Draws a side at 1/divisor of each side of the view, its shadow maps at 1/mapDivisor.
+    void drawSide(int side, const PassInputs& in, int divisor, int mapDivisor);
     void updateInspection();
     void startInspection(int side, const InspectionInputs& in);
     void pollInspections();
@@ -294,8 +301,9 @@ private:
     geometry::shadow::Viewport eyeSize_{0, 0}; // this frame's full-resolution eye view size
     bool continuousInput_ = false;             // the last frame's input was a drag, the wheel or fly keys
     bool drewThisFrame_ = false;
-    bool gpuTimesInFlight_ = false; // a drawn frame's GPU times have not arrived: poll them next frame
-    double lastChange_ = 0;         // seconds on now()'s clock
+    bool gpuTimesInFlight_ = false;     // a drawn frame's GPU times have not arrived: poll them next frame
+    double lastChange_ = 0;             // seconds on now()'s clock
+    double refinePause_ = kRefinePause; // the pause before refining the last change's coarse frame
     [[nodiscard]] double now() const;
     uint64_t nextInspectionSerial_ = 1;
     std::vector<std::future<geometry::analysis::Inspection>> retiring_; // cancelled jobs winding down

@@ -55,6 +55,21 @@ void lowerThreadPriority() noexcept {
 #endif
 }
 
+/// A side's predicted GPU milliseconds at full resolution, from its last frame's pass times: the
+/// eye-side passes, which scale with the pixel count, and the fixed part (shadow maps, light view).
+struct FrameCost {
+    double perPixel = NAN, fixed = 0.0; // perPixel NaN: not timed yet
+    [[nodiscard]] double full() const noexcept { return perPixel + fixed; }
+};
+
+FrameCost frameCost(const renderer::PassTimes& t, int shownDivisor, double shadowGpuMs) noexcept {
+    FrameCost c;
+    if (t.valid)
+        c.perPixel = (t.of(renderer::Pass::Prepass) + t.of(renderer::Pass::Eye)) * double(shownDivisor * shownDivisor);
+    c.fixed = (std::isfinite(shadowGpuMs) ? shadowGpuMs : 0.0) + (t.valid ? t.of(renderer::Pass::LightView) : 0.0);
+    return c;
+}
+
 bool ready(const std::future<geometry::analysis::Inspection>& f) {
     return f.valid() && f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
 }
@@ -109,46 +124,55 @@ void Dashboard::renderViews() {
         changed[i] = !side.drawn || *side.drawn != inputs[i] || options_.redrawEveryFrame;
         anyChanged = anyChanged || changed[i];
     }
-    if (anyChanged) lastChange_ = t;
-    const double since = t - lastChange_;
     const bool continuous = (continuousInput_ || flying_) && !options_.redrawEveryFrame;
+    if (anyChanged) {
+        lastChange_ = t;
+        refinePause_ = continuous ? kRefinePause : 0.0; // a discrete change: nothing more follows
+    }
+    const double since = t - lastChange_;
+    // Predicted from each side's last frames; a new side B costs what A did.
+    std::array<FrameCost, 2> cost{};
+    for (int i = 0; i < sides; ++i)
+        cost[i] = frameCost(sides_[i].renderer->stats().gpu, sides_[i].coarseDivisor, sides_[i].shadowGpuMs);
+    if (sides == 2 && !(cost[1].perPixel > 0.0)) cost[1] = cost[0];
+    const int changedSides = int(changed[0]) + int(sides == 2 && changed[1]);
+    bool fits = true;
+    for (int i = 0; i < sides; ++i)
+        fits = fits && fullFrameFits(cost[i].full(), changedSides, options_.responseBudgetMs);
     for (int i = 0; i < sides; ++i) {
-        const Draw draw = decideDraw(changed[i], continuous, sides_[i].coarseDivisor > 1, since);
+        const Draw draw = decideDraw(changed[i], continuous, fits, sides_[i].coarseDivisor > 1, since, refinePause_);
         if (draw == Draw::None) continue;
-        int divisor = 1;
-        if (draw == Draw::Coarse) {
-            // From this side's last frames: the eye-side passes scale with the pixels, the rest does not.
-            const renderer::PassTimes& t = sides_[i].renderer->stats().gpu;
-            const double perPixel = t.valid ? (t.of(renderer::Pass::Prepass) + t.of(renderer::Pass::Eye)) *
-                                                  double(sides_[i].coarseDivisor * sides_[i].coarseDivisor)
-                                            : NAN;
-            const double fixed = (std::isfinite(sides_[i].shadowGpuMs) ? sides_[i].shadowGpuMs : 0.0) +
-                                 (t.valid ? t.of(renderer::Pass::LightView) : 0.0);
-            divisor = coarseDivisor(perPixel * sides, fixed * sides, kCoarseBudgetMs);
-        }
+        const int divisor =
+            draw == Draw::Coarse ? coarseDivisor(cost[i].perPixel * sides, cost[i].fixed * sides, kCoarseBudgetMs) : 1;
+        // A discrete change drawn coarse has new maps to draw anyway: at the same reduction as the
+        // view, which keeps texels per pixel (and so the aliasing shown) as in the full frame.
+        const int mapDivisor = draw == Draw::Coarse && !continuous ? divisor : 1;
         if (changed[i]) abandonInspection(sides_[i]); // it would describe a view no longer shown
-        drawSide(i, inputs[i], divisor);
+        drawSide(i, inputs[i], divisor, mapDivisor);
     }
 }
 
-void Dashboard::drawSide(int i, const PassInputs& in, int divisor) {
+void Dashboard::drawSide(int i, const PassInputs& in, int divisor, int mapDivisor) {
     Side& side = sides_[i];
     const geometry::scene::Scene& scene = scene_.file.scene;
     const geometry::shadow::Viewport full = in.size;
     const geometry::shadow::Viewport size{std::max(8, full.width / divisor), std::max(8, full.height / divisor)};
     try {
         double us = 0;
-        // Planned for the full view, so the full frame that refines a coarse one keeps its maps; with
-        // focus.mode = samples the plan comes from the samples of the pre-pass at the drawn size.
+        // Planned for the full view, so the full frame that refines a coarse drag frame keeps its
+        // maps; with focus.mode = samples the plan comes from the samples of the pre-pass at the
+        // drawn size.
         // Every light is planned for the same camera (docs/design.md §3.10); the plan kept is the
         // inspected light's, which the light view, the statistics and the heatmaps describe.
-        const bool samples = in.settings.focus == geometry::shadow::FocusMode::Samples;
+        geometry::shadow::ShadowSettings settings = in.settings;
+        settings.resolution = std::max(16, settings.resolution / mapDivisor);
+        const bool samples = settings.focus == geometry::shadow::FocusMode::Samples;
         if (in.lights.empty()) throw std::runtime_error("no light to draw");
         std::vector<geometry::shadow::ShadowPlan> plans;
         plans.reserve(in.lights.size());
         for (const geometry::scene::Light& light : in.lights) {
             double lightUs = 0;
-            plans.push_back(renderer::planFrame(*side.renderer, in.settings, scene.bounds(), in.camera, light,
+            plans.push_back(renderer::planFrame(*side.renderer, settings, scene.bounds(), in.camera, light,
                                                 samples ? size : full, &lightUs));
             us += lightUs;
         }
@@ -336,7 +360,7 @@ std::optional<double> Dashboard::nextFrameIn() const {
         if (!sides_[i].drawn || *sides_[i].drawn != passInputs(i)) return 0.0;
     std::optional<double> wait;
     if (coarse()) {
-        wait = std::max(0.0, kRefinePause - (now() - lastChange_));
+        wait = std::max(0.0, refinePause_ - (now() - lastChange_));
     }
     if (backgroundBusy() || gpuTimesInFlight_) wait = std::min(wait.value_or(0.05), 0.05);
     return wait;

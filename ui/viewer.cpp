@@ -198,6 +198,7 @@ DashboardOptions dashboardOptions(const ViewerOptions& options, float uiScale) {
     dashOptions.sceneChoices = options.sceneChoices;
     dashOptions.presetChoices = options.presetChoices;
     dashOptions.uiScale = uiScale;
+    dashOptions.responseBudgetMs = kResponseBudgetMs; // a person waits: coarse first when a full frame is slow
     dashOptions.view = options.view;
     return dashOptions;
 }
