@@ -9,6 +9,7 @@
 #include "ui/dashboard_headless.h"
 
 #include <gtest/gtest.h>
+#include <imgui.h>
 
 #include <cmath>
 #include <cstring>
@@ -185,8 +186,10 @@ TEST_F(DashboardInteraction, APinnedPixelReadsTheCurrentView) {
     clock_ += 0.2;
     (void)d_->render(1);
     const glm::vec2 p = eyeCentre();
-    d_->step({p, {true, false, false}, 0.f}); // a click without a drag pins the pixel
+    ImGui::GetIO().KeyShift = true;           // shift+click pins (a plain click does not: double-click fits)
+    d_->step({p, {true, false, false}, 0.f}); // a click without a drag
     d_->step({p, {false, false, false}, 0.f});
+    ImGui::GetIO().KeyShift = false;
     ASSERT_TRUE(dash().pinnedPixel());
     const ui::PixelProbe moved = *dash().pinnedPixel();
     dash().resetCamera();

@@ -20,6 +20,7 @@
 #include <array>
 #include <chrono>
 #include <cstdlib>
+#include <set>
 #include <thread>
 
 namespace {
@@ -421,20 +422,24 @@ protected:
     /// F12 (or the button when `button`): waits for the app to print the paths and show
     /// "saved …", checks that every file was written anew and copies them to tmp/NAME.
     Shots screenshot(const std::string& name, bool button = false) {
-        for (const char* f : kShotFiles) fs::remove(shots_ / f);
         const long before = linesMentioning("app.out", "dashboard.png");
         if (button) click("screenshot");
         else xdo({"key", "F12"});
         waitForMap("the screenshot (" + name + ")", [&](const WidgetMap& m) {
             return m.status.rfind("saved ", 0) == 0 && linesMentioning("app.out", "dashboard.png") > before;
         });
+        // Each screenshot goes to a new numbered folder (shots/001, 002, …): the last path printed names it.
+        const std::string out = readText(tmp_ / "app.out");
+        const size_t end = out.rfind("dashboard.png"), start = out.rfind('\n', end);
+        const size_t from = start == std::string::npos ? 0 : start + 1;
+        const fs::path folder = out.substr(from, end - from); // "…/shots/002/"
         Shots s;
         s.dir = tmp_ / name;
         fs::create_directories(s.dir);
         for (const char* f : kShotFiles) {
-            if (!fs::exists(shots_ / f))
+            if (!fs::exists(folder / f))
                 throw std::runtime_error(std::string("the screenshot did not write ") + f + "\n" + context());
-            fs::copy_file(shots_ / f, s.dir / f, fs::copy_options::overwrite_existing);
+            fs::copy_file(folder / f, s.dir / f, fs::copy_options::overwrite_existing);
         }
         s.eye = geometry::analysis::readImageFile((s.dir / "eye.png").string());
         s.light = geometry::analysis::readImageFile((s.dir / "light.png").string());
@@ -865,6 +870,78 @@ TEST_F(GuiE2E, TypedValueIsAppliedOnlyWhenComplete) {
     EXPECT_NE(refused.status.find("kept 2048"), std::string::npos) << refused.status;
     closeGracefully();
     EXPECT_EQ(configSetting("shadow_map.resolution"), "2048");
+}
+
+// ---- findable, documentation screenshots (issue 32, items 5 and 6) -----------------------------
+
+/// The ids the widget map lists as greyed (recorded under ImGui::BeginDisabled).
+std::set<std::string> greyedIn(const fs::path& mapFile) {
+    std::set<std::string> ids;
+    const json j = json::parse(readText(mapFile), nullptr, false);
+    if (!j.is_discarded() && j.contains("disabled"))
+        for (const auto& id : j["disabled"]) ids.insert(id.get<std::string>());
+    return ids;
+}
+
+// Two F12 presses write two numbered folders, and the first keeps its files.
+TEST_F(GuiE2E, TwoScreenshotsKeepBothFolders) {
+    launch();
+    const Shots first = screenshot("first");
+    const Shots second = screenshot("second");
+    EXPECT_TRUE(fs::is_directory(shots_ / "001")) << context();
+    EXPECT_TRUE(fs::is_directory(shots_ / "002")) << context();
+    for (const char* f : kShotFiles) {
+        EXPECT_TRUE(fs::exists(shots_ / "001" / f)) << f;
+        EXPECT_TRUE(fs::exists(shots_ / "002" / f)) << f;
+    }
+    EXPECT_NE(currentMap().status.find("002"), std::string::npos) << "the status bar names the folder\n" << context();
+    EXPECT_EQ(second.dashboard.width, kWidth);
+    closeGracefully();
+}
+
+// The export dialog writes the eye view at 1920x1080, whatever the panel's size.
+TEST_F(GuiE2E, AnExportAt1920x1080HasThatSize) {
+    launch();
+    click("export");
+    widget("export.go");
+    click("export.view=eye_a");
+    click("export.size=0"); // 1920x1080
+    click("export.go");
+    const WidgetMap done = waitForMap("the export to be written", [](const WidgetMap& m) {
+        return m.status.rfind("exported ", 0) == 0 || m.status.find("export not written") != std::string::npos;
+    });
+    ASSERT_EQ(done.status.rfind("exported ", 0), 0u) << done.status;
+    const fs::path file = done.status.substr(9);
+    EXPECT_EQ(file.filename(), "eye_a_1920x1080.png");
+    const geometry::analysis::Image img = geometry::analysis::readImageFile(file.string());
+    EXPECT_EQ(img.width, 1920);
+    EXPECT_EQ(img.height, 1080);
+    closeGracefully();
+}
+
+// bias.constant under slope_normal_offset is greyed (the issue saw it active), and active again
+// under the constant bias; F1 shows the help.
+TEST_F(GuiE2E, ASettingThatDoesNotApplyIsGreyedAndF1ShowsTheHelp) {
+    launch();
+    chooseInCombo("bias.type", "slope_normal_offset");
+    waitForConfig("bias.type", "slope_normal_offset");
+    scrollIntoView("bias.constant");
+    waitForMap("bias.constant greyed", [&](const WidgetMap& m) {
+        return m.has("bias.constant") && greyedIn(mapFile_).count("bias.constant") == 1;
+    });
+    const std::set<std::string> greyed = greyedIn(mapFile_);
+    EXPECT_EQ(greyed.count("bias.slope"), 0u);
+    EXPECT_EQ(greyed.count("bias.normal_offset"), 0u);
+    chooseInCombo("bias.type", "constant");
+    waitForMap("bias.constant active", [&](const WidgetMap& m) {
+        return m.has("bias.constant") && greyedIn(mapFile_).count("bias.constant") == 0;
+    });
+    EXPECT_EQ(greyedIn(mapFile_).count("bias.slope"), 1u);
+    pressKey("F1");
+    waitForMap("the help overlay", [](const WidgetMap& m) { return m.has("help") && m.has("help:Keys:F12"); });
+    pressKey("F1");
+    waitForMap("the help overlay to close", [](const WidgetMap& m) { return !m.has("help"); });
+    closeGracefully();
 }
 
 } // namespace

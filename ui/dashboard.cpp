@@ -1,5 +1,6 @@
 #include "dashboard.h"
 
+#include "file_list.h"
 #include "geometry/analysis/view_images.h"
 #include "geometry/io/preset.h"
 #include "geometry/shadow/shadow_plan.h"
@@ -83,6 +84,12 @@ void Dashboard::adoptScene(LoadedScene loaded) {
     hovered_.reset();
     pinned_.reset();
     status_ = "loaded " + scene_.source + " (" + std::to_string(scene_.file.scene.triangleCount()) + " triangles)";
+    // Files (not built-in names) become recent ones, however they were opened: field, browser, drop.
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(scene_.source, ec)) {
+        const std::string path = std::filesystem::absolute(scene_.source, ec).lexically_normal().string();
+        state_.recentFiles = withRecentFile(state_.recentFiles, path);
+    }
 }
 
 void Dashboard::applyCameraInput(const FrameInput& input) {
@@ -118,6 +125,10 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     const auto t0 = std::chrono::steady_clock::now();
     screenshotRequested_ = input.screenshot;
     pollSceneLoad();
+    if (pendingExport_) { // before this frame's widgets: the dashboard export draws its own frames
+        (void)exportView(*pendingExport_);
+        pendingExport_.reset();
+    }
     rects_ = layoutDashboard(width, height, state_.layout, options_.uiScale);
     const ImGuiStyle& style = ImGui::GetStyle();
     const float pad = style.WindowPadding.x;
@@ -162,6 +173,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
         drawStatusBar();
     }
     ImGui::End();
+    drawDialogs(width, height);
     // What the next frame draws at: coarse while this frame's input drags, dollies or flies.
     const ImGuiIO& io = ImGui::GetIO();
     const bool dragging = ImGui::IsAnyItemActive() && (io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2]);
@@ -192,8 +204,8 @@ geometry::analysis::Image Dashboard::heatmapImage() const { return heatmapImage_
 std::vector<std::string> Dashboard::saveScreenshots(const geometry::analysis::Image& dashboard) {
     std::vector<std::string> written;
     try {
-        const std::filesystem::path dir = options_.screenshotDir;
-        std::filesystem::create_directories(dir);
+        // A new folder each time: documentation screenshots are never overwritten.
+        const std::filesystem::path dir = createNumberedFolder(options_.screenshotDir);
         const auto save = [&](const char* name, const geometry::analysis::Image& img) {
             if (img.width <= 0 || img.height <= 0) return;
             const std::string path = (dir / name).string();
@@ -206,8 +218,8 @@ std::vector<std::string> Dashboard::saveScreenshots(const geometry::analysis::Im
         save("heatmap.png", heatmapImage_);
         save("dashboard.png", dashboard);
         std::string list;
-        for (const auto& p : written) list += (list.empty() ? "" : ", ") + p;
-        status_ = "saved " + list;
+        for (const auto& p : written) list += (list.empty() ? "" : ", ") + std::filesystem::path(p).filename().string();
+        status_ = "saved " + dir.string() + "/: " + list;
     } catch (const std::exception& e) {
         status_ = std::string("screenshot failed: ") + e.what();
     }

@@ -6,9 +6,21 @@
 // It only builds ImGui windows and asks the renderer for frames, so the same code runs in the
 // GLFW window (viewer.cpp) and headless into an image (dashboard_headless.cpp): same layout and
 // same pixels for the same state and size.
+//
+// Index
+//   DashboardOptions ... what the front end fixes: screenshot folder, pickers, UI scale, clock, budgets
+//   FrameInput ......... the keys the window reads for a frame (screenshot, fly)
+//   PassCounts ......... how often it drew and inspected (tests, stats, widget map)
+//   PixelProbe ......... one pixel's exact values (the inspector)
+//   Dashboard .......... public: frame, state, screenshots and exports, images, probes, scheduling,
+//                        charts, lights, scene; private: sides, drawing (dashboard_frame.cpp),
+//                        panels (dashboard_panels.cpp), controls, stats, charts, dialogs
 #include "caster_lod_job.h"
 #include "dashboard_state.h"
+#include "export_dialog.h"
+#include "file_browser.h"
 #include "geometry/analysis/tuner.h"
+#include "help_overlay.h"
 #include "pass_inputs.h"
 #include "progressive.h"
 #include "recent_median.h"
@@ -115,8 +127,25 @@ public:
     /// saveScreenshots() with the window image after ImGui::Render().
     [[nodiscard]] bool screenshotRequested() const noexcept { return screenshotRequested_; }
     /// Writes eye.png, light.png, heatmap.png (and eye_b.png when comparing) and dashboard.png
-    /// into the screenshot folder; returns the paths written and shows them in the status bar.
+    /// into a new numbered folder of the screenshot folder (001, 002, …: never one written before);
+    /// returns the paths written and names the folder in the status bar.
     std::vector<std::string> saveScreenshots(const geometry::analysis::Image& dashboard);
+    /// `request`'s view drawn offscreen at its size with the current state (dashboard_export.cpp):
+    /// the eye views as `shadowscope render --views eye` draws them at that size.
+    [[nodiscard]] geometry::analysis::Image renderExport(const ExportRequest& request);
+    /// renderExport() written as VIEW_WxH.png into a new numbered folder (as screenshots); the
+    /// path, or nullopt with the reason in the status bar.
+    std::optional<std::string> exportView(const ExportRequest& request);
+    void openExportDialog() noexcept { exportDialog_.open(); }
+    [[nodiscard]] bool exportDialogOpen() const noexcept { return exportDialog_.isOpen(); }
+    /// The help overlay (F1, "?"): every gesture and key (gesture_table.h).
+    [[nodiscard]] bool helpOpen() const noexcept { return help_.open(); }
+    /// The file browser ("Browse…"), opened at `at`, or (empty) at the scene file field's folder,
+    /// else the last file's, else the current folder.
+    void openFileBrowser(const std::filesystem::path& at = {});
+    [[nodiscard]] const FileBrowser& fileBrowser() const noexcept { return browser_; }
+    /// The eye view's double-click: the camera keeps its direction and frames the scene (fitBounds).
+    void fitCamera();
 
     /// The images the panels show this frame (for screenshots and tests).
     [[nodiscard]] geometry::analysis::Image eyeImage(int side = 0) const;
@@ -266,6 +295,8 @@ private:
     [[nodiscard]] MeasureContext measureContext();
     void exportChart(const charts::Chart& chart, const std::string& name);
     void drawStatusBar();
+    /// The help overlay, file browser and export dialog over the panels (dashboard_export.cpp).
+    void drawDialogs(float width, float height);
     void drawControlsPanel();
     void drawSceneGroup();
     void drawCameraLightGroup();
@@ -335,6 +366,11 @@ private:
     float cameraAreaHeight_ = 1.f;
     bool flying_ = false; // this frame moved the camera with the fly keys
     void applyCameraInput(const FrameInput& input);
+
+    HelpOverlay help_;
+    FileBrowser browser_;
+    ExportDialog exportDialog_;
+    std::optional<ExportRequest> pendingExport_; // drawn at the start of the next frame, before its widgets
 
     TradeoffSweep sweep_;    // the Charts panel's trade-off sweep (tradeoff_sweep.h)
     RecommendJob recommend_; // the Trade-off tab's Recommend (recommend_job.h)

@@ -1,5 +1,6 @@
 #include "dashboard_config.h"
 
+#include "file_list.h"
 #include "geometry/io/json_file.h"
 #include "geometry/io/preset.h"
 #include "light_list.h"
@@ -179,6 +180,7 @@ json dashboardToJson(const DashboardState& s, const WindowGeometry& window) {
           {"stats_height", s.layout.statsHeight},
           {"window", {window.width, window.height}}}},
     };
+    if (!s.recentFiles.empty()) j["recent_files"] = s.recentFiles;
     if (!s.lights.empty()) {
         json list = json::array();
         for (const auto& l : s.lights) list.push_back(lightToJson(l));
@@ -191,7 +193,7 @@ void dashboardFromJson(const json& j, DashboardState& state, WindowGeometry& win
     if (!j.is_object()) bad("(top level)", "expected an object");
     for (const auto& [key, _] : j.items())
         if (key != "settings" && key != "settings_b" && key != "views" && key != "camera" && key != "layout" &&
-            key != "lights")
+            key != "lights" && key != "recent_files")
             bad(key, "unknown key");
     DashboardState s = state; // applied only when everything parses
     WindowGeometry w = window;
@@ -230,6 +232,15 @@ void dashboardFromJson(const json& j, DashboardState& state, WindowGeometry& win
         s.lights = std::move(parsed);
         s.lightsScene = scene ? scene->get<std::string>() : std::string();
         s.inspectedLight = int(number(*lights, "inspected", "lights.", 0, double(s.lights.size() - 1), 0));
+    }
+    if (const json* recent = member(j, "recent_files")) {
+        if (!recent->is_array() || recent->size() > kMaxRecentFiles)
+            bad("recent_files", "expected up to " + std::to_string(kMaxRecentFiles) + " paths");
+        s.recentFiles.clear();
+        for (const json& path : *recent) {
+            if (!path.is_string() || path.get<std::string>().empty()) bad("recent_files", "expected paths");
+            s.recentFiles.push_back(path.get<std::string>());
+        }
     }
     const json& c = object(j, "camera", "camera.");
     s.flySpeed = float(number(c, "fly_speed", "camera.", 1e-3, 1e6, s.flySpeed));

@@ -1,9 +1,9 @@
 #pragma once
 // The dashboard's persistent state: the last settings (A and B), the view options, the window
-// layout and the light list (with the scene it belongs to; "lights": {"scene", "inspected", "list"},
-// each light as a scene file writes one), in $XDG_CONFIG_HOME/shadowscope/dashboard.json (default
-// ~/.config/shadowscope). The settings use the preset layout (geometry/io/preset.h), so a config's
-// "settings" object is a preset.
+// layout, the light list (with the scene it belongs to; "lights": {"scene", "inspected", "list"},
+// each light as a scene file writes one) and the recent files ("recent_files", newest first), in
+// $XDG_CONFIG_HOME/shadowscope/dashboard.json (default ~/.config/shadowscope). The settings use the
+// preset layout (geometry/io/preset.h), so a config's "settings" object is a preset.
 #include "dashboard_state.h"
 
 #include <nlohmann/json_fwd.hpp>

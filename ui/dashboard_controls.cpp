@@ -1,9 +1,10 @@
-// The controls panel: scene picker, camera and light, the settings groups generated from the
-// declaration, view options, A/B compare, presets, screenshot (the Lights group: dashboard_lights.cpp).
+// The controls panel: screenshot, export and help buttons, scene picker (file field, browser),
+// camera and light, A/B compare with the side being edited, the settings groups generated from the
+// declaration, view options, presets (the Lights group: dashboard_lights.cpp).
 //
 // Index
-//   sunGizmo · drawControlsPanel · drawSceneGroup · setNearFar, resetCamera · drawCameraLightGroup ·
-//   drawSettingsGroups · drawViewsGroup · drawPresetsGroup
+//   sunGizmo · drawControlsPanel · drawSceneGroup · setNearFar, resetCamera, fitCamera ·
+//   drawCameraLightGroup · drawSettingsGroups · drawViewsGroup · drawPresetsGroup
 #include "dashboard.h"
 
 #include "geometry/io/preset.h"
@@ -15,6 +16,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace ui {
@@ -69,7 +71,15 @@ void Dashboard::drawControlsPanel() {
         ImGui::PushItemWidth(-ImGui::CalcTextSize("shadow_map.resolution ").x);
         if (ImGui::Button("Screenshot (F12)")) screenshotRequested_ = true;
         widgetMapRecord("screenshot");
-        help("Saves the eye, light and heatmap views and the whole dashboard as PNG");
+        help("Saves the eye, light and heatmap views and the whole dashboard as PNG, into a new numbered folder");
+        ImGui::SameLine();
+        if (ImGui::Button("Export…")) openExportDialog();
+        widgetMapRecord("export");
+        help("One view (eye A or B, light, heatmap, the dashboard) drawn offscreen at a size you choose, as PNG");
+        ImGui::SameLine();
+        if (ImGui::Button("?")) help_.toggle();
+        widgetMapRecord("help_button");
+        help("Every mouse gesture and key (F1)");
         drawSceneGroup();
         drawCameraLightGroup();
         drawLightsGroup();
@@ -100,9 +110,15 @@ void Dashboard::drawSceneGroup() {
     }
     widgetMapRecord("scene");
     help("Built-in scenes and the scene files in resources/scenes");
-    ImGui::InputText("file", &scenePath_);
+    // The path gets the panel's whole width (a path does not fit beside a label); the buttons below.
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    ImGui::InputTextWithHint("##file", "file: a built-in name, scene file or model", &scenePath_);
     widgetMapRecord("scene.file");
-    help("A built-in name, a scene file (.json) or a mesh (.obj .stl .off .ply .gltf .glb)");
+    help("A built-in name, a scene file (.json) or a mesh (.obj .stl .off .ply .gltf .glb); or drop a file on the "
+         "window");
+    if (ImGui::Button("Browse…")) openFileBrowser();
+    widgetMapRecord("scene.browse");
+    help("Choose a scene or model file (recent files at the top)");
     ImGui::SameLine();
     if (ImGui::Button("Load")) loadScene(scenePath_);
     widgetMapRecord("scene.load");
@@ -165,11 +181,21 @@ void Dashboard::resetCamera() {
     scene_.file.scene.camera = homeCamera_; // the lens too: fov, near, far
 }
 
+void Dashboard::fitCamera() {
+    geometry::scene::Camera& cam = scene_.file.scene.camera;
+    const float aspect = eyeSize_.height > 0 ? float(eyeSize_.width) / float(eyeSize_.height) : 16.f / 9.f;
+    const geometry::scene::Aabb box = fitBounds(scene_.file.scene);
+    state_.camera.fit(box, cam.fovYDeg, aspect);
+    // The far plane moves out where the framed box would cross it; near stays (the splits start there).
+    const float reach = state_.camera.distance + 0.5f * glm::length(box.hi - box.lo);
+    if (!box.empty() && std::isfinite(reach) && cam.far < reach) cam.far = 1.05f * reach;
+}
+
 void Dashboard::drawCameraLightGroup() {
     if (!ImGui::CollapsingHeader("Camera & light", ImGuiTreeNodeFlags_DefaultOpen)) return;
     geometry::scene::Camera& cam = scene_.file.scene.camera;
     ImGui::TextWrapped("Eye view: drag to orbit, shift+drag or middle-drag to pan, wheel to dolly, right-drag to "
-                       "look and WASD/QE to fly.");
+                       "look and WASD/QE to fly, double-click to fit, shift+click to pin. F1: every gesture.");
     ImGui::SliderFloat("fly speed", &state_.flySpeed, 0.1f, 1000.f, "%.3g units/s", ImGuiSliderFlags_Logarithmic);
     float nearFar[2] = {cam.near, cam.far};
     if (ImGui::InputFloat2("near, far", nearFar, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue))
@@ -204,8 +230,15 @@ void Dashboard::drawCameraLightGroup() {
 }
 
 void Dashboard::drawSettingsGroups() {
+    // A/B compare and the side being edited together, above the groups they apply to.
+    ImGui::Separator();
+    int mode = int(state_.views.compare);
+    const char* modes[] = {"off", "side by side", "split screen"};
+    if (ImGui::Combo("A/B compare", &mode, modes, 3)) state_.views.compare = CompareMode(mode);
+    widgetMapRecord("views.compare");
+    help("Two settings sets on the same camera: side by side, or one image split by a draggable divider. "
+         "The heatmap's 'difference' shows m_A / m_B");
     if (comparing()) {
-        ImGui::Separator();
         ImGui::TextUnformatted("Editing:");
         ImGui::SameLine();
         ImGui::RadioButton("A", &state_.editing, 0);
@@ -262,12 +295,6 @@ void Dashboard::drawViewsGroup() {
     help("Mix the eye image under the heatmap (0: heatmap alone)");
     ImGui::SliderInt("texel grid", &v.texelGrid, 1, 64, "every %d", ImGuiSliderFlags_AlwaysClamp);
     help("Texels heatmap: a grid line every N shadow-map texels");
-    int mode = int(v.compare);
-    const char* modes[] = {"off", "side by side", "split screen"};
-    if (ImGui::Combo("A/B compare", &mode, modes, 3)) v.compare = CompareMode(mode);
-    widgetMapRecord("views.compare");
-    help("Two settings sets on the same camera: side by side, or one image split by a draggable divider. "
-         "The heatmap's 'difference' shows m_A / m_B");
 }
 
 void Dashboard::drawPresetsGroup() {

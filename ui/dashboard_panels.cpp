@@ -2,7 +2,7 @@
 // splitters between panels; the status bar.
 //
 // Index
-//   [SECTION] Drawing helpers ................ drawImage, markPixel, panelBegin, zoomButtons, clickedWithoutDrag
+//   [SECTION] Drawing helpers ................ drawImage, markPixel, panelBegin, zoomButtons, pinClick, sideLabel
 //   [SECTION] Image areas and pixel probes ... imageArea, probeEye, probeLight, refreshPin
 //   [SECTION] View panels .................... drawEyePanel, drawLightPanel, drawHeatmapPanel
 //   [SECTION] Splitters ...................... drawSplitters
@@ -68,9 +68,21 @@ void zoomButtons(ImageView& view, const char* id) {
     ImGui::PopID();
 }
 
-/// A left click that did not drag (a drag orbits or pans): pins the pixel under the cursor.
-bool clickedWithoutDrag() {
-    return ImGui::IsMouseReleased(ImGuiMouseButton_Left) && ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 16.f;
+/// Shift and a left click that did not drag (a drag orbits or pans): pins the pixel under the
+/// cursor. A gesture of its own, so that a double-click (fit) pins nothing on the way.
+bool pinClick() {
+    const ImGuiIO& io = ImGui::GetIO();
+    return io.KeyShift && ImGui::IsMouseReleased(ImGuiMouseButton_Left) && io.MouseDragMaxDistanceSqr[0] < 16.f;
+}
+
+/// "A" or "B" in the top right corner of an image area while comparing: which side the view shows.
+void sideLabel(const Rect& area, int side) {
+    const char* text = side == 0 ? "A" : "B";
+    const ImVec2 size = ImGui::CalcTextSize(text), at(area.right() - size.x - 8.f, area.y + 5.f);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(ImVec2(at.x - 3.f, at.y - 1.f), ImVec2(at.x + size.x + 3.f, at.y + size.y + 1.f),
+                      IM_COL32(0, 0, 0, 150), 2.f);
+    dl->AddText(at, IM_COL32(255, 255, 255, 235), text);
 }
 
 } // namespace
@@ -104,7 +116,10 @@ std::optional<glm::ivec2> Dashboard::imageArea(ViewPanel panel, GLuint texture, 
                    middle = ImGui::IsMouseDown(ImGuiMouseButton_Middle);
         if (cameraControls ? left && io.KeyCtrl : left || middle) view = panBy(view, area, w, h, delta);
     }
-    if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) view = ImageView{};
+    if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+        view = ImageView{};
+        if (cameraControls) fitCamera(); // the eye view: the whole scene in view
+    }
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->AddRectFilled(ImVec2(area.x, area.y), ImVec2(area.right(), area.bottom()), IM_COL32(20, 20, 22, 255));
     drawImage(dl, texture, placeImage(view, area, w, h));
@@ -167,13 +182,15 @@ void Dashboard::drawEyePanel() {
                                : mode == CompareMode::SideBySide ? "Eye view: A | B"
                                                                  : "Eye view: A / B split");
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("Drag: orbit. Shift+drag or middle-drag: pan. Right-drag: look, with WASD/QE to fly.\n"
-                              "Wheel: dolly. Ctrl+wheel: zoom the image around the cursor, ctrl+drag: pan it.\n"
-                              "Click: pin the pixel in the inspector. Double-click: fit.");
+            ImGui::SetTooltip(
+                "Drag: orbit. Shift+drag or middle-drag: pan. Right-drag: look, with WASD/QE to fly.\n"
+                "Wheel: dolly. Ctrl+wheel: zoom the image around the cursor, ctrl+drag: pan it.\n"
+                "Shift+click: pin the pixel in the inspector. Double-click: fit the camera to the scene.\n"
+                "F1: every gesture and key.");
         zoomButtons(state_.imageViews[int(ViewPanel::Eye)], "eye");
         const ImageView& view = state_.imageViews[int(ViewPanel::Eye)];
         const geometry::shadow::Viewport size = sides_[0].size;
-        const bool clicked = clickedWithoutDrag();
+        const bool clicked = pinClick();
         if (mode == CompareMode::SideBySide && sides_[1].renderer) {
             const float half = std::floor((eyeArea_.w - 2.f) * 0.5f);
             const Rect left{eyeArea_.x, eyeArea_.y, half, eyeArea_.h};
@@ -182,8 +199,7 @@ void Dashboard::drawEyePanel() {
                 const Rect& r = i == 0 ? left : right;
                 const auto px = imageArea(ViewPanel::Eye, sides_[i].renderer->eyeTexture(), size.width, size.height, r,
                                           true, i == 0 ? "eye_image" : "eye_image_b");
-                ImGui::GetWindowDrawList()->AddText(ImVec2(r.x + 6, r.y + 4), IM_COL32(255, 255, 255, 230),
-                                                    i == 0 ? "A" : "B");
+                sideLabel(r, i);
                 if (px) {
                     hovered_ = probeEye(i, *px, ViewPanel::Eye);
                     if (clicked) pinned_ = hovered_;
@@ -240,10 +256,13 @@ void Dashboard::drawLightPanel() {
         // light's six cube faces.
         const geometry::scene::LightType type = side.plan.light.type;
         const bool several = lights().size() > 1;
+        // While comparing, the side shown (the one being edited) is named in the title and the image.
+        const char* sideName = !comparing() ? "" : shownSide() == 0 ? ", A" : ", B";
         if (several)
-            ImGui::Text("Light %zu (%s)%s", inspectedLight(), geometry::scene::lightTypeName(type),
-                        state_.views.unwarped ? " unwarped" : "");
-        else ImGui::TextUnformatted(state_.views.unwarped ? "Light view (unwarped)" : "Light view (warped)");
+            ImGui::Text("Light %zu (%s%s)%s", inspectedLight(), geometry::scene::lightTypeName(type),
+                        state_.views.unwarped ? " unwarped" : "", sideName);
+        else ImGui::Text("Light view (%s%s)", state_.views.unwarped ? "unwarped" : "warped", sideName);
+        if (comparing()) widgetMapRecord(shownSide() == 0 ? "light.side=A" : "light.side=B");
         ImGui::SameLine();
         const int splits = lightViewMaps();
         ImGui::SetNextItemWidth(std::max(60.f, ImGui::GetFontSize() * 6.f));
@@ -262,9 +281,10 @@ void Dashboard::drawLightPanel() {
                 state_.views.unwarped ? side.renderer->unwarpedLightTexture() : side.renderer->lightTexture();
             const auto px =
                 imageArea(ViewPanel::Light, tex, lightViewSize_, lightViewSize_, lightArea_, false, "light_image");
+            if (comparing()) sideLabel(lightArea_, shownSide());
             if (px) {
                 hovered_ = probeLight(*px);
-                if (clickedWithoutDrag()) pinned_ = hovered_;
+                if (pinClick()) pinned_ = hovered_;
             }
         }
     }
@@ -273,7 +293,9 @@ void Dashboard::drawLightPanel() {
 
 void Dashboard::drawHeatmapPanel() {
     if (panelBegin("heatmap_panel", rects_.heatmap)) {
-        ImGui::TextUnformatted("Heatmap");
+        const int side = shownSide();
+        ImGui::TextUnformatted(!comparing() ? "Heatmap" : side == 0 ? "Heatmap, A" : "Heatmap, B");
+        if (comparing()) widgetMapRecord(side == 0 ? "heatmap.side=A" : "heatmap.side=B");
         ImGui::SameLine();
         ImGui::SetNextItemWidth(std::max(80.f, ImGui::GetFontSize() * 8.f));
         if (ImGui::BeginCombo("##heatmap", std::string(heatmapName(state_.views.heatmap)).c_str())) {
@@ -292,7 +314,6 @@ void Dashboard::drawHeatmapPanel() {
                               "texel grid; difference: m_A / m_B (A/B compare); soft: s - v against the sun's disk "
                               "(truth with light.angular_diameter_deg > 0)");
         zoomButtons(state_.imageViews[int(ViewPanel::Heatmap)], "heatmap");
-        const int side = shownSide();
         const auto px = imageArea(ViewPanel::Heatmap, heatmap_.id(), heatmap_.width(), heatmap_.height(), heatmapArea_,
                                   false, "heatmap_image");
         const HeatmapKind kind = state_.views.heatmap;
@@ -300,6 +321,7 @@ void Dashboard::drawHeatmapPanel() {
         const bool needsSun =
             kind == HeatmapKind::Soft && !(state_.settings[size_t(side)].light.angularDiameterDeg > 0.f);
         const bool needsCompare = kind == HeatmapKind::Difference && !comparing();
+        if (comparing() && kind != HeatmapKind::Difference) sideLabel(heatmapArea_, side);
         if (needsTruth || needsSun || needsCompare)
             ImGui::GetWindowDrawList()->AddText(ImVec2(heatmapArea_.x + 8, heatmapArea_.y + 8),
                                                 IM_COL32(255, 255, 255, 255),
@@ -308,7 +330,7 @@ void Dashboard::drawHeatmapPanel() {
                                                            : "turn on A/B compare (Views)");
         if (px) {
             hovered_ = probeEye(side, *px, ViewPanel::Heatmap);
-            if (clickedWithoutDrag()) pinned_ = hovered_;
+            if (pinClick()) pinned_ = hovered_;
         }
         if (pinned_ && pinned_->panel != ViewPanel::Light)
             markPixel(ImGui::GetWindowDrawList(), state_.imageViews[int(ViewPanel::Heatmap)], heatmapArea_,
@@ -367,7 +389,8 @@ void Dashboard::drawStatusBar() {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.right(), r.bottom()), IM_COL32(32, 34, 40, 255));
     ImGui::SetCursorScreenPos(ImVec2(r.x + 6.f, r.y + std::max(0.f, (r.h - ImGui::GetTextLineHeight()) * 0.5f)));
-    std::string text = hovered_ ? describeProbe(*hovered_) : std::string("hover a view for exact values, click to pin");
+    std::string text = hovered_ ? describeProbe(*hovered_)
+                                : std::string("hover a view for exact values, shift+click to pin, F1: help");
     if (loader_.busy())
         text = "loading " + loader_.source() + ": " + loader_.stage() + " " +
                std::to_string(int(loader_.progress() * 100.f)) + "%";

@@ -52,6 +52,8 @@ struct DashboardState {
     float flySpeed = 10.f; // scene units per second in fly mode
     LayoutFractions layout;
     std::array<ImageView, static_cast<int>(ViewPanel::Count)> imageViews{};
+    /// Scene and model files opened (browser, file field, dropped), newest first (file_list.h).
+    std::vector<std::string> recentFiles;
 };
 
 } // namespace ui

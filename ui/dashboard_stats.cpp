@@ -301,7 +301,7 @@ void Dashboard::drawInspector() {
         widgetMapRecord("inspector");
         const std::optional<PixelProbe>& p = pinned_ ? pinned_ : hovered_;
         if (!p) {
-            ImGui::TextDisabled("hover a view; click to pin a pixel");
+            ImGui::TextDisabled("hover a view; Shift+click to pin a pixel");
         } else {
             ImGui::TextDisabled(pinned_ ? "pinned" : "under the cursor");
             ImGui::PushTextWrapPos(0.f);

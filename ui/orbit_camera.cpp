@@ -57,6 +57,31 @@ void OrbitCamera::fly(float forward, float right, float up) noexcept {
     target += -finiteOr(forward, 0.f) * back + finiteOr(right, 0.f) * r + finiteOr(up, 0.f) * glm::vec3(0, 1, 0);
 }
 
+void OrbitCamera::fit(const geometry::scene::Aabb& box, float fovYDeg, float aspect) noexcept {
+    if (box.empty()) return;
+    const glm::vec3 centre = (box.lo + box.hi) * 0.5f;
+    const float radius = std::max(0.5f * glm::length(box.hi - box.lo), 1e-3f);
+    const float halfY = glm::radians(std::clamp(finiteOr(fovYDeg, 60.f), 1.f, 179.f)) * 0.5f;
+    const float a = std::isfinite(aspect) && aspect > 0.f ? aspect : 1.f;
+    const float half = std::min(halfY, std::atan(std::tan(halfY) * a)); // the narrower of the two
+    if (!std::isfinite(centre.x + centre.y + centre.z + radius)) return;
+    target = centre;
+    distance = std::clamp(radius / std::sin(half), 1e-3f, 1e6f);
+}
+
+geometry::scene::Aabb fitBounds(const geometry::scene::Scene& scene) noexcept {
+    geometry::scene::Aabb solid;
+    for (const geometry::scene::Mesh& m : scene.meshes)
+        for (size_t i = 0; i < m.placementCount(); ++i) {
+            const geometry::scene::Aabb b = m.placementBounds(i);
+            if (b.empty()) continue;
+            const glm::vec3 e = b.hi - b.lo;
+            const float smallest = std::min({e.x, e.y, e.z}), largest = std::max({e.x, e.y, e.z});
+            if (smallest > 1e-3f * largest) solid.add(b);
+        }
+    return solid.empty() ? scene.bounds() : solid;
+}
+
 glm::vec3 OrbitCamera::eye() const noexcept { return target + distance * offsetDirection(yawDeg, pitchDeg); }
 
 void OrbitCamera::applyTo(geometry::scene::Camera& c) const noexcept {

@@ -1,6 +1,7 @@
 #include "widget_map.h"
 
 #include <imgui.h>
+#include <imgui_internal.h> // the last item's disabled flag (1.86 has no public query)
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -15,12 +16,16 @@ struct MapState {
     const char* path = std::getenv("SHADOWSCOPE_WIDGET_MAP");
     nlohmann::json current;
     long frame = 0;
+    bool capture = false; // in memory only (tests)
+    bool paused = false;
+    std::string last = "{}";
 };
 MapState& map() {
     static MapState s;
     return s;
 }
-bool enabled() { return map().path && *map().path; }
+bool toFile() { return map().path && *map().path; }
+bool enabled() { return (toFile() || map().capture) && !map().paused; }
 } // namespace
 
 void widgetMapBeginFrame(float width, float height) {
@@ -40,6 +45,8 @@ void widgetMapRecord(std::string_view id) {
     // Only items that are actually visible (not scrolled out of their window) can be clicked.
     if (!ImGui::IsItemVisible()) return;
     widgetMapRecordRect(id, {a.x, a.y, b.x - a.x, b.y - a.y});
+    if (GImGui->LastItemData.InFlags & ImGuiItemFlags_Disabled)
+        map().current["disabled"].push_back(std::string(id)); // greyed: the e2e tests read it
 }
 
 void widgetMapStatus(std::string_view status) {
@@ -59,6 +66,8 @@ void widgetMapEndFrame() {
     // Every frame (tests wait on the frame counter); the file is small and only written under the hook.
     nlohmann::json out = m.current;
     out["frame"] = m.frame;
+    m.last = out.dump();
+    if (!toFile()) return;
     const std::string tmp = std::string(m.path) + ".tmp";
     {
         std::ofstream f(tmp, std::ios::trunc);
@@ -66,5 +75,11 @@ void widgetMapEndFrame() {
     }
     std::rename(tmp.c_str(), m.path);
 }
+
+void widgetMapPause(bool paused) { map().paused = paused; }
+
+void widgetMapCapture(bool on) { map().capture = on; }
+
+std::string widgetMapLast() { return map().last; }
 
 } // namespace ui

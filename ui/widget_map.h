@@ -5,6 +5,7 @@
 // click them with xdotool. Without the variable every call is a no-op.
 #include "dashboard_layout.h"
 
+#include <string>
 #include <string_view>
 
 namespace ui {
@@ -17,5 +18,14 @@ void widgetMapStatus(std::string_view status);
 /// A number the tests read (e.g. how many passes the dashboard has drawn).
 void widgetMapCounter(std::string_view name, double value);
 void widgetMapEndFrame();
+
+/// While paused nothing is recorded or written (a dashboard drawn offscreen for an export).
+void widgetMapPause(bool paused);
+
+/// Keeps the map in memory without the variable (headless tests); widgetMapLast() reads it.
+void widgetMapCapture(bool on);
+/// The last finished frame's map as JSON text ("{}" before one, or when the map is off). Besides
+/// "widgets": "disabled", the ids recorded while greyed (ImGui::BeginDisabled), and "counters".
+[[nodiscard]] std::string widgetMapLast();
 
 } // namespace ui

@@ -315,11 +315,19 @@ inline const std::vector<SettingInfo>& settingsDeclaration() {
             "Store linear light depth in the maps instead of post-perspective depth (Scherzer "
             "4.2)",
             Kind::Bool, 0, 1, [](auto& s) -> auto& { return s.bias.linearZ; })
+            // moment filters and PCSS store linear depth anyway; dual_depth's cap is measured in it
+            .when("filter.type",
+                  [](const ShadowSettings& s) {
+                      return !(momentFilter(s) || s.filter.type == F::Pcss) || s.bias.type == B::DualDepth;
+                  })
             .mapSide(),
         number(
-            "bias.tangent_plane", "Filter taps compare against the receiver's tangent plane (Barroso 2.2)", Kind::Bool,
-            0, 1, [](auto& s) -> auto& { return s.bias.tangentPlane; })
-            .when("filter.type", filterIs<F::Pcf, F::Disk>),
+            "bias.tangent_plane",
+            "pcf, disk: filter taps compare against the receiver's tangent plane (Barroso 2.2; bias.type = "
+            "receiver_plane does so anyway)",
+            Kind::Bool, 0, 1, [](auto& s) -> auto& { return s.bias.tangentPlane; })
+            .when("filter.type",
+                  [](const ShadowSettings& s) { return filterIs<F::Pcf, F::Disk>(s) && !biasIs<B::ReceiverPlane>(s); }),
         choice(
             "filter.type", "Filter", [](auto& s) -> auto& { return s.filter.type; })
             // the moments pass writes what a moment filter reads; PCSS's maps hold linear depth

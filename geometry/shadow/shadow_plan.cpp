@@ -364,7 +364,10 @@ std::array<glm::vec3, 8> focusSplit(const SplitContext& k, const std::vector<dou
 void frameSplit(const SplitContext& k, const std::vector<double>& c, int i,
                 const std::array<glm::vec3, 8>& focusFrustum, SplitPlan& split) {
     const ShadowSettings& settings = k.settings;
-    dvec3 vp = warpDirection(settings.direction, k.l, k.v, k.eye, split.body);
+    // warp.direction orients warped maps only (its row's `when`): an unwarped map keeps V_P.
+    const WarpDirection direction =
+        settingMatters(settings, "warp.direction") ? settings.direction : ShadowSettings{}.direction;
+    dvec3 vp = warpDirection(direction, k.l, k.v, k.eye, split.body);
     const bool degenerate = glm::length(vp) == 0.0;
     if (degenerate) vp = perpendicular(k.l); // light ∥ view: any orientation, and no warp
     // d for the n' formulas is B's extent along V_P (LiSPSM); compute it before choosing n'.
@@ -432,9 +435,16 @@ void finishPlan(const ShadowSettings& settings, ShadowPlan& plan) {
 }
 
 /// How far lookups reach past the sample they are for (filter taps, normal offset), in texels: a
-/// margin of that many texels keeps them on the map.
+/// margin of that many texels keeps them on the map. A value that does not apply (a disk radius
+/// under pcf) counts at its default, so that changing it moves no map (its row's `when`).
 double lookupReachTexels(const ShadowSettings& settings) noexcept {
-    return settings.filter.kernel / 2 + settings.filter.radius + settings.bias.normalOffset + 2.0;
+    static const ShadowSettings defaults{};
+    const auto used = [&](std::string_view key, auto member) {
+        return double(settingMatters(settings, key) ? member(settings) : member(defaults));
+    };
+    return int(used("filter.kernel", [](const ShadowSettings& s) { return s.filter.kernel; })) / 2 +
+           used("filter.radius", [](const ShadowSettings& s) { return s.filter.radius; }) +
+           used("bias.normal_offset", [](const ShadowSettings& s) { return s.bias.normalOffset; }) + 2.0;
 }
 
 /// A spot or point light's plan (docs/design.md §3.10): its maps, what it does not apply, and the
