@@ -7,6 +7,7 @@
 #include "ui/dashboard.h"
 #include "ui/dashboard_config.h"
 #include "ui/dashboard_layout.h"
+#include "ui/header_fit.h"
 #include "ui/image_view.h"
 #include "ui/light_gizmo.h"
 #include "ui/light_list.h"
@@ -279,6 +280,33 @@ TEST(Progressive, FullFrameFitsTheResponseBudget) {
     EXPECT_TRUE(ui::fullFrameFits(70.0, 2, 150.0));
     EXPECT_FALSE(ui::fullFrameFits(80.0, 2, 150.0)); // A/B: both sides count
     EXPECT_FALSE(ui::fullFrameFits(151.0, 1, 150.0));
+}
+
+TEST(HeaderFit, ShrinksTheWidgetThenDropsTheZoomTextThenShortensTheTitle) {
+    // Light view's row at 1280×720, roughly: title 150, slider 40–90, Fit + 1:1 70, "100%" 35, spacing 8.
+    const ui::HeaderItems h{150.f, 60.f, 90.f, 40.f, 70.f, 35.f, 8.f};
+    const float full = 150 + 8 + 90 + 8 + 70 + 8 + 35;
+    ui::HeaderFit f = ui::fitHeader(h, full);
+    EXPECT_TRUE(f.fits && !f.shortTitle && f.zoomText);
+    EXPECT_EQ(f.widget, 90.f);
+    f = ui::fitHeader(h, full - 30.f); // the slider gives way first
+    EXPECT_TRUE(f.fits && !f.shortTitle && f.zoomText);
+    EXPECT_EQ(f.widget, 60.f);
+    f = ui::fitHeader(h, full - 60.f); // below the slider's minimum: the zoom text goes
+    EXPECT_TRUE(f.fits && !f.shortTitle && !f.zoomText);
+    EXPECT_EQ(f.widget, 73.f);
+    f = ui::fitHeader(h, 200.f); // then the short title
+    EXPECT_TRUE(f.fits && f.shortTitle && !f.zoomText);
+    EXPECT_EQ(f.widget, 54.f);
+    f = ui::fitHeader(h, 100.f); // nothing fits: the most compact row, reported
+    EXPECT_FALSE(f.fits);
+    EXPECT_TRUE(f.shortTitle && !f.zoomText);
+    EXPECT_EQ(f.widget, 40.f);
+    EXPECT_FALSE(ui::fitHeader(h, NAN).fits);
+    const ui::HeaderItems eye{70.f, 30.f, 0.f, 0.f, 70.f, 35.f, 8.f}; // no widget, no spacing for it
+    f = ui::fitHeader(eye, 70 + 8 + 70 + 8 + 35);
+    EXPECT_TRUE(f.fits && f.zoomText && !f.shortTitle);
+    EXPECT_EQ(f.widget, 0.f);
 }
 
 TEST(Progressive, CoarseDivisorFitsTheBudget) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -254,6 +255,32 @@ TEST(Legend, ScalesWithImageHeight) {
     EXPECT_EQ(large.width, 2 * small.width);
     EXPECT_EQ(large.height, 2 * small.height);
     EXPECT_EQ(large.y + large.height, 1080 - 2 * (480 - small.y - small.height));
+}
+
+// Issue 32: the truth classes' longest label was cut at the edge of a 480-pixel-wide heatmap.png.
+// The legend picks the smaller text and wraps its labels so that the box fits the image.
+TEST(Legend, ALongLegendWrapsToFitTheImageWidth) {
+    using C = TruthClass;
+    const std::vector<C> classes{
+        C::InteriorFalseShadow, C::InteriorFalseLit, C::EdgeError, C::Ambiguous, C::Agrees, C::Agrees, C::NotCounted};
+    const Legend legend = truthClassLegend(classes, std::vector<float>{0.f, 1.f, 1.f, 1.f, 1.f, 0.f, 1.f},
+                                           std::vector<uint8_t>{1, 1, 1, 1, 1, 1, 0});
+    ASSERT_NE(std::find_if(legend.entries.begin(), legend.entries.end(),
+                           [](const LegendEntry& e) { return e.label.find("singular J") != std::string::npos; }),
+              legend.entries.end());
+    for (const auto& [w, h] : {std::pair{480, 595}, std::pair{480, 700}, std::pair{300, 400}, std::pair{1920, 1080}}) {
+        const PixelRect r = legendRect(w, h, legend);
+        EXPECT_GE(r.x, 0) << w << "x" << h;
+        EXPECT_LE(r.x + r.width, w) << w << "x" << h << ": the legend is cut at the right edge";
+        EXPECT_GE(r.y, 0) << w << "x" << h;
+    }
+    // Wrapping adds lines: narrower images give taller boxes at the same text size.
+    EXPECT_GT(legendRect(300, 400, legend).height, legendRect(640, 400, legend).height);
+    // Every label's text is drawn: light pixels reach the box's right part when the labels wrap.
+    Image img = filled(300, 400, 0);
+    drawLegend(img, legend);
+    const PixelRect r = legendRect(img.width, img.height, legend);
+    EXPECT_GT(countIn(img, {r.x + r.width / 2, r.y, r.width / 2, r.height}, light), 20);
 }
 
 TEST(Legend, ClipsOnTinyImages) {

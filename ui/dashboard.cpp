@@ -215,7 +215,7 @@ std::vector<std::string> Dashboard::saveScreenshots(const geometry::analysis::Im
         save("eye.png", eyeImage(0));
         if (comparing()) save("eye_b.png", eyeImage(1));
         save("light.png", lightImage());
-        save("heatmap.png", heatmapImage_);
+        save("heatmap.png", geometry::analysis::withLegend(heatmapImage_, heatmapLegend_));
         save("dashboard.png", dashboard);
         std::string list;
         for (const auto& p : written) list += (list.empty() ? "" : ", ") + std::filesystem::path(p).filename().string();

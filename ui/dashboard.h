@@ -19,6 +19,7 @@
 #include "dashboard_state.h"
 #include "export_dialog.h"
 #include "file_browser.h"
+#include "geometry/analysis/heatmap.h"
 #include "geometry/analysis/tuner.h"
 #include "help_overlay.h"
 #include "pass_inputs.h"
@@ -327,6 +328,7 @@ private:
     std::array<Side, 2> sides_;
     renderer::Texture2D heatmap_;
     geometry::analysis::Image heatmapImage_;
+    geometry::analysis::Legend heatmapLegend_; // drawn over the panel in the UI font (heatmap_legend.h)
     std::optional<HeatmapInputs> heatmapShown_;
     PassCounts counts_;
     geometry::shadow::Viewport eyeSize_{0, 0}; // this frame's full-resolution eye view size

@@ -5,6 +5,7 @@
 #include "dashboard.h"
 
 #include "geometry/io/preset.h"
+#include "text_fit.h"
 #include "ui/chart_image.h"
 #include "ui/charts/analytic_charts.h"
 #include "ui/charts/chart_imgui.h"
@@ -35,10 +36,13 @@ charts::CurveParams curveParams(const geometry::scene::Camera& cam, const geomet
     return p;
 }
 
-/// The chart area below a row of export buttons; returns the mouse position when hovered.
-Rect chartArea(const char* id, const float** mouse, float* mouseStorage) {
+/// The chart area below a row of export buttons, at least tall enough for a plot of
+/// charts::kMinPlotHeight (the panel scrolls instead); returns the mouse position when hovered.
+Rect chartArea(const char* id, float scale, const float** mouse, float* mouseStorage) {
     const ImVec2 pos = ImGui::GetCursorScreenPos(), avail = ImGui::GetContentRegionAvail();
-    const Rect area{pos.x, pos.y, std::max(avail.x, 1.f), std::max(avail.y, 1.f)};
+    // Compact frames below 360 px × scale (chart_imgui.cpp): the minimum is a compact frame's.
+    const float minHeight = float(charts::chartHeightForPlot(charts::kMinPlotHeight * scale, true, scale));
+    const Rect area{pos.x, pos.y, std::max(avail.x, 1.f), std::max(avail.y, minHeight)};
     ImGui::InvisibleButton(id, ImVec2(area.w, area.h));
     widgetMapRecord(id);
     *mouse = nullptr;
@@ -48,6 +52,18 @@ Rect chartArea(const char* id, const float** mouse, float* mouseStorage) {
         *mouse = mouseStorage;
     }
     return area;
+}
+
+/// Draws the chart and records its texts and plot height for the legibility check (text_fit.h).
+void drawRecordedChart(const charts::Chart& chart, const Rect& area, float scale, const float* mouse, const char* id) {
+    const charts::DrawnChart drawn =
+        charts::drawChart(ImGui::GetWindowDrawList(), chart, {area.x, area.y, area.w, area.h, scale}, mouse);
+    if (!textFitEnabled() || !drawn.drawn) return;
+    for (const charts::ChartTextFit& t : drawn.texts)
+        textFitRecord(std::string("chart:") + id + ":" + t.what, t.text, float(t.width), float(t.box));
+    // The plot's height against the minimum, as a "text" so one check covers both.
+    textFitRecord(std::string("chart:") + id + ":plot height", "", float(charts::kMinPlotHeight * scale),
+                  float(drawn.frame.bottom - drawn.frame.top));
 }
 
 } // namespace
@@ -81,16 +97,18 @@ void Dashboard::drawAnalyticChart(int which) {
     bool save = ImGui::SmallButton("Export SVG + PNG");
     widgetMapRecord(std::string("export.") + name);
     ImGui::SameLine();
+    ImGui::PushTextWrapPos(0.f); // wraps rather than running past the panel's edge
     ImGui::TextDisabled("%s — n %.3g, f %.4g, fov %.0f°, γ %.1f°, %d px / %d texels; hover for values; drag the bar "
                         "above to enlarge",
                         which == 0   ? "n'(γ) per warp"
                         : which == 1 ? "λ(θ) per warp"
                                      : "m_z(z) per warp",
                         p.near, p.far, p.fovYDeg, p.gammaDeg, p.screenRes, p.mapRes);
+    ImGui::PopTextWrapPos();
     float storage[2];
     const float* mouse = nullptr;
-    const Rect area = chartArea("chart_area", &mouse, storage);
-    charts::drawChart(ImGui::GetWindowDrawList(), chart, {area.x, area.y, area.w, area.h}, mouse);
+    const Rect area = chartArea("chart_area", options_.uiScale, &mouse, storage);
+    drawRecordedChart(chart, area, options_.uiScale, mouse, name);
     if (save) exportChart(chart, name);
 }
 
@@ -141,8 +159,8 @@ void Dashboard::drawTradeoffTab() {
     drawRecommendControls();
     float storage[2];
     const float* mouse = nullptr;
-    const Rect area = chartArea("tradeoff_area", &mouse, storage);
-    charts::drawChart(ImGui::GetWindowDrawList(), chart, {area.x, area.y, area.w, area.h}, mouse);
+    const Rect area = chartArea("tradeoff_area", options_.uiScale, &mouse, storage);
+    drawRecordedChart(chart, area, options_.uiScale, mouse, tune ? "tune" : "tradeoff");
 }
 
 std::vector<charts::TradeoffPoint> Dashboard::tradeoffResults() const { return sweep_.points(); }

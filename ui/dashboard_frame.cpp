@@ -304,18 +304,21 @@ void Dashboard::updateHeatmap() {
     heatmapShown_ = in;
     const Side& side = sides_[s];
     geometry::analysis::Image img;
+    geometry::analysis::Legend legend; // the panel draws it in the UI font; files bake it in
     try {
         if (!side.inspection) {
             img = placeholder(side.size.width, side.size.height);
         } else {
             const geometry::analysis::Inspection& in = *side.inspection;
             switch (v.heatmap) {
-            case HeatmapKind::Aliasing: img = geometry::analysis::aliasingView(in, side.eye, v.heatmapBlend); break;
+            case HeatmapKind::Aliasing:
+                img = geometry::analysis::aliasingView(in, side.eye, v.heatmapBlend, &legend);
+                break;
             case HeatmapKind::Truth:
-                img = in.occluded ? geometry::analysis::truthView(in, side.eye, v.heatmapBlend)
+                img = in.occluded ? geometry::analysis::truthView(in, side.eye, v.heatmapBlend, &legend)
                                   : placeholder(in.width, in.height);
                 break;
-            case HeatmapKind::Splits: img = geometry::analysis::splitsView(side.eye, in, side.plan); break;
+            case HeatmapKind::Splits: img = geometry::analysis::splitsView(side.eye, in, side.plan, &legend); break;
             case HeatmapKind::Texels:
                 img = geometry::analysis::texelsView(side.eye, in, std::max(1, v.texelGrid));
                 break;
@@ -323,11 +326,11 @@ void Dashboard::updateHeatmap() {
                 img = comparing() && sides_[0].inspection && sides_[1].inspection &&
                               sides_[0].inspection->width == sides_[1].inspection->width &&
                               sides_[0].inspection->height == sides_[1].inspection->height
-                          ? geometry::analysis::differenceView(*sides_[0].inspection, *sides_[1].inspection)
+                          ? geometry::analysis::differenceView(*sides_[0].inspection, *sides_[1].inspection, &legend)
                           : placeholder(in.width, in.height);
                 break;
             case HeatmapKind::Soft:
-                img = in.softTruth ? geometry::analysis::softView(in, side.eye, v.heatmapBlend)
+                img = in.softTruth ? geometry::analysis::softView(in, side.eye, v.heatmapBlend, &legend)
                                    : placeholder(in.width, in.height);
                 break;
             case HeatmapKind::Count: img = placeholder(in.width, in.height); break;
@@ -338,6 +341,7 @@ void Dashboard::updateHeatmap() {
         img = placeholder(side.size.width, side.size.height);
     }
     heatmapImage_ = std::move(img);
+    heatmapLegend_ = std::move(legend);
     heatmap_.upload(heatmapImage_);
 }
 

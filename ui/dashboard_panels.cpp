@@ -2,13 +2,17 @@
 // splitters between panels; the status bar.
 //
 // Index
-//   [SECTION] Drawing helpers ................ drawImage, markPixel, panelBegin, zoomButtons, pinClick, sideLabel
+//   [SECTION] Drawing helpers ................ drawImage, markPixel, panelBegin, header rows (header_fit.h),
+//                                              zoomButtons, pinClick, sideLabel
 //   [SECTION] Image areas and pixel probes ... imageArea, probeEye, probeLight, refreshPin
 //   [SECTION] View panels .................... drawEyePanel, drawLightPanel, drawHeatmapPanel
 //   [SECTION] Splitters ...................... drawSplitters
 //   [SECTION] Status bar ..................... describeProbe, drawStatusBar
 #include "dashboard.h"
 
+#include "header_fit.h"
+#include "heatmap_legend.h"
+#include "text_fit.h"
 #include "widget_map.h"
 
 #include <imgui.h>
@@ -54,17 +58,60 @@ bool panelBegin(const char* id, const Rect& r) {
                              ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
 }
 
-void zoomButtons(ImageView& view, const char* id) {
+/// Records the last item's extent against the room left on its row (text_fit.h): a header that
+/// does not fit its panel shows in the legibility test.
+void recordHeaderItem(const std::string& id, const std::string& text) {
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    textFitRecord("header:" + id, text, ImGui::GetItemRectSize().x, right - ImGui::GetItemRectMin().x);
+}
+
+/// The zoom of an image as its header shows it.
+std::string zoomText(const ImageView& view) {
+    if (!(view.zoom > 0.f)) return "fit";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f%%", double(view.zoom) * 100.0);
+    return text;
+}
+
+/// A header row's pieces at the current font (header_fit.h); the widget's widths are the caller's.
+HeaderItems headerItems(const std::string& title, const std::string& shortTitle, const ImageView& view,
+                        float widgetPreferred = 0.f, float widgetMin = 0.f) {
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const auto button = [&](const char* t) { return ImGui::CalcTextSize(t).x + 2.f * st.FramePadding.x; };
+    HeaderItems h;
+    h.title = ImGui::CalcTextSize(title.c_str()).x;
+    h.shortTitle = ImGui::CalcTextSize(shortTitle.c_str()).x;
+    h.widgetPreferred = widgetPreferred;
+    h.widgetMin = widgetMin;
+    h.zoomButtons = button("Fit") + st.ItemSpacing.x + button("1:1");
+    h.zoomText = ImGui::CalcTextSize(zoomText(view).c_str()).x;
+    h.spacing = st.ItemSpacing.x;
+    return h;
+}
+
+/// The title a fitted header shows, drawn and recorded.
+void headerTitle(const char* id, const std::string& title, const std::string& shortTitle, const HeaderFit& fit) {
+    const std::string& text = fit.shortTitle ? shortTitle : title;
+    ImGui::TextUnformatted(text.c_str());
+    recordHeaderItem(std::string(id) + ".title", text);
+}
+
+void zoomButtons(ImageView& view, const char* id, bool showZoomText = true) {
     ImGui::PushID(id);
     ImGui::SameLine();
     if (ImGui::SmallButton("Fit")) view = ImageView{};
     widgetMapRecord(std::string(id) + ".fit");
+    recordHeaderItem(std::string(id) + ".fit", "Fit");
     ImGui::SameLine();
     if (ImGui::SmallButton("1:1")) view = oneToOne(view);
     widgetMapRecord(std::string(id) + ".one_to_one");
-    ImGui::SameLine();
-    if (view.zoom > 0.f) ImGui::TextDisabled("%.0f%%", view.zoom * 100.f);
-    else ImGui::TextDisabled("fit");
+    recordHeaderItem(std::string(id) + ".one_to_one", "1:1");
+    if (showZoomText) {
+        const std::string text = zoomText(view);
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", text.c_str());
+        recordHeaderItem(std::string(id) + ".zoom", text);
+    }
     ImGui::PopID();
 }
 
@@ -178,17 +225,21 @@ void Dashboard::refreshPin() {
 void Dashboard::drawEyePanel() {
     if (panelBegin("eye_panel", rects_.eye)) {
         const CompareMode mode = state_.views.compare;
-        ImGui::TextUnformatted(mode == CompareMode::Off          ? "Eye view"
-                               : mode == CompareMode::SideBySide ? "Eye view: A | B"
-                                                                 : "Eye view: A / B split");
+        const std::string title = mode == CompareMode::Off          ? "Eye view"
+                                  : mode == CompareMode::SideBySide ? "Eye view: A | B"
+                                                                    : "Eye view: A / B split";
+        const std::string shortTitle = mode == CompareMode::Off ? "Eye" : "Eye A|B";
+        ImageView& eyeView = state_.imageViews[int(ViewPanel::Eye)];
+        const HeaderFit fit = fitHeader(headerItems(title, shortTitle, eyeView), ImGui::GetContentRegionAvail().x);
+        headerTitle("eye", title, shortTitle, fit);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "Drag: orbit. Shift+drag or middle-drag: pan. Right-drag: look, with WASD/QE to fly.\n"
                 "Wheel: dolly. Ctrl+wheel: zoom the image around the cursor, ctrl+drag: pan it.\n"
                 "Shift+click: pin the pixel in the inspector. Double-click: fit the camera to the scene.\n"
                 "F1: every gesture and key.");
-        zoomButtons(state_.imageViews[int(ViewPanel::Eye)], "eye");
-        const ImageView& view = state_.imageViews[int(ViewPanel::Eye)];
+        zoomButtons(eyeView, "eye", fit.zoomText);
+        const ImageView& view = eyeView;
         const geometry::shadow::Viewport size = sides_[0].size;
         const bool clicked = pinClick();
         if (mode == CompareMode::SideBySide && sides_[1].renderer) {
@@ -257,25 +308,33 @@ void Dashboard::drawLightPanel() {
         const geometry::scene::LightType type = side.plan.light.type;
         const bool several = lights().size() > 1;
         // While comparing, the side shown (the one being edited) is named in the title and the image.
-        const char* sideName = !comparing() ? "" : shownSide() == 0 ? ", A" : ", B";
-        if (several)
-            ImGui::Text("Light %zu (%s%s)%s", inspectedLight(), geometry::scene::lightTypeName(type),
-                        state_.views.unwarped ? " unwarped" : "", sideName);
-        else ImGui::Text("Light view (%s%s)", state_.views.unwarped ? "unwarped" : "warped", sideName);
+        const std::string sideName = !comparing() ? "" : shownSide() == 0 ? ", A" : ", B";
+        const std::string title =
+            several ? "Light " + std::to_string(inspectedLight()) + " (" +
+                          std::string(geometry::scene::lightTypeName(type)) +
+                          (state_.views.unwarped ? " unwarped" : "") + ")" + sideName
+                    : std::string("Light view (") + (state_.views.unwarped ? "unwarped" : "warped") + sideName + ")";
+        const std::string shortTitle = "Light" + (several ? " " + std::to_string(inspectedLight()) : "") + sideName;
+        ImageView& lightView = state_.imageViews[int(ViewPanel::Light)];
+        const float em = ImGui::GetFontSize();
+        const HeaderFit fit = fitHeader(headerItems(title, shortTitle, lightView, std::max(60.f, em * 6.f), em * 3.5f),
+                                        ImGui::GetContentRegionAvail().x);
+        headerTitle("light", title, shortTitle, fit);
         if (comparing()) widgetMapRecord(shownSide() == 0 ? "light.side=A" : "light.side=B");
         ImGui::SameLine();
         const int splits = lightViewMaps();
-        ImGui::SetNextItemWidth(std::max(60.f, ImGui::GetFontSize() * 6.f));
+        ImGui::SetNextItemWidth(fit.widget);
         int split = std::clamp(state_.views.lightSplit, 0, splits - 1);
         const char* format = type == geometry::scene::LightType::Point  ? "face %d"
                              : type == geometry::scene::LightType::Spot ? "map %d"
                                                                         : "split %d";
         if (ImGui::SliderInt("##split", &split, 0, splits - 1, format)) state_.views.lightSplit = split;
         widgetMapRecord("views.light_split");
+        recordHeaderItem("light.split", "split slider");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Which of the inspected light's maps the light view shows: a split, a spot light's map, "
                               "or a point light's cube face (+X, −X, +Y, −Y, +Z, −Z)");
-        zoomButtons(state_.imageViews[int(ViewPanel::Light)], "light");
+        zoomButtons(lightView, "light", fit.zoomText);
         if (side.renderer) {
             const GLuint tex =
                 state_.views.unwarped ? side.renderer->unwarpedLightTexture() : side.renderer->lightTexture();
@@ -294,10 +353,21 @@ void Dashboard::drawLightPanel() {
 void Dashboard::drawHeatmapPanel() {
     if (panelBegin("heatmap_panel", rects_.heatmap)) {
         const int side = shownSide();
-        ImGui::TextUnformatted(!comparing() ? "Heatmap" : side == 0 ? "Heatmap, A" : "Heatmap, B");
+        const std::string title = !comparing() ? "Heatmap" : side == 0 ? "Heatmap, A" : "Heatmap, B";
+        const std::string shortTitle = !comparing() ? "Heat" : side == 0 ? "Heat, A" : "Heat, B";
+        ImageView& heatView = state_.imageViews[int(ViewPanel::Heatmap)];
+        // The combo keeps room for its longest name and the arrow.
+        float longest = 0.f;
+        for (int i = 0; i < int(HeatmapKind::Count); ++i)
+            longest = std::max(longest, ImGui::CalcTextSize(std::string(heatmapName(HeatmapKind(i))).c_str()).x);
+        const float comboMin = longest + ImGui::GetFrameHeight() + 2.f * ImGui::GetStyle().FramePadding.x;
+        const HeaderFit fit = fitHeader(
+            headerItems(title, shortTitle, heatView, std::max(comboMin, ImGui::GetFontSize() * 8.f), comboMin),
+            ImGui::GetContentRegionAvail().x);
+        headerTitle("heatmap", title, shortTitle, fit);
         if (comparing()) widgetMapRecord(side == 0 ? "heatmap.side=A" : "heatmap.side=B");
         ImGui::SameLine();
-        ImGui::SetNextItemWidth(std::max(80.f, ImGui::GetFontSize() * 8.f));
+        ImGui::SetNextItemWidth(fit.widget);
         if (ImGui::BeginCombo("##heatmap", std::string(heatmapName(state_.views.heatmap)).c_str())) {
             for (int i = 0; i < int(HeatmapKind::Count); ++i) {
                 const std::string name(heatmapName(HeatmapKind(i)));
@@ -308,14 +378,16 @@ void Dashboard::drawHeatmapPanel() {
             ImGui::EndCombo();
         }
         widgetMapRecord("views.heatmap");
+        recordHeaderItem("heatmap.kind", std::string(heatmapName(state_.views.heatmap)));
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("aliasing: log2 m; truth: interior false shadow red, false lit blue, edge errors amber, "
                               "ambiguous teal; splits; texels: the map's "
                               "texel grid; difference: m_A / m_B (A/B compare); soft: s - v against the sun's disk "
                               "(truth with light.angular_diameter_deg > 0)");
-        zoomButtons(state_.imageViews[int(ViewPanel::Heatmap)], "heatmap");
+        zoomButtons(heatView, "heatmap", fit.zoomText);
         const auto px = imageArea(ViewPanel::Heatmap, heatmap_.id(), heatmap_.width(), heatmap_.height(), heatmapArea_,
                                   false, "heatmap_image");
+        drawHeatmapLegend(heatmapLegend_, heatmapArea_);
         const HeatmapKind kind = state_.views.heatmap;
         const bool needsTruth = (kind == HeatmapKind::Truth || kind == HeatmapKind::Soft) && !state_.views.truth;
         const bool needsSun =

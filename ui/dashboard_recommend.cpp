@@ -78,7 +78,11 @@ void Dashboard::drawRecommendControls() {
         ImGui::Checkbox("tune chart", &r.showChart);
         widgetMapRecord("recommend.chart");
     }
-    if (!r.summary().empty()) ImGui::TextUnformatted(r.summary().c_str());
+    if (!r.summary().empty()) { // wrapped: a long summary must not run past the panel's edge
+        ImGui::PushTextWrapPos(0.f);
+        ImGui::TextUnformatted(r.summary().c_str());
+        ImGui::PopTextWrapPos();
+    }
 }
 
 } // namespace ui

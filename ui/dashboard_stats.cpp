@@ -6,11 +6,13 @@
 //   drawStatsTable · drawInspector
 #include "dashboard.h"
 
+#include "text_fit.h"
 #include "widget_map.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -272,21 +274,48 @@ void Dashboard::drawStatsTable() {
     const int sides = comparing() ? 2 : 1;
     const float inspectorW = std::min(ImGui::GetContentRegionAvail().x * 0.38f, 30.f * ImGui::GetFontSize());
     ImGui::BeginChild("stats_table", ImVec2(ImGui::GetContentRegionAvail().x - inspectorW, 0), false);
+    // Column widths from the text (issue 32: cells were cut, "[97.9", "14 ins"): the names' column as
+    // wide as its widest name (at most 45 % of the table), the value columns share the rest in
+    // proportion to their widest values; a value still too wide wraps in its cell instead of being cut.
+    const std::vector<StatRow> rows = statRows(sides);
+    std::vector<std::array<std::string, 2>> values(rows.size());
+    float widestName = ImGui::CalcTextSize("value").x;
+    std::array<float, 2> widestValue{ImGui::GetFontSize(), ImGui::GetFontSize()};
+    for (size_t k = 0; k < rows.size(); ++k) {
+        widestName = std::max(widestName, ImGui::CalcTextSize(rows[k].name).x);
+        for (int i = 0; i < sides; ++i) {
+            values[k][size_t(i)] = rows[k].value(i);
+            widestValue[size_t(i)] =
+                std::max(widestValue[size_t(i)], ImGui::CalcTextSize(values[k][size_t(i)].c_str()).x);
+        }
+    }
+    const float avail = ImGui::GetContentRegionAvail().x;
+    const float cellPad = 2.f * ImGui::GetStyle().CellPadding.x + 1.f;
+    const float nameW = std::min(widestName, 0.45f * avail - cellPad);
     const ImGuiTableFlags flags =
         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
     if (ImGui::BeginTable("stats_table", 1 + sides, flags)) {
-        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch, 1.4f);
-        ImGui::TableSetupColumn(sides == 2 ? "A" : "value", ImGuiTableColumnFlags_WidthStretch, 1.f);
-        if (sides == 2) ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_WidthStretch, 1.f);
+        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, std::max(nameW, 1.f));
+        ImGui::TableSetupColumn(sides == 2 ? "A" : "value", ImGuiTableColumnFlags_WidthStretch, widestValue[0]);
+        if (sides == 2) ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_WidthStretch, widestValue[1]);
         ImGui::TableHeadersRow();
-        for (const StatRow& r : statRows(sides)) {
+        // Wrapped at the cell's right edge; the record compares the widest wrapped line with the cell.
+        const auto cell = [](const std::string& id, const char* text) {
+            const float box = ImGui::GetContentRegionAvail().x;
+            ImGui::PushTextWrapPos(0.f);
+            ImGui::TextUnformatted(text);
+            ImGui::PopTextWrapPos();
+            textFitRecord(id, text, ImGui::CalcTextSize(text, nullptr, false, std::max(box, 1.f)).x, box);
+        };
+        for (size_t k = 0; k < rows.size(); ++k) {
+            const StatRow& r = rows[k];
             ImGui::TableNextRow();
             ImGui::TableSetColumnIndex(0);
-            ImGui::TextUnformatted(r.name);
+            cell(std::string("stats:") + r.name, r.name);
             if (r.tip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.tip);
             for (int i = 0; i < sides; ++i) {
                 ImGui::TableSetColumnIndex(1 + i);
-                ImGui::TextUnformatted(r.value(i).c_str());
+                cell(std::string("stats:") + r.name + (i == 0 ? "/A" : "/B"), values[k][size_t(i)].c_str());
             }
         }
         ImGui::EndTable();

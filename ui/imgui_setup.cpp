@@ -64,6 +64,8 @@ void ImGuiScope::applyStyleAndFonts() {
     style.ChildRounding = 0.f;
     style.FrameRounding = 2.f;
     style.Colors[ImGuiCol_WindowBg].w = 1.f; // opaque: the window's clear colour never shows through
+    // Translucent slider grabs: every slider draws its value over the grab, which must not hide it.
+    style.Colors[ImGuiCol_SliderGrab].w = style.Colors[ImGuiCol_SliderGrabActive].w = 0.45f;
     style.ScaleAllSizes(scale_);
     ImGui::GetStyle() = style;
 

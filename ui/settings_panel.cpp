@@ -1,5 +1,6 @@
 #include "settings_panel.h"
 
+#include "text_fit.h"
 #include "widget_map.h"
 
 #include <imgui.h>
@@ -26,8 +27,15 @@ bool numberSlider(const geometry::shadow::SettingInfo& info, const std::string& 
     T v = static_cast<T>(value);
     const T lo = static_cast<T>(info.min), hi = static_cast<T>(info.max);
     const ImGuiSliderFlags flags = info.logScale ? ImGuiSliderFlags_Logarithmic : 0;
+    const char* format = isInt ? "%d" : "%.4g";
+    const float frameW = ImGui::CalcItemWidth();
+    // (The style's slider grab is translucent, so the value drawn over it stays readable: imgui_setup.cpp.)
     const bool edited = ImGui::SliderScalar(label.c_str(), isInt ? ImGuiDataType_S32 : ImGuiDataType_Float, &v, &lo,
-                                            &hi, isInt ? "%d" : "%.4g", flags);
+                                            &hi, format, flags);
+    char text[32];
+    if constexpr (isInt) std::snprintf(text, sizeof text, format, v);
+    else std::snprintf(text, sizeof text, format, double(v));
+    textFitRecordText("settings value:" + std::string(info.key), text, frameW - 2.f * ImGui::GetStyle().FramePadding.x);
     value = v;
     return edited;
 }
@@ -45,10 +53,12 @@ bool valueWidget(const geometry::shadow::SettingInfo& info, const std::string& l
     case Kind::Choice: {
         int index = static_cast<int>(value);
         const int shown = std::clamp(index, 0, int(info.choices.size()) - 1);
+        textFitRecordText("settings value:" + std::string(info.key), info.choices[shown],
+                          ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2.f * ImGui::GetStyle().FramePadding.x);
         if (ImGui::BeginCombo(label.c_str(), std::string(info.choices[shown]).c_str())) {
             for (int i = 0; i < int(info.choices.size()); ++i) {
                 if (ImGui::Selectable(std::string(info.choices[i]).c_str(), i == index)) index = i, edited = true;
-                widgetMapRecord(label + "=" + std::string(info.choices[i]));
+                widgetMapRecord(std::string(info.key) + "=" + std::string(info.choices[i]));
             }
             ImGui::EndCombo();
         }
@@ -99,11 +109,54 @@ void rowTooltip(const geometry::shadow::SettingInfo& info, const geometry::shado
                       inert.c_str());
 }
 
+/// Where the rows' keys go: beside the widgets when the panel leaves each widget a minimum width
+/// next to the group's widest key, else on their own line above full-width widgets. Sized from the
+/// text at the current font and scale (issue 32: keys were cut at the panel's edge).
+struct RowLayout {
+    bool inlineLabels = true;
+    float itemWidth = 0, labelBox = 0;
+};
+
+RowLayout rowLayout(bool (*inGroup)(std::string_view, const void*), const void* ctx) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float widest = 0, widestChoice = 0;
+    for (const auto& info : geometry::shadow::settingsDeclaration()) {
+        if (inGroup && !inGroup(info.key, ctx)) continue;
+        widest = std::max(widest, ImGui::CalcTextSize(info.key.data(), info.key.data() + info.key.size()).x);
+        for (const std::string_view c : info.choices)
+            widestChoice = std::max(widestChoice, ImGui::CalcTextSize(c.data(), c.data() + c.size()).x);
+    }
+    // Wide enough for any choice name and for a slider whose grab leaves its value readable.
+    const float minWidget =
+        std::max(8.f * ImGui::GetFontSize(), widestChoice + ImGui::GetFrameHeight() + 2.f * style.FramePadding.x);
+    const float avail = ImGui::GetContentRegionAvail().x;
+    const float beside = avail - widest - style.ItemInnerSpacing.x;
+    if (beside >= minWidget) return {true, beside, widest};
+    return {false, avail, avail};
+}
+
+/// Draws the key above the widget when the layout says so; sets the widget's width; returns the
+/// widget's ImGui label.
+std::string rowLabel(const std::string& key, const RowLayout& layout) {
+    const float box = layout.inlineLabels
+                          ? ImGui::GetContentRegionAvail().x - layout.itemWidth - ImGui::GetStyle().ItemInnerSpacing.x
+                          : ImGui::GetContentRegionAvail().x;
+    textFitRecordText("settings:" + key, key, box);
+    if (layout.inlineLabels) {
+        ImGui::SetNextItemWidth(layout.itemWidth);
+        return key;
+    }
+    ImGui::TextUnformatted(key.c_str());
+    ImGui::SetNextItemWidth(layout.itemWidth);
+    return "##" + key;
+}
+
 } // namespace
 
 bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGroup)(std::string_view, const void*),
                          const void* ctx, std::string* error) {
     bool changed = false;
+    const RowLayout layout = rowLayout(inGroup, ctx);
     for (const auto& info : geometry::shadow::settingsDeclaration()) {
         if (inGroup && !inGroup(info.key, ctx)) continue;
         const std::string label(info.key);
@@ -111,7 +164,7 @@ bool drawSettingsWidgets(geometry::shadow::ShadowSettings& settings, bool (*inGr
         // Greyed, and closed to input, while the other settings make it inert (its row's `when`).
         const bool applies = info.appliesTo(settings);
         if (!applies) ImGui::BeginDisabled();
-        bool edited = valueWidget(info, label, value);
+        bool edited = valueWidget(info, rowLabel(label, layout), value);
         widgetMapRecord(label);
         edited = typedValueComplete(info, label, edited, value);
         if (!applies) ImGui::EndDisabled();

@@ -1,10 +1,12 @@
 // Index
 //   [SECTION] Colour helpers ... toByte, setPixel, diverging, requireImageInput, blankImage
-//   [SECTION] Legend drawing ... textWidth, Canvas, layoutLegend, drawBar, drawEntries, shortNumber
+//   [SECTION] Legend drawing ... textWidth, Canvas, wrapText, layoutLegend, legendScale, drawBar, drawEntries,
+//                                shortNumber
 //   [SECTION] PFM helpers ...... headerToken, parseSide, swapFloats
 //   [SECTION] Colour maps ...... divergingLog2, falseColourTruth, splitColour
 //   [SECTION] Heatmap images ... aliasingHeatmap, truthHeatmap, truthClassHeatmap
-//   [SECTION] Legends .......... aliasingLegend, truthLegend, truthClassLegend, splitLegend, legendRect, drawLegend
+//   [SECTION] Legends .......... aliasingLegend, truthLegend, truthClassLegend, splitLegend, legendRect, drawLegend,
+//                                withLegend
 //   [SECTION] PFM files ........ writePfm, readPfm
 
 #include "geometry/analysis/heatmap.h"
@@ -127,7 +129,28 @@ struct Canvas {
     }
 };
 
-int legendScale(int imageHeight) { return imageHeight >= 600 ? 2 : 1; }
+/// Lines of at most `maxWidth` font units, broken at spaces (a word wider than that stands alone;
+/// drawing clips it). maxWidth ≤ 0: one line.
+std::vector<std::string> wrapText(const std::string& s, int maxWidth) {
+    if (maxWidth <= 0 || textWidth(s) <= maxWidth) return {s};
+    std::vector<std::string> lines;
+    std::string line;
+    size_t i = 0;
+    while (i < s.size()) {
+        const size_t end = std::min(s.find(' ', i), s.size());
+        const std::string word = s.substr(i, end - i);
+        const std::string joined = line.empty() ? word : line + " " + word;
+        if (!line.empty() && textWidth(joined) > maxWidth) {
+            lines.push_back(line);
+            line = word;
+        } else {
+            line = joined;
+        }
+        i = end + 1;
+    }
+    if (!line.empty() || lines.empty()) lines.push_back(line);
+    return lines;
+}
 
 /// Space the tick labels need beyond the bar's left and right ends.
 std::pair<int, int> tickOverhang(const Legend& legend) {
@@ -141,15 +164,20 @@ std::pair<int, int> tickOverhang(const Legend& legend) {
     return {left, right};
 }
 
-/// Block positions in font units, shared by legendRect() and drawLegend().
+/// Block positions in font units, shared by legendRect() and drawLegend(); the title and the
+/// swatches' labels wrapped to the room the image leaves.
 struct LegendLayout {
     int width = 0, height = 0;
     int barX = 0, barY = 0;
     int entriesY = 0;
+    std::vector<std::string> title;
+    std::vector<std::vector<std::string>> entries;
 };
 
-LegendLayout layoutLegend(const Legend& legend) {
+/// `maxWidth`: the widest box the image has room for, in font units (≤ 0: no limit).
+LegendLayout layoutLegend(const Legend& legend, int maxWidth) {
     LegendLayout l;
+    const int content = maxWidth > 0 ? maxWidth - 2 * kPad : 0;
     int y = kPad, contentW = 0;
     auto block = [&](int h) { // stacks a block, with a gap before every block but the first
         if (y > kPad) y += kGap;
@@ -158,8 +186,9 @@ LegendLayout layoutLegend(const Legend& legend) {
         return top;
     };
     if (!legend.title.empty()) {
-        block(kTextH);
-        contentW = std::max(contentW, textWidth(legend.title));
+        l.title = wrapText(legend.title, content);
+        block(int(l.title.size()) * kRowH - (kRowH - kTextH));
+        for (const auto& line : l.title) contentW = std::max(contentW, textWidth(line));
     }
     if (legend.bar) {
         const auto [left, right] = tickOverhang(legend);
@@ -168,12 +197,29 @@ LegendLayout layoutLegend(const Legend& legend) {
         contentW = std::max(contentW, left + kBarW + right);
     }
     if (!legend.entries.empty()) {
-        l.entriesY = block(int(legend.entries.size()) * kRowH - (kRowH - kTextH));
-        for (const auto& e : legend.entries) contentW = std::max(contentW, kSwatch + kPad + textWidth(e.label));
+        int rows = 0;
+        for (const auto& e : legend.entries) {
+            l.entries.push_back(wrapText(e.label, content > 0 ? content - kSwatch - kPad : 0));
+            rows += int(l.entries.back().size());
+            for (const auto& line : l.entries.back()) contentW = std::max(contentW, kSwatch + kPad + textWidth(line));
+        }
+        l.entriesY = block(rows * kRowH - (kRowH - kTextH));
     }
     l.width = contentW + 2 * kPad;
     l.height = y + kPad;
     return l;
+}
+
+/// The text scale (font pixels per font unit): 2 on images at least 600 pixels tall where the
+/// legend fits the width at that size, else 1.
+int legendScale(int imageWidth, int imageHeight, const Legend& legend) {
+    if (imageHeight < 600) return 1;
+    return layoutLegend(legend, 0).width + 2 * kMargin <= imageWidth / 2 ? 2 : 1;
+}
+
+/// The layout at scale k in an image `imageWidth` pixels wide: wrapped to fit beside the margins.
+LegendLayout fittedLayout(const Legend& legend, int imageWidth, int k) {
+    return layoutLegend(legend, std::max(imageWidth / k - 2 * kMargin, 1));
 }
 
 void drawBar(const Canvas& cv, const Legend& legend, const LegendLayout& l) {
@@ -197,12 +243,14 @@ void drawBar(const Canvas& cv, const Legend& legend, const LegendLayout& l) {
 
 void drawEntries(const Canvas& cv, const Legend& legend, const LegendLayout& l) {
     int y = l.entriesY;
-    for (const auto& e : legend.entries) {
+    for (size_t i = 0; i < legend.entries.size() && i < l.entries.size(); ++i) {
         // An outline keeps dark swatches (non-receivers) visible on the dark box.
         cv.fill(kPad, float(y), kSwatch, kSwatch, kOutlineColour);
-        cv.fill(kPad + 1, float(y + 1), kSwatch - 2, kSwatch - 2, e.colour);
-        cv.text(kPad + kSwatch + kPad, float(y), e.label, kTextColour);
-        y += kRowH;
+        cv.fill(kPad + 1, float(y + 1), kSwatch - 2, kSwatch - 2, legend.entries[i].colour);
+        for (const auto& line : l.entries[i]) {
+            cv.text(kPad + kSwatch + kPad, float(y), line, kTextColour);
+            y += kRowH;
+        }
     }
 }
 
@@ -417,15 +465,16 @@ Legend splitLegend(std::span<const glm::vec2> depthRanges) {
     return l;
 }
 
-PixelRect legendRect(int /*width: the box sits at the left edge*/, int height, const Legend& legend) {
-    const int k = legendScale(height);
-    const LegendLayout l = layoutLegend(legend);
+PixelRect legendRect(int width, int height, const Legend& legend) {
+    const int k = legendScale(width, height, legend);
+    const LegendLayout l = fittedLayout(legend, width, k);
     return {kMargin * k, height - kMargin * k - l.height * k, l.width * k, l.height * k};
 }
 
 void drawLegend(Image& img, const Legend& legend) {
     const PixelRect r = legendRect(img.width, img.height, legend);
-    const LegendLayout l = layoutLegend(legend);
+    const int k = legendScale(img.width, img.height, legend);
+    const LegendLayout l = fittedLayout(legend, img.width, k);
     // Translucent box: the heatmap stays faintly visible behind the legend.
     for (int y = std::max(r.y, 0); y < std::min(r.y + r.height, img.height); ++y)
         for (int x = std::max(r.x, 0); x < std::min(r.x + r.width, img.width); ++x) {
@@ -433,10 +482,17 @@ void drawLegend(Image& img, const Legend& legend) {
             for (int c = 0; c < 3; ++c) p[c] = toByte(glm::mix(float(p[c]) / 255.f, kBoxColour[c], kBoxAlpha));
             p[3] = 255;
         }
-    const Canvas cv{img, legendScale(img.height), r.x, r.y};
-    if (!legend.title.empty()) cv.text(kPad, kPad, legend.title, kTextColour);
+    const Canvas cv{img, k, r.x, r.y};
+    for (size_t i = 0; i < l.title.size(); ++i) cv.text(kPad, float(kPad + int(i) * kRowH), l.title[i], kTextColour);
     if (legend.bar) drawBar(cv, legend, l);
     drawEntries(cv, legend, l);
+}
+
+bool Legend::empty() const noexcept { return title.empty() && !bar && entries.empty(); }
+
+Image withLegend(Image img, const Legend& legend) {
+    if (!legend.empty()) drawLegend(img, legend);
+    return img;
 }
 
 // ---- [SECTION] PFM files --------------------------------------------------------------------

@@ -82,6 +82,8 @@ struct Legend {
     std::function<glm::vec3(float)> bar; // colour at t ∈ [0,1]; no bar when empty
     std::vector<LegendTick> ticks;
     std::vector<LegendEntry> entries;
+    /// No title, bar or swatches: nothing to draw.
+    [[nodiscard]] bool empty() const noexcept;
 };
 
 /// The aliasing legend: the divergingLog2 bar over log2 m ∈ [−range, range], ticks at powers of
@@ -103,14 +105,18 @@ struct PixelRect {
 };
 
 /// Where drawLegend() puts its box in a width×height image: the bottom-left corner, text at
-/// scale 2 on images at least 600 pixels tall, scale 1 below. May reach past the image on tiny
-/// images; drawing clips.
+/// scale 2 on images at least 600 pixels tall when the legend fits the width at that size, scale 1
+/// otherwise; the title and swatch labels wrap at spaces to fit the width, so no text is cut
+/// (issue 32). May reach past the image on tiny images; drawing clips.
 [[nodiscard]] PixelRect legendRect(int width, int height, const Legend& legend);
 
 /// Draws the legend into its legendRect(): a dark translucent box, the title, the colour bar with
 /// tick marks and labels, and the swatches. Text is stb_easy_font rasterized on the CPU. Pixels
 /// outside the box are left untouched.
 void drawLegend(Image& img, const Legend& legend);
+/// `img` with the legend drawn in (unchanged for an empty legend): files keep their legend where
+/// the dashboard draws it in its UI font instead.
+[[nodiscard]] Image withLegend(Image img, const Legend& legend);
 
 // ---- PFM float dumps ------------------------------------------------------------------------
 

@@ -4,23 +4,29 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace geometry::analysis {
 
 namespace {
+/// Draws `legend` into `img`, or hands it to the caller who asked for it.
+void placeLegend(Image& img, Legend legend, Legend* out) {
+    if (out) *out = std::move(legend);
+    else drawLegend(img, legend);
+}
+
 void blend(uint8_t* px, const glm::vec3& c, float t) {
     for (int k = 0; k < 3; ++k) px[k] = uint8_t(std::lround((1.f - t) * float(px[k]) + t * 255.f * c[k]));
 }
 } // namespace
 
-Image splitsView(const Image& eye, const Inspection& in, const geometry::shadow::ShadowPlan& plan) {
+Image splitsView(const Image& eye, const Inspection& in, const geometry::shadow::ShadowPlan& plan, Legend* out) {
     Image img = eye;
     for (size_t i = 0; i < in.aux.size(); ++i)
         if (in.aux[i].z >= 0.f) blend(&img.rgba[4 * i], splitColour(int(in.aux[i].z)), 0.45f);
     std::vector<glm::vec2> ranges;
     for (const auto& s : plan.splits) ranges.emplace_back(s.near, s.far);
-    const Legend legend = splitLegend(ranges);
-    drawLegend(img, legend);
+    placeLegend(img, splitLegend(ranges), out);
     return img;
 }
 
@@ -67,13 +73,13 @@ Image blendOver(Image heat, const Image& eye, float weight) {
 }
 } // namespace
 
-Image aliasingView(const Inspection& in, const Image& eye, float blend) {
+Image aliasingView(const Inspection& in, const Image& eye, float blend, Legend* out) {
     Image img = blendOver(aliasingHeatmap(in.m, in.receiver, in.width, in.height), eye, blend);
-    drawLegend(img, aliasingLegend());
+    placeLegend(img, aliasingLegend(), out);
     return img;
 }
 
-Image differenceView(const Inspection& a, const Inspection& b) {
+Image differenceView(const Inspection& a, const Inspection& b, Legend* out) {
     if (a.width != b.width || a.height != b.height) throw std::invalid_argument("A and B frames differ in size");
     const size_t n = size_t(a.width) * a.height;
     std::vector<float> ratio(n, 0.f);
@@ -85,11 +91,11 @@ Image differenceView(const Inspection& a, const Inspection& b) {
     Image img = aliasingHeatmap(ratio, both, a.width, a.height);
     Legend legend = aliasingLegend();
     legend.title = "m_A / m_B (red: A coarser)";
-    drawLegend(img, legend);
+    placeLegend(img, std::move(legend), out);
     return img;
 }
 
-Image softView(const Inspection& in, const Image& eye, float blend) {
+Image softView(const Inspection& in, const Image& eye, float blend, Legend* out) {
     if (!in.softTruth || in.sunVisibility.size() != in.shadow.size())
         throw std::invalid_argument("the soft view needs --truth and light.angular_diameter_deg > 0");
     // s − v on the aliasing scale: d = −0.5 (too dark) ↦ m = 16 (red), +0.5 ↦ 1/16 (blue).
@@ -102,19 +108,19 @@ Image softView(const Inspection& in, const Image& eye, float blend) {
     legend.title = "s - v (red: too dark, blue: too light)";
     legend.bar = [](float t) { return divergingLog2(std::exp2(kStops * (0.5f - t))); }; // t = 0: s − v = −0.5
     legend.ticks = {{0.f, "-0.5"}, {0.25f, "-0.25"}, {0.5f, "0"}, {0.75f, "+0.25"}, {1.f, "+0.5"}};
-    drawLegend(img, legend);
+    placeLegend(img, std::move(legend), out);
     return img;
 }
 
-Image truthView(const Inspection& in, const Image& eye, float blend) {
+Image truthView(const Inspection& in, const Image& eye, float blend, Legend* out) {
     if (!in.occluded) throw std::invalid_argument("the truth view needs --truth");
     if (in.classes.size() == in.shadow.size()) { // the truth classes: each its own colour
         Image img = blendOver(truthClassHeatmap(in.classes, in.shadow, in.receiver, in.width, in.height), eye, blend);
-        drawLegend(img, truthClassLegend(in.classes, in.shadow, in.receiver));
+        placeLegend(img, truthClassLegend(in.classes, in.shadow, in.receiver), out);
         return img;
     }
     Image img = blendOver(truthHeatmap(in.shadow, *in.occluded, in.receiver, in.width, in.height), eye, blend);
-    drawLegend(img, truthLegend());
+    placeLegend(img, truthLegend(), out);
     return img;
 }
 

@@ -98,9 +98,15 @@ struct ChartFrame {
 };
 inline constexpr double kLegendRowHeight = 18;
 /// The frame of `chart` drawn in the panel [left, right] × [top, bottom]. Compact frames (small
-/// panels in the GUI) leave the title out and keep the margins tight.
+/// panels in the GUI) leave the title out and keep the margins tight. `scale`: the UI scale, which
+/// multiplies the margins, the legend's width and the tick spacing (the GUI's text grows with it).
 [[nodiscard]] ChartFrame chartFrame(const Chart& chart, double left, double top, double right, double bottom,
-                                    bool compact = false);
+                                    bool compact = false, double scale = 1);
+/// The smallest plot height the GUI draws a chart with, in pixels at UI scale 1 (issue 32: the
+/// Recommend chart's plot was 70 px tall); the panel scrolls rather than squeezing the plot.
+inline constexpr double kMinPlotHeight = 180;
+/// The panel height whose frame leaves a plot `plotHeight` pixels tall.
+[[nodiscard]] double chartHeightForPlot(double plotHeight, bool compact, double scale = 1);
 
 /// Pareto-optimal points for minimising both x and y (non-dominated, plottable), sorted by x.
 [[nodiscard]] std::vector<size_t> paretoFront(const std::vector<ChartPoint>& points);

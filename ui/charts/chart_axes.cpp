@@ -1,5 +1,6 @@
 // Axis ranges, ticks and labels for ui::Chart: pure functions shared by every chart renderer.
 #include "ui/charts/chart.h"
+#include "ui/charts/label_placement.h"
 
 #include <algorithm>
 #include <array>
@@ -206,36 +207,40 @@ std::vector<std::vector<ChartPoint>> plottableRuns(const ChartSeries& series, bo
 
 namespace {
 constexpr int kPixelsPerXTick = 45, kPixelsPerYTick = 40;
-double glyphWidth(const std::string& text, double fontSize) {
-    size_t glyphs = 0;
-    for (const unsigned char c : text) glyphs += (c & 0xC0) != 0x80; // UTF-8 lead bytes only
-    return 0.6 * fontSize * static_cast<double>(glyphs);
-}
+// The frame's margins at scale 1: above the plot (title, y label), below it (tick labels, x label).
+constexpr double kTopMargin = 52, kTopMarginCompact = 22, kBottomMargin = 50, kBottomMarginCompact = 40;
 } // namespace
 
-ChartFrame chartFrame(const Chart& c, double left, double top, double right, double bottom, bool compact) {
-    double widest = 0;
-    for (const ChartSeries& s : c.series) widest = std::max(widest, glyphWidth(s.name, 12));
-    const double legend = c.series.empty() ? 0 : std::clamp(widest + 40, 70.0, (right - left) / 3);
+double chartHeightForPlot(double plotHeight, bool compact, double scale) {
+    return plotHeight + scale * (compact ? kTopMarginCompact + kBottomMarginCompact : kTopMargin + kBottomMargin);
+}
+
+ChartFrame chartFrame(const Chart& c, double left, double top, double right, double bottom, bool compact,
+                      double scale) {
+    const double k = scale > 0 && std::isfinite(scale) ? scale : 1.0;
+    double widest = 0; // the legend's names, at the larger of the renderers' legend fonts
+    for (const ChartSeries& s : c.series) widest = std::max(widest, estimatedTextWidth(s.name, 13 * k));
+    const double legend = c.series.empty() ? 0 : std::clamp(widest + 40 * k, 70 * k, (right - left) / 3);
     ChartFrame f;
-    f.left = left + 68;
-    f.top = top + (compact ? 22 : 52); // the title and, in ImGui (no rotated text), the y label above the plot
-    f.right = std::max(f.left + 1, right - legend - 18);
-    f.bottom = std::max(f.top + 1, bottom - (compact ? 40 : 50));
-    const int xTicks = std::max(2, static_cast<int>(f.right - f.left) / kPixelsPerXTick);
-    const int yTicks = std::max(2, static_cast<int>(f.bottom - f.top) / kPixelsPerYTick);
+    f.left = left + 68 * k;
+    // The title and, in ImGui (no rotated text), the y label above the plot.
+    f.top = top + k * (compact ? kTopMarginCompact : kTopMargin);
+    f.right = std::max(f.left + 1, right - legend - 18 * k);
+    f.bottom = std::max(f.top + 1, bottom - k * (compact ? kBottomMarginCompact : kBottomMargin));
+    const int xTicks = std::max(2, static_cast<int>((f.right - f.left) / (kPixelsPerXTick * k)));
+    const int yTicks = std::max(2, static_cast<int>((f.bottom - f.top) / (kPixelsPerYTick * k)));
     f.x = axisRange(c, true, xTicks);
     f.y = axisRange(c, false, yTicks);
     for (const double t : niceTicks(f.x.lo, f.x.hi, c.x.log, xTicks))
         f.xTicks.push_back({t, f.px(t, c.x.log), formatTick(t)});
     for (const double t : niceTicks(f.y.lo, f.y.hi, c.y.log, yTicks))
         f.yTicks.push_back({t, f.py(t, c.y.log), formatTick(t)});
-    f.legendLeft = f.right + 14;
-    f.legendTop = f.top + 8;
+    f.legendLeft = f.right + 14 * k;
+    f.legendTop = f.top + 8 * k;
     f.titleX = (left + right) / 2;
-    f.titleY = top + 22;
-    f.xLabelY = f.bottom + (compact ? 32 : 38);
-    f.yLabelX = left + 16;
+    f.titleY = top + 22 * k;
+    f.xLabelY = f.bottom + k * (compact ? 32 : 38);
+    f.yLabelX = left + 16 * k;
     return f;
 }
 
