@@ -19,6 +19,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <set>
 #include <thread>
@@ -847,6 +848,54 @@ TEST_F(GuiE2E, QuickCtrlQQuits) {
     betweenTwoFrames([&] { xdo({"keydown", "ctrl", "keydown", "q", "sleep", "0.01", "keyup", "q", "keyup", "ctrl"}); });
     ASSERT_TRUE(app_.waitExit(scaled(60))) << "the app still runs after Ctrl+Q\n" << context();
     EXPECT_EQ(app_.exitCode(), 0) << context();
+}
+
+// Nothing stale (issue 32, item 3): the stats panel's GPU rows are filled from the first frames,
+// before any input, and a pinned pixel shows the current view's values after the camera moves
+// (the issue's repro: pin, move the camera, hover the same pixel; the pin kept the old depth).
+TEST_F(GuiE2E, GpuTimesShowFromTheStartAndAPinFollowsTheCamera) {
+    launch();
+    xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
+    const WidgetMap start = settle("after start-up");
+    EXPECT_GT(start.counter("gpu.eye_ms"), 0.0) << "GPU rows filled without any input: " << start.describe();
+
+    // Shift+click pins the pixel under the pointer (on the ground, below the middle of the view).
+    const Rect eye = start.widgets.at("eye_image");
+    const double x = eye.x + eye.w * 0.5, y = eye.y + eye.h * 0.75;
+    xdo({"mousemove", screenX(x), screenY(y)});
+    waitFrames(2);
+    xdo({"keydown", "shift"});
+    waitFrames(1);
+    xdo({"click", "1"});
+    waitFrames(1);
+    xdo({"keyup", "shift"});
+    const WidgetMap pinned =
+        waitForMap("a pinned pixel", [](const WidgetMap& m) { return m.counter("pin.view_depth") > 0.0; });
+    const double before = pinned.counter("pin.view_depth");
+
+    // Orbit up: a drag upwards (a sideways one turns about the vertical axis and leaves a ground
+    // pixel's depth as it was), one step a frame, starting 40 px away so that its press cannot make a
+    // double-click (which fits the camera) with the pin's click; then back over the same pixel.
+    xdo({"mousemove", screenX(x + 40.0), screenY(y)});
+    waitFrames(1);
+    xdo({"mousedown", "1"});
+    waitFrames(1);
+    for (int step = 1; step <= 4; ++step) {
+        xdo({"mousemove", screenX(x + 40.0), screenY(y - 15.0 * step)});
+        waitFrames(1);
+    }
+    xdo({"mouseup", "1"});
+    settle("after the orbit");
+    xdo({"mousemove", screenX(x), screenY(y)});
+    const WidgetMap after = waitForMap("the pointer over the pinned pixel", [](const WidgetMap& m) {
+        return m.counter("hover.x") == m.counter("pin.x") && m.counter("hover.y") == m.counter("pin.y") &&
+               m.counter("hover.view_depth") > 0.0 && m.counter("pin.view_depth") > 0.0;
+    });
+    const double pin = after.counter("pin.view_depth"), hover = after.counter("hover.view_depth");
+    std::cout << "[ e2e ] pinned depth " << before << " -> " << pin << " after the orbit; hover " << hover << '\n';
+    EXPECT_GT(std::abs(pin - before), 1e-3 * before) << "the orbit changed the pinned pixel's depth";
+    EXPECT_NEAR(pin, hover, 1e-4 * hover) << "the pin reads the current view, as hovering the same pixel does";
+    closeGracefully();
 }
 
 // (Disabled until issue 32: it saw no refusal in 1 of 3 runs on a loaded machine. Not X losing

@@ -185,6 +185,15 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     widgetMapCounter("coarse", coarse() ? 1.0 : 0.0);
     widgetMapCounter("statistics_pending", sides_[0].job || sides_[1].job ? 1.0 : 0.0);
     widgetMapCounter("text_input", io.WantTextInput ? 1.0 : 0.0); // keys go to a field, not to flying
+    // What the stats and inspector show, for the end-to-end tests of "nothing stale" (issue 32).
+    if (const renderer::FrameStats* st = frameStats(0);
+        st && st->gpu.valid && st->gpu.drawn[size_t(renderer::Pass::Eye)])
+        widgetMapCounter("gpu.eye_ms", st->gpu.of(renderer::Pass::Eye));
+    if (pinned_) {
+        widgetMapCounter("pin.x", pinned_->pixel.x);
+        widgetMapCounter("pin.y", pinned_->pixel.y);
+        if (std::isfinite(pinned_->viewDepth)) widgetMapCounter("pin.view_depth", pinned_->viewDepth);
+    }
     widgetMapEndFrame();
     cpuFrameMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -475,6 +475,11 @@ void Dashboard::drawStatusBar() {
     if (!status_.empty()) text += "   |   " + status_;
     ImGui::TextUnformatted(text.c_str());
     widgetMapStatus(status_);
+    if (hovered_) { // the e2e tests compare it with the pin (nothing stale, issue 32)
+        widgetMapCounter("hover.x", hovered_->pixel.x);
+        widgetMapCounter("hover.y", hovered_->pixel.y);
+        if (std::isfinite(hovered_->viewDepth)) widgetMapCounter("hover.view_depth", hovered_->viewDepth);
+    }
     hovered_.reset(); // set again next frame while the cursor stays on a view
 }
 
