@@ -1,5 +1,7 @@
 #include "gpu_timers.h"
 
+#include <limits>
+
 namespace renderer {
 
 double PassTimes::total() const noexcept {
@@ -9,6 +11,7 @@ double PassTimes::total() const noexcept {
 }
 
 GpuTimers::GpuTimers() {
+    lastDrawn_.fill(std::numeric_limits<double>::quiet_NaN());
     for (auto& s : slots_) glGenQueries(kPasses * kRuns, &s.queries[0][0]);
 }
 
@@ -52,6 +55,8 @@ void GpuTimers::collect(Slot& s, bool wait) noexcept {
     t.valid = true;
     s.pending = false;
     latest_ = t;
+    for (int i = 0; i < kPasses; ++i)
+        if (t.drawn[i]) lastDrawn_[size_t(i)] = t.ms[i];
 }
 
 void GpuTimers::endFrame() noexcept {

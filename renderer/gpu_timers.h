@@ -34,6 +34,9 @@ public:
     void endFrame() noexcept;
     /// The newest frame whose results have arrived (valid == false before the first).
     [[nodiscard]] const PassTimes& latest() const noexcept { return latest_; }
+    /// A pass's time in the newest finished frame that ran it (NaN: none yet): a pass skipped since
+    /// (shadow maps reused) keeps its last time, whichever frames a poll collects together.
+    [[nodiscard]] double lastDrawn(Pass p) const noexcept { return lastDrawn_[static_cast<size_t>(p)]; }
     /// Collects the frames whose results have arrived, without closing one (a window that draws
     /// nothing new still shows them); true while some are still in flight.
     bool poll() noexcept;
@@ -56,6 +59,7 @@ private:
     int current_ = 0;
     bool open_ = false;
     PassTimes latest_;
+    std::array<double, kPasses> lastDrawn_{};
 };
 
 } // namespace renderer

@@ -135,6 +135,8 @@ public:
         stats_.gpu = timers_.latest();
         return inFlight;
     }
+    /// GPU milliseconds of `pass` in the newest timed frame that ran it (NaN: none yet).
+    [[nodiscard]] double lastDrawnGpuMs(Pass pass) const noexcept { return timers_.lastDrawn(pass); }
     /// Blocks until the GPU times of every rendered frame are in; for one-shot exports.
     const PassTimes& waitForTimings() noexcept;
 

@@ -858,6 +858,7 @@ TEST_F(GuiE2E, GpuTimesShowFromTheStartAndAPinFollowsTheCamera) {
     xdo({"mousemove", screenX(5), screenY(kHeight - 5)});
     const WidgetMap start = settle("after start-up");
     EXPECT_GT(start.counter("gpu.eye_ms"), 0.0) << "GPU rows filled without any input: " << start.describe();
+    EXPECT_GT(start.counter("gpu.shadow_ms"), 0.0) << "the shadow row too: " << start.describe();
 
     // Shift+click pins the pixel under the pointer (on the ground, below the middle of the view).
     const Rect eye = start.widgets.at("eye_image");

@@ -143,9 +143,13 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     renderViews();
     // GPU times arrive a frame or more after their passes: poll them while the views stand still,
     // so the stats panel's GPU rows fill in without waiting for the next change.
+    // The shadow row keeps the time of the frame that last drew the maps (later ones reuse them).
     gpuTimesInFlight_ = false;
-    for (Side& s : sides_)
-        if (s.renderer && s.renderer->pollGpuTimes()) gpuTimesInFlight_ = true;
+    for (Side& s : sides_) {
+        if (!s.renderer) continue;
+        if (s.renderer->pollGpuTimes()) gpuTimesInFlight_ = true;
+        if (const double ms = s.renderer->lastDrawnGpuMs(renderer::Pass::Shadow); std::isfinite(ms)) s.shadowGpuMs = ms;
+    }
     const MeasureContext measuring = measureContext();
     if (auto status = sweep_.step(measuring)) status_ = std::move(*status);
     if (auto status = recommend_.step(measuring)) status_ = std::move(*status);
@@ -189,6 +193,7 @@ void Dashboard::frame(float width, float height, const FrameInput& input) {
     if (const renderer::FrameStats* st = frameStats(0);
         st && st->gpu.valid && st->gpu.drawn[size_t(renderer::Pass::Eye)])
         widgetMapCounter("gpu.eye_ms", st->gpu.of(renderer::Pass::Eye));
+    if (std::isfinite(sides_[0].shadowGpuMs)) widgetMapCounter("gpu.shadow_ms", sides_[0].shadowGpuMs);
     if (pinned_) {
         widgetMapCounter("pin.x", pinned_->pixel.x);
         widgetMapCounter("pin.y", pinned_->pixel.y);

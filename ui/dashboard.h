@@ -161,6 +161,8 @@ public:
     [[nodiscard]] const PassCounts& passCounts() const noexcept { return counts_; }
     /// Side 0's or 1's renderer statistics (GPU times, triangles), or nullptr before it draws.
     [[nodiscard]] const renderer::FrameStats* frameStats(int side) const noexcept { return statsOf(side); }
+    /// GPU milliseconds of side A's or B's shadow maps when last drawn (NaN: not timed yet).
+    [[nodiscard]] double shadowGpuMs(int side) const noexcept { return sides_[size_t(side)].shadowGpuMs; }
     /// The pinned pixel, as the inspector shows it.
     [[nodiscard]] const std::optional<PixelProbe>& pinnedPixel() const noexcept { return pinned_; }
     /// The values at an image pixel of the eye or heatmap panel, from the last inspection.

@@ -189,8 +189,6 @@ void Dashboard::drawSide(int i, const PassInputs& in, int divisor, int mapDiviso
         side.renderer->render(plans, size, v, inspected); // the inspected light last
         const renderer::FrameStats& st = side.renderer->stats();
         if (!st.shadowMapsReused) ++counts_.shadow;
-        if (st.gpu.valid && st.gpu.drawn[size_t(renderer::Pass::Shadow)])
-            side.shadowGpuMs = st.gpu.of(renderer::Pass::Shadow);
         ++(divisor > 1 ? counts_.eyeCoarse : counts_.eyeFull);
         side.size = full;
         side.coarseDivisor = divisor;
