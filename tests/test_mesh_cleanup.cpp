@@ -1,12 +1,16 @@
 // cleanMesh(): every step on hand-built meshes, counted and checked.
 #include "geometry/io/model_loader.h"
 #include "geometry/scene/mesh_builder.h"
+#include "geometry/scene/parallel_ranges.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <set>
+#include <tuple>
 
 using namespace geometry::scene;
 using namespace geometry::io;
@@ -256,4 +260,94 @@ TEST(MeshCleanup, HighDegreeFanStaysFastAndSmooth) {
         EXPECT_EQ(r.outputVertices, size_t(n + 1));
         EXPECT_GT(m.normals[0].z, 0.99f);
     }
+}
+
+namespace {
+
+/// A soup of `triangles` faces whose corners are drawn from clusters: points jittered within a
+/// fraction of `tol` (which must merge), others about `tol` apart (either way), many of them next
+/// to the faces of the merge's coarse cells (64 tolerances wide), where the search crosses cells.
+Mesh clusteredSoup(size_t triangles, double tol, uint32_t seed) {
+    uint64_t state = seed;
+    auto next = [&state] { // splitmix64: the same soup on every machine
+        state += 0x9E3779B97F4A7C15ull;
+        uint64_t z = state;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return double((z ^ (z >> 31)) >> 11) / double(1ull << 53);
+    };
+    const double cell = 64 * tol;
+    std::vector<glm::dvec3> centres;
+    for (size_t i = 0; i < triangles / 2 + 3; ++i) {
+        glm::dvec3 c(next() * 2000, next() * 2000, next() * 2000); // cells, not metres
+        if (i % 3 == 0) c.x = std::round(c.x);                     // on a cell face
+        centres.push_back(c * cell);
+    }
+    Mesh m;
+    for (size_t t = 0; t < triangles; ++t)
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3& c = centres[size_t(next() * double(centres.size())) % centres.size()];
+            const double r = next() < 0.5 ? 0.3 * tol : 1.2 * tol; // merges / borderline
+            const glm::dvec3 p = c + glm::dvec3(next() - 0.5, next() - 0.5, next() - 0.5) * r;
+            m.indices.push_back(uint32_t(m.positions.size()));
+            m.positions.emplace_back(p);
+        }
+    return m;
+}
+
+} // namespace
+
+TEST(MeshCleanup, MergedVerticesAreFartherApartThanTheTolerance) {
+    // What the greedy merge promises: every kept vertex is more than `tol` from every other kept
+    // vertex (checked against all pairs), and every input corner of a kept face has a kept vertex
+    // within `tol`.
+    constexpr double tol = 1e-3;
+    Mesh m = clusteredSoup(1500, tol, 7);
+    const std::vector<glm::vec3> input = m.positions;
+    CleanupOptions o;
+    o.mergeTolerance = tol;
+    o.creaseAngleDeg = 180; // one output vertex per merged vertex
+    const CleanupReport r = cleanMesh(m, o);
+    ASSERT_GT(r.mergedVertices, 1000u);
+    ASSERT_GT(r.outputVertices, 300u);
+    std::vector<glm::vec3> kept = m.positions;
+    std::sort(kept.begin(), kept.end(),
+              [](const glm::vec3& a, const glm::vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+    size_t tooClose = 0;
+    for (size_t i = 0; i < kept.size(); ++i)
+        for (size_t j = i + 1; j < kept.size() && double(kept[j].x) - double(kept[i].x) <= tol; ++j)
+            tooClose += glm::distance(glm::dvec3(kept[i]), glm::dvec3(kept[j])) <= tol;
+    EXPECT_EQ(tooClose, 0u);
+    size_t farFromAll = 0;
+    for (const glm::vec3& p : input) {
+        bool near = false;
+        for (const glm::vec3& q : kept) near = near || glm::distance(glm::dvec3(p), glm::dvec3(q)) <= tol;
+        farFromAll += !near;
+    }
+    // A corner's kept vertex goes when all its faces were dropped (degenerate or duplicate).
+    EXPECT_LE(farFromAll, 3 * (r.degenerateFaces + r.duplicateFaces));
+}
+
+TEST(MeshCleanup, SameResultOnOneThreadAndOnSeveral) {
+    // The linear passes run over vertex and face ranges on as many threads as there are cores; what
+    // they write must not depend on it. 200 k faces: enough for every pass to split.
+    Mesh one = clusteredSoup(200'000, 1e-3, 11), several = one;
+    CleanupOptions o;
+    o.mergeTolerance = 1e-3;
+    o.creaseAngleDeg = 30;
+    const unsigned cores = rangeThreadCap().load();
+    rangeThreadCap() = 1;
+    const CleanupReport a = cleanMesh(one, o);
+    rangeThreadCap() = 3;
+    const CleanupReport b = cleanMesh(several, o);
+    rangeThreadCap() = cores;
+    EXPECT_EQ(a.mergedVertices, b.mergedVertices);
+    EXPECT_EQ(a.outputVertices, b.outputVertices);
+    EXPECT_GT(a.outputVertices, size_t(3) << 16) << "too few vertices for every range of the normals to have a thread";
+    EXPECT_EQ(one.indices, several.indices);
+    ASSERT_EQ(one.positions.size(), several.positions.size());
+    EXPECT_EQ(0, std::memcmp(one.positions.data(), several.positions.data(), one.positions.size() * sizeof(glm::vec3)));
+    EXPECT_EQ(0, std::memcmp(one.normals.data(), several.normals.data(), one.normals.size() * sizeof(glm::vec3)));
+    expectValid(several);
 }

@@ -21,6 +21,7 @@ constexpr uint32_t kEmpty = ~0u;
 constexpr size_t kHeaderBytes = 84, kFacetBytes = 50;
 constexpr size_t kFacetsPerThreadMin = 1 << 16;    // below this a thread costs more than it saves
 constexpr std::ptrdiff_t kReleaseBytes = 16 << 20; // read pages dropped every 16 MiB
+constexpr size_t kAheadFacets = 4;                 // facets whose slots are prefetched ahead
 
 /// The file's bytes, mapped read-only for the reader's lifetime.
 class MappedFile {
@@ -91,20 +92,30 @@ public:
     /// The vertex of `k`: an existing one when welded (`welded` set), else a new one.
     uint32_t add(const Key& k, bool& welded) {
         if (!finite(k)) return push(k); // never welded: cleanup drops it with its faces
+        const uint32_t h = hashOf(k);
+        // A corner is mostly a repeat of one a few facets back: those are found in a small table
+        // that stays in the cache before the large one is searched.
+        uint32_t& recent = recent_[h >> (32 - kRecentBits)];
+        if (recent != kEmpty && keys_[recent] == k) {
+            welded = true;
+            return recent;
+        }
         const size_t mask = slots_.size() - 1;
-        for (size_t s = hashOf(k) & mask;; s = (s + 1) & mask) {
+        for (size_t s = h & mask;; s = (s + 1) & mask) {
             const uint32_t id = slots_[s];
             if (id == kEmpty) {
-                slots_[s] = push(k);
+                slots_[s] = recent = push(k);
                 if (2 * ++used_ > slots_.size()) grow();
-                return uint32_t(keys_.size() - 1);
+                return recent;
             }
             if (keys_[id] == k) {
                 welded = true;
-                return id;
+                return recent = id;
             }
         }
     }
+    /// Starts loading the slot where `k`'s search begins: the table is far larger than the caches.
+    void prefetch(const Key& k) const noexcept { __builtin_prefetch(&slots_[hashOf(k) & (slots_.size() - 1)]); }
     [[nodiscard]] const std::vector<Key>& keys() const noexcept { return keys_; }
 
 private:
@@ -123,7 +134,9 @@ private:
             slots_[s] = id;
         }
     }
+    static constexpr int kRecentBits = 12;
     std::vector<uint32_t> slots_;
+    std::vector<uint32_t> recent_ = std::vector<uint32_t>(size_t(1) << kRecentBits, kEmpty);
     std::vector<Key> keys_;
     size_t used_ = 0;
 };
@@ -141,6 +154,8 @@ void weldRange(const char* data, RangeWeld& r, std::vector<uint32_t>& indices, c
     for (size_t t = r.first; t < r.last; ++t) {
         const char* facet = data + kHeaderBytes + kFacetBytes * t;
         const char* corner = facet + 12; // past the facet normal
+        if (t + kAheadFacets < r.last)
+            for (size_t k = 0; k < 3; ++k) r.welder.prefetch(keyOf(corner + kAheadFacets * kFacetBytes + 12 * k));
         for (size_t k = 0; k < 3; ++k) {
             bool welded = false;
             indices[3 * t + k] = r.welder.add(keyOf(corner + 12 * k), welded);

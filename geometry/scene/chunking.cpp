@@ -1,6 +1,7 @@
 #include "geometry/scene/chunking.h"
 
 #include "geometry/scene/compact_vertices.h"
+#include "geometry/scene/parallel_ranges.h"
 
 #include <algorithm>
 #include <bit>
@@ -18,13 +19,19 @@ using Range = std::pair<uint32_t, uint32_t>; // [begin, end) into the triangle o
 /// lists, joined in order, so the result is the same for any thread count).
 constexpr uint32_t kParallelTriangles = 1u << 16;
 
+/// A triangle's centroid with its index: the split moves these, so its comparisons and boxes read
+/// contiguous memory instead of chasing indices into a centroid array.
+struct Item {
+    glm::vec3 c;
+    uint32_t id;
+};
+
 struct Splitter {
-    const std::vector<glm::vec3>& centroids;
     uint32_t maxTriangles, maxPartTriangles;
     std::vector<Range> chunks, parts; // each in order of begin
 
     /// `spawn`: levels below this one that may still hand their upper half to a new thread.
-    void split(std::vector<uint32_t>& order, uint32_t begin, uint32_t end, bool inChunk, int spawn) {
+    void split(std::vector<Item>& items, uint32_t begin, uint32_t end, bool inChunk, int spawn) {
         if (!inChunk && end - begin <= maxTriangles) {
             chunks.emplace_back(begin, end);
             inChunk = true;
@@ -34,28 +41,28 @@ struct Splitter {
             return;
         }
         Aabb box;
-        for (uint32_t i = begin; i < end; ++i) box.add(centroids[order[i]]);
+        for (uint32_t i = begin; i < end; ++i) box.add(items[i].c);
         const glm::vec3 e = box.extent();
         const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
         const uint32_t mid = begin + (end - begin) / 2;
-        std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                         [&](uint32_t a, uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
+        std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                         [axis](const Item& a, const Item& b) { return a.c[axis] < b.c[axis]; });
         if (spawn <= 0 || end - begin < kParallelTriangles) {
-            split(order, begin, mid, inChunk, 0);
-            split(order, mid, end, inChunk, 0);
+            split(items, begin, mid, inChunk, 0);
+            split(items, mid, end, inChunk, 0);
             return;
         }
-        Splitter upper{centroids, maxTriangles, maxPartTriangles, {}, {}};
+        Splitter upper{maxTriangles, maxPartTriangles, {}, {}};
         std::exception_ptr failed;
         std::thread t([&] {
             try {
-                upper.split(order, mid, end, inChunk, spawn - 1);
+                upper.split(items, mid, end, inChunk, spawn - 1);
             } catch (...) {
                 failed = std::current_exception();
             }
         });
         try {
-            split(order, begin, mid, inChunk, spawn - 1);
+            split(items, begin, mid, inChunk, spawn - 1);
         } catch (...) {
             t.join();
             throw;
@@ -96,19 +103,24 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
     reserveSpareVertex(mesh); // the last step of every loader and builder
     if (triCount == 0) return;
 
-    std::vector<glm::vec3> centroids(triCount);
-    for (uint32_t t = 0; t < triCount; ++t)
-        centroids[t] = (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
-                        mesh.positions[mesh.indices[3 * t + 2]]) /
-                       3.f;
-    std::vector<uint32_t> order(triCount);
-    std::iota(order.begin(), order.end(), 0u);
-    Splitter splitter{centroids, maxTriangles, maxPartTriangles, {}, {}};
-    splitter.split(order, 0, triCount, false, spawnLevels());
+    const unsigned threads = rangeThreads(triCount, kParallelTriangles);
+    std::vector<Item> items(triCount);
+    forEachRange(triCount, threads, [&](unsigned, size_t b, size_t e) {
+        for (size_t t = b; t < e; ++t)
+            items[t] = {(mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
+                         mesh.positions[mesh.indices[3 * t + 2]]) /
+                            3.f,
+                        uint32_t(t)};
+    });
+    Splitter splitter{maxTriangles, maxPartTriangles, {}, {}};
+    splitter.split(items, 0, triCount, false, spawnLevels());
 
     std::vector<uint32_t> indices(mesh.indices.size());
-    for (uint32_t i = 0; i < triCount; ++i)
-        for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.indices[3 * order[i] + k];
+    forEachRange(triCount, threads, [&](unsigned, size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i)
+            for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.indices[3 * size_t(items[i].id) + k];
+    });
+    std::vector<Item>().swap(items);
     mesh.indices = std::move(indices);
 
     // Parts come in order of begin and tile the chunks, which come in the same order. A chunk of one
@@ -133,7 +145,9 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
 }
 
 void reboundRuns(Mesh& mesh) {
-    for (TriangleRun& p : mesh.parts) p.bounds = runBounds(mesh, p);
+    forEachRange(mesh.parts.size(), rangeThreads(mesh.parts.size(), 16), [&](unsigned, size_t b, size_t e) {
+        for (size_t k = b; k < e; ++k) mesh.parts[k].bounds = runBounds(mesh, mesh.parts[k]);
+    });
     for (Chunk& c : mesh.chunks) {
         if (c.partCount == 0 || size_t(c.firstPart) + c.partCount > mesh.parts.size()) {
             c.bounds = runBounds(mesh, c);

@@ -1,5 +1,7 @@
 #include "geometry/scene/compact_vertices.h"
 
+#include "geometry/scene/parallel_ranges.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,6 +13,7 @@ namespace {
 constexpr uint32_t kUnseen = std::numeric_limits<uint32_t>::max();
 constexpr uint32_t kMaxChunkVertices = 1u << 16;                // 16-bit indices
 constexpr double kMaxCount = double((1u << kPositionBits) - 1); // the largest 16-bit count
+constexpr size_t kSnapPerThreadMin = size_t(1) << 16;           // vertices a thread snaps at least
 
 /// The chunks must tile the index buffer in order, each naming vertices that exist.
 bool chunksTile(const Mesh& mesh) noexcept {
@@ -102,19 +105,24 @@ float gridStep(const Mesh& mesh) noexcept {
     return std::ldexp(float(kGridUlps), std::ilogb(std::max(largest, std::numeric_limits<float>::min())) - 23);
 }
 
-void snapToGrid(Mesh& mesh) noexcept {
+void snapToGrid(Mesh& mesh) {
     const double step = gridStep(mesh);
     constexpr double kLargest = std::numeric_limits<float>::max();
-    for (glm::vec3& p : mesh.positions) {
-        if (!finite(p)) continue;
-        for (int a = 0; a < 3; ++a) {
-            double x = std::round(double(p[a]) / step) * step; // a multiple of the step: exact in float
-            // Within half a step of float's largest value, rounding up would leave its range: round
-            // towards zero instead (less than a step away).
-            if (std::abs(x) > kLargest) x = std::trunc(double(p[a]) / step) * step;
-            p[a] = float(x);
-        }
-    }
+    std::vector<glm::vec3>& positions = mesh.positions;
+    forEachRange(
+        positions.size(), rangeThreads(positions.size(), kSnapPerThreadMin), [&](unsigned, size_t b, size_t e) {
+            for (size_t i = b; i < e; ++i) {
+                glm::vec3& p = positions[i];
+                if (!finite(p)) continue;
+                for (int a = 0; a < 3; ++a) {
+                    double x = std::round(double(p[a]) / step) * step; // a multiple of the step: exact in float
+                    // Within half a step of float's largest value, rounding up would leave its range: round
+                    // towards zero instead (less than a step away).
+                    if (std::abs(x) > kLargest) x = std::trunc(double(p[a]) / step) * step;
+                    p[a] = float(x);
+                }
+            }
+        });
 }
 
 std::optional<float> compactStep(const Mesh& mesh) {

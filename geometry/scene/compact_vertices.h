@@ -55,7 +55,7 @@ struct CompactVertices {
 /// Moves every finite position to the nearest point of gridStep(mesh)'s grid (by at most half a step
 /// along each axis; less than a step, towards zero, within half a step of float's largest value). chunkMesh does, so
 /// that what GL draws from compactVertices and what the truth traces from the mesh's own arrays are the same points.
-void snapToGrid(Mesh& mesh) noexcept;
+void snapToGrid(Mesh& mesh);
 /// compactVertices(mesh)'s step without building it (none where compactVertices gives none).
 [[nodiscard]] std::optional<float> compactStep(const Mesh& mesh);
 

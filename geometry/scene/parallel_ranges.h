@@ -1,0 +1,70 @@
+// Splitting a loop over [0, n) into contiguous ranges, one thread each. The loader's linear passes use it:
+// every range writes only its own outputs, so the result never depends on how many threads ran.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace geometry::scene {
+
+/// The most threads rangeThreads() hands out: the cores (at most 16) unless set lower (tests compare
+/// one thread with several; benchmarks time them against each other).
+inline std::atomic<unsigned>& rangeThreadCap() noexcept {
+    static std::atomic<unsigned> cap{std::clamp(std::thread::hardware_concurrency(), 1u, 16u)};
+    return cap;
+}
+
+/// Threads worth starting for `n` items when each should have at least `minPerThread`: at most
+/// rangeThreadCap(), at least 1.
+[[nodiscard]] inline unsigned rangeThreads(size_t n, size_t minPerThread) noexcept {
+    const size_t cores = std::max(rangeThreadCap().load(std::memory_order_relaxed), 1u);
+    return unsigned(std::clamp<size_t>(n / std::max<size_t>(minPerThread, 1), 1, cores));
+}
+
+/// Calls `body(range, begin, end)` for `threads` contiguous ranges of [0, n) (range 0 on this thread,
+/// the others on their own). `bounds`, when given, is a non-decreasing cost prefix over [0, n]
+/// (size n + 1) that the ranges split evenly instead of the item count. The first exception thrown
+/// by any range is rethrown here once all have finished.
+template <class Body>
+void forEachRange(size_t n, unsigned threads, Body&& body, const std::vector<uint32_t>* bounds = nullptr) {
+    threads = std::max(threads, 1u);
+    std::vector<size_t> cut(threads + 1, n);
+    cut[0] = 0;
+    for (unsigned t = 1; t < threads; ++t) {
+        if (!bounds) {
+            cut[t] = n * t / threads;
+            continue;
+        }
+        const uint64_t goal = uint64_t(bounds->back()) * t / threads; // the cost before range t
+        cut[t] = size_t(std::lower_bound(bounds->begin(), bounds->end(), goal) - bounds->begin());
+        cut[t] = std::clamp(cut[t], cut[t - 1], n);
+    }
+    std::vector<std::exception_ptr> failed(threads);
+    {
+        const auto run = [&](unsigned t) noexcept {
+            try {
+                body(t, cut[t], cut[t + 1]);
+            } catch (...) {
+                failed[t] = std::current_exception();
+            }
+        };
+        std::vector<std::jthread> workers;
+        unsigned started = 1;
+        try {
+            workers.reserve(threads - 1);
+            for (; started < threads; ++started) workers.emplace_back(run, started);
+        } catch (...) { // no thread to be had: the ranges left run here
+        }
+        run(0);
+        for (unsigned t = started; t < threads; ++t) run(t);
+    }
+    for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
+}
+
+} // namespace geometry::scene
