@@ -61,6 +61,7 @@ bool panelBegin(const char* id, const Rect& r) {
 /// Records the last item's extent against the room left on its row (text_fit.h): a header that
 /// does not fit its panel shows in the legibility test.
 void recordHeaderItem(const std::string& id, const std::string& text) {
+    if (!textFitEnabled()) return;
     const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     textFitRecord("header:" + id, text, ImGui::GetItemRectSize().x, right - ImGui::GetItemRectMin().x);
 }

@@ -305,7 +305,8 @@ void Dashboard::drawStatsTable() {
             ImGui::PushTextWrapPos(0.f);
             ImGui::TextUnformatted(text);
             ImGui::PopTextWrapPos();
-            textFitRecord(id, text, ImGui::CalcTextSize(text, nullptr, false, std::max(box, 1.f)).x, box);
+            if (textFitEnabled())
+                textFitRecord(id, text, ImGui::CalcTextSize(text, nullptr, false, std::max(box, 1.f)).x, box);
         };
         for (size_t k = 0; k < rows.size(); ++k) {
             const StatRow& r = rows[k];

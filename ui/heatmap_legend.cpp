@@ -103,7 +103,8 @@ void drawHeatmapLegend(const geometry::analysis::Legend& legend, const Rect& are
         dl->AddText(font, size, at, IM_COL32(245, 245, 245, 255), l.text.c_str(), nullptr, l.wrap);
         // The room a line has: to its wrap width, and never past the panel's right edge.
         const float box = std::min(l.wrap > 0.f ? l.wrap : FLT_MAX, boxRight - at.x);
-        textFitRecord("legend:" + l.text, l.text, extent(l.text, l.wrap).x, at.x >= area.x ? box : 0.f);
+        if (textFitEnabled())
+            textFitRecord("legend:" + l.text, l.text, extent(l.text, l.wrap).x, at.x >= area.x ? box : 0.f);
     }
     dl->PopClipRect();
 }

@@ -35,7 +35,9 @@ bool numberSlider(const geometry::shadow::SettingInfo& info, const std::string& 
     char text[32];
     if constexpr (isInt) std::snprintf(text, sizeof text, format, v);
     else std::snprintf(text, sizeof text, format, double(v));
-    textFitRecordText("settings value:" + std::string(info.key), text, frameW - 2.f * ImGui::GetStyle().FramePadding.x);
+    if (textFitEnabled())
+        textFitRecordText("settings value:" + std::string(info.key), text,
+                          frameW - 2.f * ImGui::GetStyle().FramePadding.x);
     value = v;
     return edited;
 }
@@ -53,8 +55,10 @@ bool valueWidget(const geometry::shadow::SettingInfo& info, const std::string& l
     case Kind::Choice: {
         int index = static_cast<int>(value);
         const int shown = std::clamp(index, 0, int(info.choices.size()) - 1);
-        textFitRecordText("settings value:" + std::string(info.key), info.choices[shown],
-                          ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2.f * ImGui::GetStyle().FramePadding.x);
+        if (textFitEnabled())
+            textFitRecordText("settings value:" + std::string(info.key), info.choices[shown],
+                              ImGui::CalcItemWidth() - ImGui::GetFrameHeight() -
+                                  2.f * ImGui::GetStyle().FramePadding.x);
         if (ImGui::BeginCombo(label.c_str(), std::string(info.choices[shown]).c_str())) {
             for (int i = 0; i < int(info.choices.size()); ++i) {
                 if (ImGui::Selectable(std::string(info.choices[i]).c_str(), i == index)) index = i, edited = true;
@@ -141,7 +145,7 @@ std::string rowLabel(const std::string& key, const RowLayout& layout) {
     const float box = layout.inlineLabels
                           ? ImGui::GetContentRegionAvail().x - layout.itemWidth - ImGui::GetStyle().ItemInnerSpacing.x
                           : ImGui::GetContentRegionAvail().x;
-    textFitRecordText("settings:" + key, key, box);
+    if (textFitEnabled()) textFitRecordText("settings:" + key, key, box);
     if (layout.inlineLabels) {
         ImGui::SetNextItemWidth(layout.itemWidth);
         return key;

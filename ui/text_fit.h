@@ -17,7 +17,8 @@ struct TextFit {
     [[nodiscard]] bool fits() const noexcept { return width <= box + 0.5f; }
 };
 
-/// Starts (true) or stops recording; starting clears what was recorded.
+/// Starts (true) or stops recording; starting clears what was recorded. Callers skip building a
+/// record (its id string, a text extent) when recording is off.
 void textFitEnable(bool on);
 [[nodiscard]] bool textFitEnabled() noexcept;
 /// Records one text. Records of an earlier ImGui frame are dropped first, so the list always
