@@ -3,7 +3,7 @@
 //
 // Index
 //   [SECTION] Cleanup report ............. CleanupReport::operator+=
-//   [SECTION] Small helpers .............. mix, tableSize, triangles, keepUnmarked, fitCapacity
+//   [SECTION] Small helpers .............. mix, tableSize, triangles, keepUnmarked, renumber, fitCapacity
 //   [SECTION] Bad faces and duplicates ... dropNonFinite, MergeGrid, mergeCandidates, mergeDuplicates, dropDegenerate,
 //   dropDuplicateFaces [SECTION] Orientation ................ VertexFaces, cornerOf, fixOrientation [SECTION] Normals
 //   .................... clusterCornerNormals, cornerNormals, splitCornersByNormal, computeNormals [SECTION] Cleaning a
@@ -83,6 +83,15 @@ size_t keepUnmarked(std::vector<Tri>& tris, const std::vector<char>& drop) {
     const size_t dropped = tris.size() - out;
     tris.resize(out);
     return dropped;
+}
+
+/// Every corner v becomes to[v], on every core.
+void renumber(std::vector<Tri>& tris, const std::vector<uint32_t>& to) {
+    scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kFacesPerThreadMin),
+                        [&](unsigned, size_t b, size_t e) {
+                            for (size_t f = b; f < e; ++f)
+                                for (uint32_t& v : tris[f]) v = to[v];
+                        });
 }
 
 /// Reallocates `v` to its size plus `spare` when it holds more than 1/16 beyond that.
@@ -607,8 +616,7 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
 
         stage(0.05f, "cleaning: merging vertices");
         const std::vector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, r);
-        for (Tri& t : tris)
-            for (uint32_t& v : t) v = rep[v];
+        renumber(tris, rep);
         stage(0.2f, "cleaning: degenerate and duplicate faces");
         dropDegenerate(mesh.positions, tris, tol, r);
         dropDuplicateFaces(mesh.positions.size(), tris, r);
@@ -627,8 +635,7 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
         }
         // Every finite vertex is either merged away, kept, or isolated.
         r.isolatedVertices = r.inputVertices - r.nonFiniteVertices - r.mergedVertices - pos.size();
-        for (Tri& t : tris)
-            for (uint32_t& v : t) v = newIndex[v];
+        renumber(tris, newIndex);
     }
     std::vector<glm::vec3>().swap(mesh.positions); // computeNormals writes them anew
     std::vector<glm::vec3>().swap(mesh.normals);

@@ -1,5 +1,7 @@
 #include "geometry/io/stl_binary.h"
 
+#include "geometry/scene/parallel_ranges.h"
+
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -114,6 +116,18 @@ public:
             }
         }
     }
+    /// The vertex of `k` if the table holds it, else kEmpty (never one for a non-finite key). Only
+    /// reads: any number of threads may look up at once.
+    [[nodiscard]] uint32_t find(const Key& k) const noexcept {
+        if (!finite(k)) return kEmpty;
+        const size_t mask = slots_.size() - 1;
+        for (size_t s = hashOf(k) & mask;; s = (s + 1) & mask) {
+            const uint32_t id = slots_[s];
+            if (id == kEmpty || keys_[id] == k) return id;
+        }
+    }
+    /// A new vertex for `k`, left out of the table: for keys that no later search will look for.
+    uint32_t append(const Key& k) { return push(k); }
     /// Starts loading the slot where `k`'s search begins: the table is far larger than the caches.
     void prefetch(const Key& k) const noexcept { __builtin_prefetch(&slots_[hashOf(k) & (slots_.size() - 1)]); }
     [[nodiscard]] const std::vector<Key>& keys() const noexcept { return keys_; }
@@ -200,13 +214,30 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
     for (unsigned i = 1; i < threads; ++i) {
         const std::vector<Key>& local = ranges[i].welder.keys();
         std::vector<uint32_t> global(local.size());
+        // Looked up on every core (the table is only read), then numbered in order: a key not found
+        // is a new vertex (a range's keys are distinct), and only a range that others follow needs
+        // its new keys in the table.
+        scene::forEachRange(local.size(), unsigned(std::clamp<size_t>(local.size() / kFacetsPerThreadMin, 1, threads)),
+                            [&](unsigned, size_t b, size_t e) {
+                                for (size_t v = b; v < e; ++v) global[v] = all.find(local[v]);
+                            });
+        const bool lastRange = i + 1 == threads;
         for (size_t v = 0; v < local.size(); ++v) {
-            bool seen = false;
-            global[v] = all.add(local[v], seen);
-            welded += seen;
+            if (global[v] != kEmpty) {
+                ++welded;
+                continue;
+            }
+            bool seen = false; // cannot be: the key was not found
+            global[v] = lastRange ? all.append(local[v]) : all.add(local[v], seen);
         }
         welded += ranges[i].welded;
-        for (size_t j = 3 * ranges[i].first; j < 3 * ranges[i].last; ++j) mesh.indices[j] = global[mesh.indices[j]];
+        const RangeWeld& r = ranges[i];
+        scene::forEachRange(r.last - r.first,
+                            unsigned(std::clamp<size_t>((r.last - r.first) / kFacetsPerThreadMin, 1, threads)),
+                            [&](unsigned, size_t b, size_t e) {
+                                for (size_t j = 3 * (r.first + b); j < 3 * (r.first + e); ++j)
+                                    mesh.indices[j] = global[mesh.indices[j]];
+                            });
         ranges[i].welder = Welder(0); // its memory back before the next range
     }
     const std::vector<Key>& keys = all.keys();
