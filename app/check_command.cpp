@@ -94,20 +94,6 @@ geometry::io::SceneFile loadCaseScene(const CheckCase& c, const RenderOptions& r
     }
 }
 
-/// The scene's camera, lights and views with the case's own read on top (no meshes: they stay shared).
-geometry::io::SceneFile caseViewpoint(const CheckCase& c, const geometry::io::SceneFile& scene) {
-    geometry::io::SceneFile own;
-    own.scene.camera = scene.scene.camera;
-    own.scene.lights = scene.scene.lights;
-    own.views = scene.views;
-    try {
-        geometry::io::applyViewKeys(own, c.viewKeys, c.where);
-    } catch (const geometry::io::SceneFileError& e) { // "cases[i]: camera.eye: problem"
-        throw CheckFileError("", e.what());
-    }
-    return own;
-}
-
 /// Resolves and reads everything a case needs (scenes, presets, goldens) and checks its view, so a
 /// bad check file fails before anything renders. Throws CheckFileError.
 std::vector<PreparedCase> prepare(const CheckFile& file, const fs::path& folder, const CheckOptions& o,

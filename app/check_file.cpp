@@ -2,6 +2,7 @@
 //   [SECTION] Typed values with JSON paths ... describe, Reader
 //   [SECTION] Cases .......................... readBound, readExpect, readGolden, readCase
 //   [SECTION] The file ....................... parseCheckFile, cross-case rules
+//   [SECTION] Viewpoints ..................... caseViewpoint
 //   [SECTION] Settings and figures ........... applySet, requireKeys, evaluateCase
 
 #include "check_file.h"
@@ -257,6 +258,39 @@ CheckFile parseCheckFile(const json& j) {
             checkReference(file, c, e, e.bound.maxRatioTo, "max_ratio_to");
         }
     return file;
+}
+
+// [SECTION] Viewpoints
+
+geometry::io::SceneFile caseViewpoint(const CheckCase& c, const geometry::io::SceneFile& scene) {
+    geometry::io::SceneFile own;
+    own.scene.camera = scene.scene.camera;
+    own.scene.lights = scene.scene.lights;
+    own.views = scene.views;
+    try {
+        geometry::io::applyViewKeys(own, c.viewKeys, c.where);
+        // A scene's view named by the case: its camera and light are where the case's own keys start.
+        const json* caseViews = c.viewKeys.contains("views") ? &c.viewKeys["views"] : nullptr;
+        const bool ownView = caseViews && caseViews->is_object() && caseViews->contains(c.view);
+        const auto view = scene.views.find(c.view);
+        json keys = json::object();
+        for (const char* key : {"camera", "light", "lights"})
+            if (c.viewKeys.contains(key)) keys[key] = c.viewKeys[key];
+        if (!ownView && view != scene.views.end() && !keys.empty()) {
+            geometry::io::SceneFile base;
+            base.scene.camera = view->second.camera;
+            base.scene.lights = scene.scene.lights;
+            if (base.scene.lights.empty()) base.scene.lights.push_back(view->second.light);
+            else base.scene.lights[0] = view->second.light;
+            geometry::io::applyViewKeys(base, keys, c.where);
+            own.scene.camera = base.scene.camera;
+            own.scene.lights = base.scene.lights;
+            own.views[c.view] = {base.scene.camera, base.scene.lights[0]};
+        }
+    } catch (const geometry::io::SceneFileError& e) { // "cases[i]: camera.eye: problem"
+        throw CheckFileError("", e.what());
+    }
+    return own;
 }
 
 // [SECTION] Settings and figures

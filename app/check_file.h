@@ -20,6 +20,7 @@
 // Errors are CheckFileError, whose message starts with the JSON path of the offending value.
 #include "check_expect.h"
 
+#include "geometry/io/scene_file.h"
 #include "geometry/io/up_axis.h"
 #include "geometry/shadow/settings.h"
 #include "geometry/shadow/shadow_plan.h"
@@ -79,6 +80,14 @@ struct CheckFile {
 /// ratio cases that exist (and are not the case itself), min <= max, truth figures in cases without
 /// truth. Throws CheckFileError.
 [[nodiscard]] CheckFile parseCheckFile(const nlohmann::json& j);
+
+/// The scene's camera, lights and views with the case's own "camera", "light"/"lights" and "views" read
+/// on top by the scene file's rules (no meshes: they stay shared). When the case's `view` names one of
+/// the scene's views (not one of its own "views", which already start from its camera and light), the
+/// case's camera and light(s) are read over that view's instead of the scene's, member by member, and
+/// the view is replaced by the result: the case's own keys are the more specific, so rendering with
+/// `view` (applyView) keeps them. Throws CheckFileError.
+[[nodiscard]] geometry::io::SceneFile caseViewpoint(const CheckCase& c, const geometry::io::SceneFile& scene);
 
 /// `base` with the case's "set" applied (after its presets). Throws CheckFileError naming the key.
 [[nodiscard]] geometry::shadow::ShadowSettings applySet(const CheckCase& c, geometry::shadow::ShadowSettings base);

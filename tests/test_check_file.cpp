@@ -2,6 +2,7 @@
 // app/check_expect.h): key paths, bounds and their verdict texts (NaN fails every bound), and a
 // one-line error naming the JSON path for each kind of bad file.
 #include "app/check_file.h"
+#include "app/render_options.h"
 
 #include <gtest/gtest.h>
 
@@ -270,4 +271,76 @@ TEST(CheckFile, MissingFiguresAreReportedWithTheirPath) {
     // When a lacks the figure, the check file is wrong.
     const json empty = json::object();
     EXPECT_THROW((void)app::evaluateCase(f, 1, {&empty, &bMetrics}), CheckFileError);
+}
+
+namespace {
+
+/// A scene without meshes: its camera and sun, and a view "side" with its own camera and light.
+geometry::io::SceneFile viewpointScene() {
+    geometry::io::SceneFile f;
+    f.scene.camera.eye = {0.f, 10.f, 10.f};
+    f.scene.camera.fovYDeg = 60.f;
+    f.scene.lights = {geometry::scene::Light{{0.f, -1.f, 0.f}}};
+    geometry::scene::Camera side;
+    side.eye = {10.f, 1.f, 0.f};
+    side.target = {0.f, 1.f, 0.f};
+    side.fovYDeg = 30.f;
+    side.near = 1.f;
+    side.far = 50.f;
+    f.views["side"] = {side, geometry::scene::Light{{1.f, -1.f, 0.f}}};
+    return f;
+}
+
+/// What case `caseJson` renders from: its viewpoint over the scene, then its `view` applied, as `check` does.
+geometry::scene::Scene renderedViewpoint(const std::string& caseJson) {
+    const app::CheckFile file = app::parseCheckFile(json::parse(R"({"cases": [)" + caseJson + "]}"));
+    const app::CheckCase& c = file.cases.at(0);
+    geometry::io::SceneFile scene = viewpointScene();
+    const geometry::io::SceneFile own = app::caseViewpoint(c, scene);
+    scene.scene.camera = own.scene.camera;
+    scene.scene.lights = own.scene.lights;
+    scene.views = own.views;
+    app::RenderOptions options;
+    options.view = c.view;
+    app::applyView(scene, options);
+    return scene.scene;
+}
+
+} // namespace
+
+// A case's own camera and light are more specific than the view it names: they are read over the
+// view's, member by member (the view keeps what the case does not give), never silently dropped.
+TEST(CheckFile, TheCaseOwnCameraAndLightOverrideItsNamedView) {
+    const geometry::scene::Scene s = renderedViewpoint(
+        R"({"name": "a", "view": "side", "camera": {"eye": [5, 5, 5]}, "light": {"direction": [0, -1, 1]}})");
+    EXPECT_EQ(s.camera.eye, glm::vec3(5.f, 5.f, 5.f)) << "the case's eye";
+    EXPECT_EQ(s.camera.target, glm::vec3(0.f, 1.f, 0.f)) << "the view's target";
+    EXPECT_EQ(s.camera.fovYDeg, 30.f) << "the view's fov_y";
+    EXPECT_EQ(s.camera.far, 50.f) << "the view's far";
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_NEAR(glm::dot(s.lights[0].l(), glm::normalize(glm::vec3(0.f, -1.f, 1.f))), 1.f, 1e-6f) << "the case's light";
+
+    // A camera alone keeps the view's light; "lights" start from the view's light.
+    const geometry::scene::Scene cameraOnly =
+        renderedViewpoint(R"({"name": "a", "view": "side", "camera": {"fov_y": 45}})");
+    EXPECT_EQ(cameraOnly.camera.eye, glm::vec3(10.f, 1.f, 0.f));
+    EXPECT_EQ(cameraOnly.camera.fovYDeg, 45.f);
+    EXPECT_NEAR(glm::dot(cameraOnly.lights.at(0).l(), glm::normalize(glm::vec3(1.f, -1.f, 0.f))), 1.f, 1e-6f);
+    const geometry::scene::Scene lights =
+        renderedViewpoint(R"({"name": "a", "view": "side", "lights": [{"radius": 0.5}, {"direction": [0, 0, -1]}]})");
+    ASSERT_EQ(lights.lights.size(), 2u);
+    EXPECT_NEAR(glm::dot(lights.lights[0].l(), glm::normalize(glm::vec3(1.f, -1.f, 0.f))), 1.f, 1e-6f);
+    EXPECT_EQ(lights.lights[0].radius, 0.5f);
+    EXPECT_EQ(lights.camera.eye, glm::vec3(10.f, 1.f, 0.f)) << "no camera of its own: the view's";
+
+    // A view of the case's own "views" starts from the case's camera, as a scene file's views do: it wins.
+    const geometry::scene::Scene ownView = renderedViewpoint(
+        R"({"name": "a", "view": "mine", "camera": {"eye": [5, 5, 5], "fov_y": 40},
+            "views": {"mine": {"camera": {"eye": [1, 2, 3]}}}})");
+    EXPECT_EQ(ownView.camera.eye, glm::vec3(1.f, 2.f, 3.f));
+    EXPECT_EQ(ownView.camera.fovYDeg, 40.f);
+    // Without a view, the case's keys are read over the scene's camera.
+    const geometry::scene::Scene noView = renderedViewpoint(R"({"name": "a", "camera": {"fov_y": 20}})");
+    EXPECT_EQ(noView.camera.eye, glm::vec3(0.f, 10.f, 10.f));
+    EXPECT_EQ(noView.camera.fovYDeg, 20.f);
 }
