@@ -4,6 +4,7 @@
 #include "dashboard_setup.h"
 #include "geometry/analysis/ground_truth.h"
 #include "geometry/analysis/heatmap.h"
+#include "geometry/analysis/stability_metrics.h"
 #include "geometry/analysis/view_images.h"
 #include "headless_frame.h"
 #include "light_metrics.h"
@@ -19,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -144,6 +146,20 @@ bool wants(const ExportOptions& e, const std::string& view) {
     return std::find(e.views.begin(), e.views.end(), view) != e.views.end();
 }
 
+/// metrics.json's `seam`: the jump of m across split boundaries, seamStats as `sweep path` records it
+/// per frame (its seam_* columns). A figure over no pixels is null (NaN), so a bound on it fails.
+nlohmann::json seamMetrics(const Inspection& in, const glm::vec3& eye) {
+    const geometry::analysis::SeamStats s =
+        geometry::analysis::seamStats(in.m, in.aux, in.receiver, in.positions, in.normals, eye, in.width, in.height);
+    const auto figure = [](double v, size_t pairs) { return pairs ? v : std::numeric_limits<double>::quiet_NaN(); };
+    return {{"median", figure(s.median, s.pairs)},
+            {"p95", figure(s.p95, s.pairs)},
+            {"pairs", s.pairs},
+            {"raw_median", figure(s.rawMedian, s.pairs)},
+            {"baseline", figure(s.baselineMedian, s.baselinePairs)},
+            {"baseline_pairs", s.baselinePairs}};
+}
+
 } // namespace
 
 void validateExports(const ExportOptions& e) {
@@ -224,6 +240,7 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
     }
     nlohmann::json j = frameMetrics(f, o);
     addInspectionMetrics(j, in);
+    if (f.plan.splits.size() >= 2) j["seam"] = seamMetrics(in, f.scene.camera.eye);
     if (const std::string errors = renderer::takeGlErrors(); !errors.empty())
         throw std::runtime_error("GL error: " + errors);
     addLightMetrics(j, f, o.size, views, in, truth.get(),

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,8 @@ TEST(Cli, RenderWritesPngsAndMetrics) {
     EXPECT_LE(gamma, 90.0);
     for (const char* pass : {"shadow", "eye", "total"})
         EXPECT_GT(m.at("timing_ms").at(pass).get<double>(), 0.0) << pass;
+    ASSERT_EQ(m.at("splits").size(), 1u);
+    EXPECT_FALSE(m.contains("seam")) << "one split: no boundary, no seam figure";
 }
 
 TEST(Cli, CameraAndLightOptionsChangeTheFrame) {
@@ -134,6 +137,45 @@ TEST(Cli, RenderWritesEveryViewAndRawValues) {
     for (const auto& s : j.at("splits"))
         for (const char* k : {"near", "far", "n_prime", "lambda", "resolution", "triangles", "utilization"})
             EXPECT_TRUE(s.contains(k)) << k;
+    // Two splits: the seam across their boundary (sweep path's seam_* columns), on the plane's ground.
+    const nlohmann::json& seam = j.at("seam");
+    ASSERT_GT(seam.at("pairs").get<int>(), 0);
+    EXPECT_GE(seam.at("median").get<double>(), 1.0);
+    EXPECT_GE(seam.at("p95").get<double>(), seam.at("median").get<double>());
+    EXPECT_GE(seam.at("raw_median").get<double>(), 1.0);
+    EXPECT_GT(seam.at("baseline_pairs").get<int>(), 0);
+    EXPECT_LT(seam.at("baseline").get<double>(), 1.1) << "inside one split, m is smooth";
+}
+
+// render's metrics.json `seam` is the figure sweep path records: the path's first frame is the
+// platform's `grazing` view, so the two commands measure the same frame with the same function.
+TEST(Cli, RenderWritesTheSeamSweepPathRecords) {
+    const std::string scene = std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/platform.json";
+    const std::string settings = "--backend osmesa --scene " + scene +
+                                 " --size 160x120 --shadow-res 512 --set splits.count=3 --set splits.scheme=log "
+                                 "--set warp.method=glispsm ";
+    const fs::path path = freshDir("seam_path");
+    const CommandResult walk = run("sweep path " + settings + "--path grazing_walk --frames 2 --out " + path.string());
+    ASSERT_EQ(walk.exitCode, 0) << walk.output;
+    std::ifstream csv(path / "path.csv");
+    std::string header, first;
+    ASSERT_TRUE(std::getline(csv, header) && std::getline(csv, first));
+    std::map<std::string, double> row; // frame 0's columns
+    std::stringstream names(header), values(first);
+    for (std::string name, value; std::getline(names, name, ',') && std::getline(values, value, ',');)
+        row[name] = std::stod(value);
+    const fs::path frame = freshDir("seam_render");
+    const CommandResult render = run("render " + settings + "--view grazing --views eye --out " + frame.string());
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    std::ifstream in(frame / "metrics.json");
+    const nlohmann::json seam = nlohmann::json::parse(in).at("seam");
+    ASSERT_GE(row.at("seam_pairs"), 3);
+    EXPECT_EQ(seam.at("pairs").get<double>(), row.at("seam_pairs"));
+    EXPECT_DOUBLE_EQ(seam.at("median").get<double>(), row.at("seam_median"));
+    EXPECT_DOUBLE_EQ(seam.at("p95").get<double>(), row.at("seam_p95"));
+    EXPECT_DOUBLE_EQ(seam.at("raw_median").get<double>(), row.at("seam_raw_median"));
+    EXPECT_DOUBLE_EQ(seam.at("baseline").get<double>(), row.at("seam_baseline"));
+    EXPECT_GT(seam.at("median").get<double>(), 2) << "log splits at a grazing sun leave a seam";
 }
 
 TEST(Cli, TruthViewWithoutTruthIsAnError) {
