@@ -1,0 +1,1 @@
+"""One module per source paper for scripts/reproduce-papers; context.py is what they share."""
