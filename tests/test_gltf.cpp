@@ -20,6 +20,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -195,6 +196,46 @@ TEST_F(GltfTest, GlbWithBinChunk) {
     EXPECT_EQ(model.format, "glb");
     ASSERT_EQ(model.meshes.size(), 1u);
     EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
+}
+
+TEST_F(GltfTest, PrimitivesReadTheVerticesTheyUseDenselyOrSparsely) {
+    // One accessor of 64 grid points shared by a primitive that uses all of them (numbered by a table
+    // over the accessor) and one that uses three (numbered by sorting): both read exactly their
+    // triangles' corners.
+    std::vector<float> grid;
+    for (int k = 0; k < 64; ++k) grid.insert(grid.end(), {float(k % 8), float(k / 8), 0.f});
+    std::vector<uint32_t> dense;
+    for (uint32_t j = 0; j < 7; ++j)
+        for (uint32_t i = 0; i < 7; ++i) {
+            const uint32_t a = 8 * j + i;
+            dense.insert(dense.end(), {a, a + 1, a + 9, a, a + 9, a + 8});
+        }
+    const std::vector<uint32_t> sparse = {50, 7, 33};
+    Bin bin;
+    const size_t gridAt = bin.add(grid), denseAt = bin.add(dense), sparseAt = bin.add(sparse);
+    json doc = triangleDoc(bin.bytes, "");
+    doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteOffset", gridAt}, {"byteLength", grid.size() * 4}},
+                                      {{"buffer", 0}, {"byteOffset", denseAt}, {"byteLength", dense.size() * 4}},
+                                      {{"buffer", 0}, {"byteOffset", sparseAt}, {"byteLength", sparse.size() * 4}}});
+    doc["accessors"] =
+        json::array({{{"bufferView", 0}, {"componentType", kFloat}, {"count", 64}, {"type", "VEC3"}},
+                     {{"bufferView", 1}, {"componentType", kUInt}, {"count", dense.size()}, {"type", "SCALAR"}},
+                     {{"bufferView", 2}, {"componentType", kUInt}, {"count", sparse.size()}, {"type", "SCALAR"}}});
+    doc["meshes"][0]["primitives"] = json::array({primitive(0, 1), primitive(0, 2)});
+    const LoadedModel model = geometry::io::loadGltf(writeBytes("shared.glb", makeGlb(doc.dump(), bin.bytes)));
+    ASSERT_EQ(model.meshes.size(), 2u);
+    const auto corners = [](const geometry::scene::Mesh& m) {
+        std::multiset<std::array<float, 3>> out;
+        for (const uint32_t i : m.indices) out.insert({m.positions[i].x, m.positions[i].y, m.positions[i].z});
+        return out;
+    };
+    const auto expected = [&](const std::vector<uint32_t>& indices) {
+        std::multiset<std::array<float, 3>> out;
+        for (const uint32_t i : indices) out.insert({grid[3 * i], grid[3 * i + 1], grid[3 * i + 2]});
+        return out;
+    };
+    EXPECT_EQ(corners(model.meshes[0]), expected(dense));
+    EXPECT_EQ(corners(model.meshes[1]), expected(sparse));
 }
 
 TEST_F(GltfTest, NonFinitePositionsAreCleanedNotFatal) {

@@ -749,11 +749,24 @@ std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, Accesso
         sequence = gltf::readIndices(accessors.view(prim.indices), positions.count, where);
         // Read only the vertices referenced: primitives often share one large vertex accessor,
         // and copying it whole per primitive would multiply memory by the primitive count.
-        vertices = sequence;
-        std::sort(vertices.begin(), vertices.end());
-        vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-        for (uint32_t& i : sequence)
-            i = uint32_t(std::lower_bound(vertices.begin(), vertices.end(), i) - vertices.begin());
+        if (sequence.size() >= positions.count / 8) {
+            // Most of the accessor is used (one mesh, one primitive: the common large file): a
+            // table over the accessor numbers them in one linear pass, in the same ascending order.
+            std::vector<uint32_t> renumbered(positions.count, 0);
+            for (const uint32_t i : sequence) renumbered[i] = 1;
+            for (uint32_t i = 0; i < renumbered.size(); ++i)
+                if (renumbered[i]) {
+                    renumbered[i] = uint32_t(vertices.size());
+                    vertices.push_back(i);
+                }
+            for (uint32_t& i : sequence) i = renumbered[i];
+        } else {
+            vertices = sequence;
+            std::sort(vertices.begin(), vertices.end());
+            vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+            for (uint32_t& i : sequence)
+                i = uint32_t(std::lower_bound(vertices.begin(), vertices.end(), i) - vertices.begin());
+        }
     } else {
         // positions.count fits uint32: bounded by the buffer (>= 3 bytes a vertex) or, without
         // one, by Accessors::view.
