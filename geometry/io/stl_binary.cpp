@@ -189,10 +189,12 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
                           const Progress& progress) {
     const size_t n = (size - kHeaderBytes) / kFacetBytes;
     const MappedFile file(path, size);
-    if (threads == 0) // automatic: as many as the cores, each with enough facets to be worth it
-        threads = unsigned(
-            std::clamp<size_t>(n / kFacetsPerThreadMin, 1, std::clamp(std::thread::hardware_concurrency(), 1u, 16u)));
+    if (threads == 0) threads = scene::rangeThreads(n, kFacetsPerThreadMin); // automatic: the loader's thread rule
     threads = unsigned(std::clamp<size_t>(threads, 1, std::max<size_t>(n, 1)));
+    // Threads for a later pass over m items: the same rule, never more than the weld used.
+    const auto threadsFor = [threads](size_t m) {
+        return std::min(threads, scene::rangeThreads(m, kFacetsPerThreadMin));
+    };
 
     scene::Mesh mesh;
     mesh.indices.resize(3 * n);
@@ -217,10 +219,9 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
         // Looked up on every core (the table is only read), then numbered in order: a key not found
         // is a new vertex (a range's keys are distinct), and only a range that others follow needs
         // its new keys in the table.
-        scene::forEachRange(local.size(), unsigned(std::clamp<size_t>(local.size() / kFacetsPerThreadMin, 1, threads)),
-                            [&](unsigned, size_t b, size_t e) {
-                                for (size_t v = b; v < e; ++v) global[v] = all.find(local[v]);
-                            });
+        scene::forEachRange(local.size(), threadsFor(local.size()), [&](unsigned, size_t b, size_t e) {
+            for (size_t v = b; v < e; ++v) global[v] = all.find(local[v]);
+        });
         const bool lastRange = i + 1 == threads;
         for (size_t v = 0; v < local.size(); ++v) {
             if (global[v] != kEmpty) {
@@ -232,12 +233,9 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
         }
         welded += ranges[i].welded;
         const RangeWeld& r = ranges[i];
-        scene::forEachRange(r.last - r.first,
-                            unsigned(std::clamp<size_t>((r.last - r.first) / kFacetsPerThreadMin, 1, threads)),
-                            [&](unsigned, size_t b, size_t e) {
-                                for (size_t j = 3 * (r.first + b); j < 3 * (r.first + e); ++j)
-                                    mesh.indices[j] = global[mesh.indices[j]];
-                            });
+        scene::forEachRange(r.last - r.first, threadsFor(r.last - r.first), [&](unsigned, size_t b, size_t e) {
+            for (size_t j = 3 * (r.first + b); j < 3 * (r.first + e); ++j) mesh.indices[j] = global[mesh.indices[j]];
+        });
         ranges[i].welder = Welder(0); // its memory back before the next range
     }
     const std::vector<Key>& keys = all.keys();

@@ -74,8 +74,11 @@ struct Splitter {
     }
 };
 
-/// Levels of the split that may start a thread: enough for one per core, ⌈log2 cores⌉.
-int spawnLevels() noexcept { return int(std::bit_width(std::max(1u, std::thread::hardware_concurrency()) - 1)); }
+/// Levels of the split that may start a thread: enough for one per loader thread (rangeThreadCap,
+/// the cores unless a test sets fewer), ⌈log2 threads⌉.
+int spawnLevels() noexcept {
+    return int(std::bit_width(std::max(1u, rangeThreadCap().load(std::memory_order_relaxed)) - 1));
+}
 
 /// World bounds of a run's triangles: the box of the transformed vertices (a transformed local box
 /// is loose under rotation).
