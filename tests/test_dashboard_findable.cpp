@@ -240,9 +240,12 @@ TEST_F(DashboardFindable, ASettingThatDoesNotApplyIsGreyed) {
     d_->step({});
     scrollTo("bias.constant");
     EXPECT_TRUE(disabled("bias.constant")) << map().dump();
+    scrollTo("bias.slope"); // the widget map lists the rows on screen
     EXPECT_FALSE(disabled("bias.slope"));
     EXPECT_FALSE(disabled("bias.normal_offset"));
+    scrollTo("bias.z_max");
     EXPECT_TRUE(disabled("bias.z_max"));
+    scrollTo("bias.constant");
     // A click on the greyed slider changes nothing.
     const float before = dash().state().settings[0].bias.constant;
     click("bias.constant");
@@ -250,6 +253,7 @@ TEST_F(DashboardFindable, ASettingThatDoesNotApplyIsGreyed) {
     dash().state().settings[0].bias.type = geometry::shadow::BiasType::Constant;
     d_->step({});
     EXPECT_FALSE(disabled("bias.constant"));
+    scrollTo("bias.slope");
     EXPECT_TRUE(disabled("bias.slope"));
 }
 

@@ -61,6 +61,7 @@ ShadowSettings baseWhereApplies(const SettingInfo& info) {
         add([&](ShadowSettings& s) { s.splits.count = 3, s.splits.scheme = SplitScheme(i); });
     add([](ShadowSettings& s) { s.filter.eyeBlurIterations = 1; });
     add([](ShadowSettings& s) { s.casters.lod = CasterLod::Auto; });
+    add([](ShadowSettings& s) { s.technique = Technique::Virtual; });
     for (const ShadowSettings& s : bases)
         if (info.appliesTo(s)) return s;
     ADD_FAILURE() << info.key << " applies under none of the test's settings";

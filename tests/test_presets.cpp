@@ -142,7 +142,7 @@ TEST(Presets, SaveWritesPrettyJsonWithNameFirst) {
     geometry::io::savePreset(path, ShadowSettings{}, "mine", "what it is");
     std::ifstream in(path, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_EQ(text.rfind("{\n  \"name\": \"mine\",\n  \"description\": \"what it is\",\n  \"shadow_map\"", 0), 0u)
+    EXPECT_EQ(text.rfind("{\n  \"name\": \"mine\",\n  \"description\": \"what it is\",\n  \"technique\"", 0), 0u)
         << text;
     EXPECT_EQ(text.back(), '\n');
     EXPECT_EQ(json::parse(text).at("name"), "mine");

@@ -1,3 +1,4 @@
+#include "geometry/shadow/setting_relevance.h"
 #include "geometry/shadow/settings.h"
 
 #include <gtest/gtest.h>
@@ -100,6 +101,35 @@ TEST(Settings, ValidateReportsOutOfRangeStructValues) {
     EXPECT_NE(problems[0].find("splits.count"), std::string::npos);
     EXPECT_NE(problems[1].find("splits.alpha"), std::string::npos);
     EXPECT_THROW(validateOrThrow(s), std::invalid_argument);
+}
+
+// The virtual map's pages tile its levels: sizes must be powers of two, a level at least 4 × 4 pages.
+// Under technique = virtual the fitted maps' settings have no effect, and the warnings say so.
+TEST(Settings, VirtualSizesArePowersOfTwoAndTheFittedMapsSettingsStepAside) {
+    ShadowSettings s;
+    s.technique = Technique::Virtual;
+    EXPECT_TRUE(validate(s).empty());
+    s.virtualMap.size = 12000;
+    s.virtualMap.pageSize = 100;
+    const auto problems = validate(s);
+    ASSERT_EQ(problems.size(), 2u);
+    EXPECT_EQ(problems[0], "virtual.size: 12000 is not a power of two");
+    EXPECT_EQ(problems[1], "virtual.page_size: 100 is not a power of two");
+    s.virtualMap = {};
+    s.virtualMap.size = 256;
+    s.virtualMap.pageSize = 128;
+    EXPECT_NE(validate(s).at(0).find("more than a quarter of virtual.size"), std::string::npos);
+    s.virtualMap = {};
+    s.splits.count = 3;
+    EXPECT_FALSE(settingMatters(s, "splits.count"));
+    EXPECT_TRUE(settingMatters(s, "virtual.pool_pages"));
+    EXPECT_TRUE(settingMatters(s, "filter.kernel") == settingMatters(ShadowSettings{}, "filter.kernel"));
+    const auto warnings = inertSettingWarnings(s);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], "splits.count = 3 has no effect (technique = virtual)");
+    s.technique = Technique::Maps;
+    EXPECT_FALSE(settingMatters(s, "virtual.pool_pages"));
+    EXPECT_TRUE(settingMatters(s, "splits.count"));
 }
 
 TEST(Settings, FrustumValidationNamesTheKey) {

@@ -1,11 +1,17 @@
 // Virtual shadow maps' page planning (geometry/shadow/virtual_pages.h): levels, the level a footprint
-// asks for, the pages requested, and the pool's allocation, caching and coarsening.
+// asks for, the pages requested, and the pool's allocation, caching and coarsening; the virtual plan
+// (virtual_plan.h) and what planShadows does under technique = virtual.
 #include "geometry/shadow/virtual_pages.h"
+
+#include "geometry/shadow/shadow_plan.h"
+#include "geometry/shadow/virtual_plan.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 using namespace geometry::shadow;
 
@@ -212,4 +218,87 @@ TEST(VirtualPages, NonFiniteSamplesAreUncoveredNotRequested) {
     const PageRequests r = requestPages(bad, f, levels, c);
     EXPECT_EQ(r.uncovered, 2u); // the NaN footprint still gets level 0 at a finite place
     EXPECT_EQ(r.pages.size(), 1u);
+}
+
+// planVirtual (virtual_plan.h): a page's projection maps its square to the clip square and S's depth
+// range to [−1, 1]; the coarsest level covers S from any eye above it; the content ignores the eye.
+TEST(VirtualPlan, PagesProjectTheirSquareAndTheCoarsestLevelCoversTheScene) {
+    geometry::scene::Aabb S;
+    S.add({-40.f, 0.f, -25.f});
+    S.add({60.f, 12.f, 30.f});
+    VirtualSettings settings;
+    settings.size = 4096;
+    settings.pageSize = 128;
+    settings.levels = 6;
+    const glm::vec3 l = glm::normalize(glm::vec3(-0.5f, -1.f, 0.3f));
+    for (const glm::vec3 eye : {glm::vec3(-40.f, 14.f, -25.f), glm::vec3(60.f, 2.f, 30.f), glm::vec3(5.f, 30.f, 0.f)}) {
+        const VirtualPlan p = planVirtual(settings, S, eye, l);
+        const PageKey k{3, p.levels[3].firstPageX + 5, p.levels[3].firstPageY + 7};
+        const glm::dmat4 m = p.pageViewProj(k);
+        const double w = p.levels[3].pageWorld;
+        // The page's lower-left corner on S's near depth, and its upper-right on S's far depth.
+        const glm::dvec3 corner = p.frame.right * (double(k.x) * w) + p.frame.up * (double(k.y) * w);
+        const glm::dvec3 nearCorner = corner + p.frame.l * p.depthLo;
+        const glm::dvec3 farCorner = corner + (p.frame.right + p.frame.up) * w + p.frame.l * p.depthHi;
+        const glm::dvec4 a = m * glm::dvec4(nearCorner, 1.0), b = m * glm::dvec4(farCorner, 1.0);
+        EXPECT_NEAR(a.x, -1.0, 1e-9);
+        EXPECT_NEAR(a.y, -1.0, 1e-9);
+        EXPECT_NEAR(a.z, -1.0, 1e-9);
+        EXPECT_NEAR(b.x, 1.0, 1e-9);
+        EXPECT_NEAR(b.y, 1.0, 1e-9);
+        EXPECT_NEAR(b.z, 1.0, 1e-9);
+        EXPECT_NEAR(p.depthOf(nearCorner), 0.0, 1e-12);
+        // Every corner of S lies in the coarsest square, whatever the eye above S.
+        for (int i = 0; i < 8; ++i) {
+            const glm::dvec3 c((i & 1) ? S.hi.x : S.lo.x, (i & 2) ? S.hi.y : S.lo.y, (i & 4) ? S.hi.z : S.lo.z);
+            EXPECT_TRUE(pageAt(p.frame.project(c), settings.levels - 1, p.levels, p.config).has_value());
+        }
+        EXPECT_EQ(p.content, planVirtual(settings, S, glm::vec3(0.f), l).content) << "the eye moves no texel";
+    }
+    EXPECT_NE(planVirtual(settings, S, glm::vec3(0.f), l).content,
+              planVirtual(settings, S, glm::vec3(0.f), glm::normalize(l + glm::vec3(0.01f, 0.f, 0.f))).content);
+}
+
+// planShadows under technique = virtual: a directional light gets the virtual plan; the biases and
+// filters a paged map cannot do become the nearest it can, each with a warning; a spot light keeps
+// fitted maps and says so.
+TEST(VirtualPlan, WhatAPagedMapCannotDoIsReplacedWithAWarning) {
+    geometry::scene::Aabb S;
+    S.add({-10.f, 0.f, -10.f});
+    S.add({10.f, 5.f, 10.f});
+    geometry::scene::Camera camera;
+    camera.eye = {0.f, 3.f, 12.f};
+    camera.target = {0.f, 0.f, 0.f};
+    geometry::scene::Light sun;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.f, 0.2f));
+    ShadowSettings s;
+    s.technique = Technique::Virtual;
+    s.bias.type = BiasType::DualDepth;
+    s.filter.type = FilterType::Evsm4;
+    const ShadowPlan plan = planShadows(s, S, camera, sun, Viewport{64, 48});
+    ASSERT_TRUE(plan.virtualMap.enabled);
+    EXPECT_EQ(plan.settings.bias.type, BiasType::Constant);
+    EXPECT_EQ(plan.settings.filter.type, FilterType::Hw2x2);
+    EXPECT_FALSE(plan.linearDepth) << "orthographic page depth is linear already";
+    const auto warned = [&](std::string_view what) {
+        return std::any_of(plan.warnings.begin(), plan.warnings.end(),
+                           [&](const std::string& w) { return w.find(what) != std::string::npos; });
+    };
+    EXPECT_TRUE(warned("bias.type = dual_depth needs a second depth layer"));
+    EXPECT_TRUE(warned("filter.type = evsm4 blurs its moments across page borders"));
+    s.bias.type = BiasType::SlopeNormalOffset;
+    s.filter.type = FilterType::Pcf;
+    const ShadowPlan kept = planShadows(s, S, camera, sun, Viewport{64, 48});
+    EXPECT_EQ(kept.settings.bias.type, BiasType::SlopeNormalOffset);
+    EXPECT_EQ(kept.settings.filter.type, FilterType::Pcf);
+    EXPECT_NE(kept.virtualMap.content, plan.virtualMap.content) << "polygon offset changes what a page holds";
+
+    geometry::scene::Light spot = sun;
+    spot.type = geometry::scene::LightType::Spot;
+    spot.position = {0.f, 20.f, 0.f};
+    const ShadowPlan fitted = planShadows(s, S, camera, spot, Viewport{64, 48});
+    EXPECT_FALSE(fitted.virtualMap.enabled);
+    EXPECT_TRUE(std::any_of(fitted.warnings.begin(), fitted.warnings.end(), [](const std::string& w) {
+        return w.find("technique = virtual takes a directional light") != std::string::npos;
+    }));
 }

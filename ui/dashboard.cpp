@@ -24,7 +24,9 @@ const std::vector<std::string>& controlGroups() {
 }
 
 std::string settingGroup(std::string_view key) {
-    if (key.starts_with("warp.") || key.starts_with("shadow_map.") || key.starts_with("stabilize.")) return "Warp";
+    if (key == "technique" || key.starts_with("virtual.") || key.starts_with("warp.") ||
+        key.starts_with("shadow_map.") || key.starts_with("stabilize."))
+        return "Warp";
     if (key.starts_with("splits.") || key.starts_with("focus.") || key.starts_with("casters.")) return "Partitions";
     if (key.starts_with("bias.")) return "Bias";
     if (key.starts_with("filter.") || key.starts_with("light."))

@@ -13,8 +13,10 @@ std::vector<std::string> inertSettingWarnings(const ShadowSettings& s) {
     for (const SettingInfo& info : settingsDeclaration()) {
         if (info.appliesTo(s) || info.format(s) == info.format(defaults)) continue;
         std::string line = std::string(info.key) + " = " + info.format(s) + " has no effect";
-        if (const SettingInfo* governing = findSetting(info.governedBy))
-            line += " (" + std::string(info.governedBy) + " = " + governing->format(s) + ")";
+        const std::string_view by =
+            info.mapsOnly && s.technique == Technique::Virtual ? std::string_view("technique") : info.governedBy;
+        if (const SettingInfo* governing = findSetting(by))
+            line += " (" + std::string(by) + " = " + governing->format(s) + ")";
         out.push_back(std::move(line));
     }
     return out;

@@ -1,5 +1,6 @@
 #include "geometry/shadow/settings.h"
 
+#include <bit>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -116,6 +117,14 @@ std::vector<std::string> validate(const ShadowSettings& s) {
         if (!(std::isfinite(v) && v >= info.min && v <= info.max) || (info.odd && std::fmod(v, 2.0) == 0.0))
             problems.push_back(std::string(info.key) + ": " + formatNumber(v) + " is outside " + info.rangeText());
     }
+    // The virtual map's pages tile its levels: both sides powers of two, at least 4 × 4 pages a level.
+    const auto& v = s.virtualMap;
+    for (const auto& [key, value] : {std::pair{"virtual.size", v.size}, std::pair{"virtual.page_size", v.pageSize}})
+        if (value > 0 && !std::has_single_bit(unsigned(value)))
+            problems.push_back(std::string(key) + ": " + std::to_string(value) + " is not a power of two");
+    if (v.pageSize > 0 && v.size > 0 && v.pageSize * 4 > v.size)
+        problems.push_back("virtual.page_size: " + std::to_string(v.pageSize) +
+                           " is more than a quarter of virtual.size (" + std::to_string(v.size) + ")");
     return problems;
 }
 

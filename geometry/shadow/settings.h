@@ -139,7 +139,28 @@ struct LightSettings {
     [[nodiscard]] bool operator==(const LightSettings&) const = default;
 };
 
+// technique: what holds the light's depths. Virtual shadow maps (issue 34; docs/design.md §3.11) take a
+// directional light; the other settings of the maps (warp, splits, focus, stabilization, resolution,
+// caster LOD) do not apply to them.
+#define SHADOWSCOPE_TECHNIQUES(X)                                                                                      \
+    X(Maps, "maps", "shadow maps fitted to the view: the warp, splits and focus as set")                               \
+    X(Virtual, "virtual",                                                                                              \
+      "a paged virtual shadow map: clipmap levels around the eye, of which only the pages that visible pixels "        \
+      "need are drawn, each at the level its pixels' footprint asks; directional lights")
+SHADOWSCOPE_NAMED_ENUM(Technique, "TECHNIQUE_", SHADOWSCOPE_TECHNIQUES);
+
+/// virtual.*: the virtual map's shape and its physical page pool (geometry/shadow/virtual_pages.h).
+struct VirtualSettings {
+    int size = 16384;     // virtual.size: texels along a level's side (a power of two)
+    int pageSize = 128;   // virtual.page_size: texels along a page's side (a power of two)
+    int levels = 8;       // virtual.levels: clipmap levels, each twice as wide as the one before
+    int poolPages = 1024; // virtual.pool_pages: physical pages (1024 of 128² = one 4096² depth texture)
+    [[nodiscard]] bool operator==(const VirtualSettings&) const = default;
+};
+
 struct ShadowSettings {
+    Technique technique = Technique::Maps;
+    VirtualSettings virtualMap;
     int resolution = 2048; // shadow_map.resolution
     StabilizeMode stabilize = StabilizeMode::Off;
     FocusMode focus = FocusMode::Geometry;
@@ -174,13 +195,17 @@ struct SettingInfo {
     bool logScale = false;                            // a hint for widgets
     std::function<double(const ShadowSettings&)> get; // Choice: index; Bool: 0/1
     std::function<void(ShadowSettings&, double)> set;
+    /// A setting of the fitted maps alone: it has no effect under technique = virtual.
+    bool mapsOnly = false;
     /// When the value changes anything; null: always. `governedBy` names the setting that decides.
     SettingPredicate appliesWhen = nullptr;
     std::string_view governedBy;
     /// When the shadow maps depend on the value (and it applies); null: never (an eye-side setting).
     SettingPredicate drawsMapsWhen = nullptr;
 
-    [[nodiscard]] bool appliesTo(const ShadowSettings& s) const { return !appliesWhen || appliesWhen(s); }
+    [[nodiscard]] bool appliesTo(const ShadowSettings& s) const {
+        return !(mapsOnly && s.technique == Technique::Virtual) && (!appliesWhen || appliesWhen(s));
+    }
     [[nodiscard]] bool drawsMaps(const ShadowSettings& s) const {
         return drawsMapsWhen && drawsMapsWhen(s) && appliesTo(s);
     }
@@ -197,6 +222,10 @@ struct SettingInfo {
     }
     SettingInfo&& drawsMapsIf(SettingPredicate p) && {
         drawsMapsWhen = p;
+        return std::move(*this);
+    }
+    SettingInfo&& fittedMapsOnly() && {
+        mapsOnly = true;
         return std::move(*this);
     }
     SettingInfo&& mapSide() && {
@@ -261,6 +290,7 @@ template <class Field> SettingInfo choice(std::string_view key, std::string_view
 template <BiasType... B> bool biasIs(const ShadowSettings& s) { return ((s.bias.type == B) || ...); }
 template <FilterType... F> bool filterIs(const ShadowSettings& s) { return ((s.filter.type == F) || ...); }
 template <WarpMethod... W> bool warpIs(const ShadowSettings& s) { return ((s.warp.method == W) || ...); }
+inline bool isVirtual(const ShadowSettings& s) { return s.technique == Technique::Virtual; }
 inline bool momentFilter(const ShadowSettings& s) { return isMomentFilter(s.filter.type); }
 inline bool warped(const ShadowSettings& s) { return s.warp.method != WarpMethod::Uniform; }
 inline bool split(const ShadowSettings& s) { return s.splits.count > 1; }
@@ -277,10 +307,38 @@ inline const std::vector<SettingInfo>& settingsDeclaration() {
     using B = BiasType;
     using F = FilterType;
     static const std::vector<SettingInfo> table = {
+        choice(
+            "technique", "Technique", [](auto& s) -> auto& { return s.technique; })
+            .mapSide(),
+        number(
+            "virtual.size", "virtual: texels along a clipmap level's side (a power of two; 16384 as Unreal Engine 5)",
+            Kind::Int, 256, 65536, [](auto& s) -> auto& { return s.virtualMap.size; }, true)
+            .when("technique", isVirtual)
+            .mapSide(),
+        number(
+            "virtual.page_size",
+            "virtual: texels along a page's side (a power of two, at most a quarter of virtual.size)", Kind::Int, 16,
+            1024, [](auto& s) -> auto& { return s.virtualMap.pageSize; }, true)
+            .when("technique", isVirtual)
+            .mapSide(),
+        number(
+            "virtual.levels",
+            "virtual: clipmap levels around the eye, each twice as wide as the one before; the coarsest covers the "
+            "scene",
+            Kind::Int, 1, 16, [](auto& s) -> auto& { return s.virtualMap.levels; })
+            .when("technique", isVirtual)
+            .mapSide(),
+        number(
+            "virtual.pool_pages",
+            "virtual: physical pages; when the visible pixels ask for more, the finest levels give way to coarser ones",
+            Kind::Int, 4, 16384, [](auto& s) -> auto& { return s.virtualMap.poolPages; }, true)
+            .when("technique", isVirtual)
+            .mapSide(),
         number(
             "shadow_map.resolution", "Shadow-map side in texels (first split)", Kind::Int, 16, 16384,
             [](auto& s) -> auto& { return s.resolution; }, true)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         choice(
             "bias.type", "Bias", [](auto& s) -> auto& { return s.bias.type; })
             // second depth draws back faces, midpoint and dual depth peel, the slope biases offset polygons
@@ -303,7 +361,8 @@ inline const std::vector<SettingInfo>& settingsDeclaration() {
             "bias.z_max", "dual_depth: cap on the offset z1 + min((z2-z1)/2, z_max), scene units", Kind::Float, 0, 100,
             [](auto& s) -> auto& { return s.bias.zMax; })
             .when("bias.type", biasIs<B::DualDepth>)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "bias.normal_offset",
             "normal_offset, slope_normal_offset: receiver moved along its normal by this many world-space "
@@ -320,7 +379,8 @@ inline const std::vector<SettingInfo>& settingsDeclaration() {
                   [](const ShadowSettings& s) {
                       return !(momentFilter(s) || s.filter.type == F::Pcss) || s.bias.type == B::DualDepth;
                   })
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "bias.tangent_plane",
             "pcf, disk: filter taps compare against the receiver's tangent plane (Barroso 2.2; bias.type = "
@@ -401,80 +461,97 @@ inline const std::vector<SettingInfo>& settingsDeclaration() {
             Kind::Float, 0, 20, [](auto& s) -> auto& { return s.light.angularDiameterDeg; }),
         choice(
             "stabilize.mode", "Stabilization", [](auto& s) -> auto& { return s.stabilize; })
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         choice(
             "focus.mode", "Fit the maps to", [](auto& s) -> auto& { return s.focus; })
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         choice(
             "warp.method", "Warp", [](auto& s) -> auto& { return s.warp.method; })
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         choice(
             "warp.direction", "Warp direction V_P", [](auto& s) -> auto& { return s.direction; })
             .when("warp.method", warped)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         choice(
             "warp.falloff", "glispsm below gamma_lim", [](auto& s) -> auto& { return s.warp.falloff; })
             .when("warp.method", warpIs<WarpMethod::Glispsm>)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "warp.n_prime", "manual: n' at gamma = 90 deg (scaled by 1/sin(gamma) like LiSPSM)", Kind::Float, 1e-4, 1e6,
             [](auto& s) -> auto& { return s.warp.manualNPrime; }, true)
             .when("warp.method", warpIs<WarpMethod::Manual>)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "warp.multiplier", "Multiplies the chosen method's n' (weaker warp above 1, stronger below)", Kind::Float,
             1e-3, 1e3, [](auto& s) -> auto& { return s.warp.multiplier; }, true)
             .when("warp.method", warped)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "warp.visible_far", "lispsm: visible far depth capping n + dz (Scherzer); 0 = off", Kind::Float, 0, 1e7,
             [](auto& s) -> auto& { return s.warp.visibleFar; })
             .when("warp.method", warpIs<WarpMethod::Lispsm>)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "splits.count", "Number of z-partitions (split shadow maps)", Kind::Int, 1, kMaxSplits,
             [](auto& s) -> auto& { return s.splits.count; })
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         choice(
             "splits.scheme", "Split scheme", [](auto& s) -> auto& { return s.splits.scheme; })
             .when("splits.count", split)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "splits.lambda", "practical: weight of the log scheme", Kind::Float, 0, 1,
             [](auto& s) -> auto& { return s.splits.lambda; })
             .when("splits.scheme", splitSchemeIs<SplitScheme::Practical>)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "splits.ratio", "pssm: length ratio of consecutive splits", Kind::Float, 1, 16,
             [](auto& s) -> auto& { return s.splits.ratio; })
             .when("splits.scheme", splitSchemeIs<SplitScheme::Pssm>)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "splits.alpha", "adaptive: f_i/n_i at gamma = 0 (Barroso: <= 4 without PCF, <= 2 with PCF)", Kind::Float, 1,
             1000, [](auto& s) -> auto& { return s.splits.alpha; }, true)
             .when("splits.scheme", splitSchemeIs<SplitScheme::Adaptive>)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "splits.blend",
             "Blend band: this fraction of each split's depth range before its far end fades into the next "
             "split's shadow (0 = a hard seam)",
             Kind::Float, 0, 0.3, [](auto& s) -> auto& { return s.splits.blend; })
             .when("splits.count", split)
-            .mapSide(), // the next split's map is focused over the band too
+            .mapSide()
+            .fittedMapsOnly(), // the next split's map is focused over the band too
         number(
             "splits.resolution_falloff", "Halve the shadow-map resolution for each further split", Kind::Bool, 0, 1,
             [](auto& s) -> auto& { return s.splits.resolutionFalloff; })
             .when("splits.count", split)
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         choice(
             "casters.lod", "Caster level of detail", [](auto& s) -> auto& { return s.casters.lod; })
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
         number(
             "casters.lod_texels",
             "auto: the geometric error a caster level may have, in texels of the map at the chunk", Kind::Float, 0.1,
             16, [](auto& s) -> auto& { return s.casters.lodTexels; }, true)
             .when("casters.lod", [](const ShadowSettings& s) { return s.casters.lod == CasterLod::Auto; })
-            .mapSide(),
+            .mapSide()
+            .fittedMapsOnly(),
     };
     return table;
 }

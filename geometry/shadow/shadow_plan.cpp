@@ -447,6 +447,33 @@ double lookupReachTexels(const ShadowSettings& settings) noexcept {
            used("bias.normal_offset", [](const ShadowSettings& s) { return s.bias.normalOffset; }) + 2.0;
 }
 
+/// technique = virtual: the settings the virtual map is drawn with. The fitted maps' own settings go
+/// back to their defaults (the planner still frames a map from them, for the overlays and the light
+/// view's frame, and they must not move it); the biases and filters a paged map cannot do become
+/// the nearest it can, each with a warning saying why.
+ShadowSettings settingsForVirtual(const ShadowSettings& asked, std::vector<std::string>& warnings) {
+    static const ShadowSettings defaults{};
+    ShadowSettings s = asked;
+    for (const SettingInfo& info : settingsDeclaration())
+        if (info.mapsOnly) info.set(s, info.get(defaults));
+    if (s.bias.type == BiasType::Midpoint || s.bias.type == BiasType::DualDepth) {
+        warnings.push_back("technique = virtual: bias.type = " + std::string(enumName(s.bias.type)) +
+                           " needs a second depth layer of every page (twice the pool); drawn with constant");
+        s.bias.type = BiasType::Constant;
+    }
+    if (isMomentFilter(s.filter.type) || s.filter.type == FilterType::Pcss) {
+        warnings.push_back("technique = virtual: filter.type = " + std::string(enumName(s.filter.type)) +
+                           (s.filter.type == FilterType::Pcss
+                                ? " searches blockers over many texels of one level, which pages of several levels "
+                                  "do not give"
+                                : " blurs its moments across page borders, where the neighbour page may be of "
+                                  "another level or absent") +
+                           "; drawn with hw2x2");
+        s.filter.type = FilterType::Hw2x2;
+    }
+    return s;
+}
+
 /// A spot or point light's plan (docs/design.md §3.10): its maps, what it does not apply, and the
 /// values every plan derives.
 ShadowPlan planPositional(const ShadowSettings& settings, const scene::Aabb& S, const scene::Camera& camera,
@@ -478,8 +505,25 @@ ShadowPlan planShadows(const ShadowSettings& shared, const scene::Aabb& S, const
         own = shared;
         for (const std::string& a : light.settings) applyAssignment(own, a);
     }
-    const ShadowSettings& settings = light.settings.empty() ? shared : own;
+    const ShadowSettings& asked = light.settings.empty() ? shared : own;
+    std::vector<std::string> virtualWarnings;
+    const ShadowSettings virtualSettings = asked.technique == Technique::Virtual && !light.positional()
+                                               ? settingsForVirtual(asked, virtualWarnings)
+                                               : asked;
+    const ShadowSettings& settings = asked.technique == Technique::Virtual ? virtualSettings : asked;
     ShadowPlan plan = planFrame(settings, S, camera, light, viewport);
+    if (asked.technique == Technique::Virtual && light.positional())
+        plan.warnings.push_back("technique = virtual takes a directional light: this " +
+                                std::string(light.type == scene::LightType::Spot ? "spot" : "point") +
+                                " light uses fitted maps");
+    if (asked.technique == Technique::Virtual && !light.positional()) {
+        plan.virtualMap = planVirtual(settings.virtualMap, S, camera.eye, plan.l);
+        // Second depth draws back faces, the slope biases offset polygons: a page drawn otherwise is redrawn.
+        plan.virtualMap.content ^=
+            std::hash<std::string>{}(std::to_string(int(settings.bias.type)) + ' ' +
+                                     std::to_string(plan.polygonOffset.x) + ' ' + std::to_string(plan.polygonOffset.y));
+        for (std::string& w : virtualWarnings) plan.warnings.push_back(std::move(w));
+    }
     if (light.positional()) return planPositional(settings, S, camera, light, viewport, std::move(plan));
     const bool fit = settings.focus == FocusMode::Samples && samples != nullptr;
     plan.fittedToSamples = fit;
@@ -491,7 +535,7 @@ ShadowPlan planShadows(const ShadowSettings& shared, const scene::Aabb& S, const
                                 std::to_string(int(shadowMapBytes(settings, settings.resolution) / (1 << 20))) +
                                 " MiB, over the " + std::to_string(int(kShadowMemoryBudgetBytes / (1 << 20))) +
                                 " MiB shadow-memory budget: drawn at " + std::to_string(resolution));
-    for (std::string& w : inertSettingWarnings(settings)) plan.warnings.push_back(std::move(w));
+    for (std::string& w : inertSettingWarnings(asked)) plan.warnings.push_back(std::move(w));
     // Lookups reach past the sample they are for: filter taps, normal offset; a margin of that many
     // texels (as a fraction of the map) keeps them on the map.
     const double reachTexels = lookupReachTexels(settings);

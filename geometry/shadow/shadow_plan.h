@@ -4,6 +4,7 @@
 #include "geometry/scene/scene.h"
 #include "geometry/shadow/sample_bounds.h"
 #include "geometry/shadow/settings.h"
+#include "geometry/shadow/virtual_plan.h"
 
 #include <array>
 #include <string>
@@ -86,6 +87,9 @@ struct ShadowPlan {
     /// moments are of linear depth) and PCSS (its penumbra needs blocker distances in scene units).
     bool linearDepth = false;
     std::vector<SplitPlan> splits;
+    /// technique = virtual (a directional light): the virtual map's levels and pages; the splits are
+    /// then the fitted map the light view frames, and not drawn.
+    VirtualPlan virtualMap;
     /// What the settings asked for but this plan does not do: maps drawn smaller to fit the memory
     /// budget (memory_budget.h), settings without effect (setting_relevance.h). For metrics.json
     /// and the dashboard.
