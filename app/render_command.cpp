@@ -93,6 +93,24 @@ nlohmann::json frameMetrics(const HeadlessFrame& f, const RenderOptions& o) {
                       {"total", stats.gpu.total()}};
     j["plan_us"] = f.planMicroseconds;
     j["triangles_submitted"] = {{"shadow", stats.shadowTriangles}, {"eye", stats.eyeTriangles}};
+    j["shadow_memory_bytes"] = stats.shadowMemoryBytes;
+    // technique = virtual: the pages of this frame (docs/design.md §3.11); null for fitted maps.
+    const auto& v = stats.virtualPages;
+    j["virtual_pages"] = v.active
+                             ? nlohmann::json{{"requested", v.requested},
+                                              {"allocated", v.allocated},
+                                              {"drawn", v.drawn},
+                                              {"cached", v.cached},
+                                              {"drawn_total", v.drawnTotal},
+                                              {"pool_pages", v.poolPages},
+                                              {"pool_occupied", v.occupied},
+                                              {"pool_occupancy", v.poolPages ? double(v.occupied) / v.poolPages : 0.0},
+                                              {"memory_bytes", v.memoryBytes},
+                                              {"finest_level", v.finestLevel},
+                                              {"uncovered_pixels", v.uncovered},
+                                              {"page_triangles", v.pageTriangles},
+                                              {"warning", v.warning}}
+                             : nlohmann::json(nullptr);
     return j;
 }
 

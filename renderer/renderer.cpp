@@ -3,9 +3,10 @@
 //   [SECTION] Set-up and shared state ... Renderer, ~Renderer, setScene, warnOnce, depthProgram, uploadShadowBlock
 //                                         (the shadow and settings blocks)
 //   [SECTION] The frame ................. render, eyeSamples, waitForTimings
-//   [SECTION] Shadow maps ............... drawMaps, drawCasters, shadowPass, peelAndCombine, momentsPass
+//   [SECTION] Shadow maps ............... drawMaps, drawCasters, shadowPass, peelAndCombine, momentsPass,
+//                                         virtualPass (technique = virtual)
 //   [SECTION] Eye view .................. depthPrePass, eyePass, blurredMask, addLight, compose
-//   [SECTION] Light views ............... lightViewPass, unwarpedViewPass
+//   [SECTION] Light views ............... lightViewPass, virtualViewPass, unwarpedViewPass
 //   [SECTION] Reading back .............. readShadowMask, readShadowDepth, readShadowMap, readShadowSamples,
 //                                         readAux, readPositions, readNormals
 
@@ -49,6 +50,21 @@ void bindTexture(int unit, GLenum target, GLuint texture, GLuint sampler) {
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(target, texture);
     glBindSampler(unit, sampler);
+}
+
+/// Which faces cast (CAD meshes are wound counter-clockwise as seen from the light; the plan's maps
+/// never mirror): second depth draws back faces only; solids their faces towards the light; open
+/// surfaces both.
+void cullForCasting(bool twoSided, bool backFacesOnly) noexcept {
+    if (backFacesOnly) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT);
+    } else if (!twoSided) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
 }
 
 bool needsPeeling(const geometry::shadow::ShadowPlan& plan) {
@@ -101,6 +117,7 @@ Renderer::~Renderer() {
 void Renderer::setScene(const geometry::scene::Scene& scene) {
     scene_ = std::make_unique<GpuScene>(scene);
     drawnMaps_.reset();
+    if (virtual_) virtual_->invalidate(); // no page drawn from the old scene is valid
 }
 
 void Renderer::setCasterLod(const geometry::lod::SceneLod& lod) {
@@ -137,7 +154,11 @@ int Renderer::splitResolution(const geometry::shadow::SplitPlan& split) const no
 }
 
 void Renderer::uploadShadowBlock(const geometry::shadow::ShadowPlan& plan) {
-    const ShadowBlock block = shadowBlock(plan, firstDepth_.resolution());
+    // technique = virtual reads no split map (its frame may come before any was drawn): the splits'
+    // scale is then taken against a 1-texel array, and never read.
+    const int arrayResolution =
+        plan.virtualMap.enabled ? std::max(firstDepth_.resolution(), 1) : firstDepth_.resolution();
+    const ShadowBlock block = shadowBlock(plan, arrayResolution);
     glBindBuffer(GL_UNIFORM_BUFFER, shadowBlockBuffer_);
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof block, &block);
     settingsBlockWords(plan.settings, settingsWords_);
@@ -166,6 +187,8 @@ void Renderer::render(std::span<const geometry::shadow::ShadowPlan> plans, const
         if (plan.splits.empty()) throw std::runtime_error("shadow plan has no splits");
     const bool several = plans.size() > 1;
     if (several) views.depthPrePass = true; // every light's eye pass tests against the pre-pass depth
+    for (const auto& plan : plans)
+        if (plan.virtualMap.enabled) views.depthPrePass = true; // the virtual map's pages come from it
     const geometry::shadow::ShadowPlan& shown = plans[inspected];
     stats_.eyeTriangles = 0;
     const glm::mat4 viewProj = shown.eyeProj * shown.eyeView;
@@ -203,7 +226,7 @@ void Renderer::render(std::span<const geometry::shadow::ShadowPlan> plans, const
     if (views.unwarped) unwarpedViewPass(shown, views);
     timers_.endFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    for (int unit = 0; unit < 4; ++unit) glBindSampler(unit, 0);
+    for (int unit = 0; unit < 6; ++unit) glBindSampler(unit, 0);
     stats_.gpu = timers_.latest();
 }
 
@@ -229,6 +252,19 @@ const PassTimes& Renderer::waitForTimings() noexcept {
 
 void Renderer::drawMaps(const geometry::shadow::ShadowPlan& plan, bool reuse, bool countAlone) {
     shadowMapKey(plan, frameKey_);
+    stats_.virtualPages = {};
+    if (plan.virtualMap.enabled) { // the pool keeps what it can: every frame marks and draws what changed
+        if (countAlone) stats_.shadowTriangles = 0;
+        stats_.splitTriangles.assign(plan.splits.size(), 0);
+        stats_.splitTrianglesFull.assign(plan.splits.size(), 0);
+        stats_.shadowMapsReused = false;
+        drawnMaps_.reset();
+        timers_.begin(Pass::Shadow);
+        virtualPass(plan);
+        drawnMaps_ = frameKey_;
+        ++stats_.shadowPasses;
+        return;
+    }
     stats_.shadowMapsReused = reuse && drawnMaps_ && *drawnMaps_ == frameKey_;
     if (stats_.shadowMapsReused) {
         uploadShadowBlock(plan); // the eye-side values changed; the maps and their triangle counts stay
@@ -251,17 +287,7 @@ void Renderer::drawCasters(const geometry::shadow::ShadowPlan& plan, int index, 
         warnOnce("casters.lod = auto: the caster levels are not built; drawing every triangle");
     program.set("uSplit", index);
     for (const auto& m : scene_->meshes()) {
-        // Faces are wound counter-clockwise as seen from the light (the plan's maps never mirror).
-        // second depth: back faces only; solids: faces towards the light only; open surfaces: both.
-        if (backFacesOnly) {
-            glEnable(GL_CULL_FACE);
-            glCullFace(GL_FRONT);
-        } else if (!m.twoSided) {
-            glEnable(GL_CULL_FACE);
-            glCullFace(GL_BACK);
-        } else {
-            glDisable(GL_CULL_FACE);
-        }
+        cullForCasting(m.twoSided, backFacesOnly);
         const auto inMap = [&](const geometry::scene::Aabb& b) {
             return geometry::shadow::clipOverlap(b, split.lightViewProj);
         };
@@ -406,6 +432,74 @@ void Renderer::momentsPass(const geometry::shadow::ShadowPlan& plan) {
     sampledDepth_ = moments_.depthTexture();
 }
 
+void Renderer::virtualPass(const geometry::shadow::ShadowPlan& plan) {
+    const geometry::shadow::VirtualPlan& v = plan.virtualMap;
+    if (!virtual_) virtual_ = std::make_unique<VirtualShadowMap>();
+    // The pool within the shadow-memory budget and the largest texture.
+    const double pageBytes = 4.0 * double(v.config.pageSize) * double(v.config.pageSize);
+    const uint32_t fits = uint32_t(std::clamp(limits_.shadowMemoryBytes / pageBytes, 1.0, 1e9));
+    const uint32_t asked = std::min(v.config.poolPages, fits);
+    virtual_->ensure(v.config, asked, maxTextureSize_);
+    if (virtual_->poolPages() < v.config.poolPages)
+        warnOnce("virtual.pool_pages " + std::to_string(v.config.poolPages) + " of " +
+                 std::to_string(v.config.pageSize) + "² exceed the " +
+                 std::to_string(int(limits_.shadowMemoryBytes / (1 << 20))) + " MiB budget or the largest texture; " +
+                 std::to_string(virtual_->poolPages()) + " pages");
+    uploadShadowBlock(plan);
+    const auto& frame = virtual_->update(v, eyeBuffers().depthTexture(), eyeBuffers().width(), eyeBuffers().height(),
+                                         plan.eyeProj * plan.eyeView);
+    if (!frame.warning.empty()) warnOnce(frame.warning);
+    // Draw the pages the pool says to, each through its own projection, casters culled to the page.
+    std::vector<const geometry::shadow::PageKey*> keyOf(virtual_->poolPages(), nullptr);
+    for (const auto& e : frame.table) keyOf[e.physical] = &e.key;
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    if (plan.polygonOffset != glm::vec2(0.f)) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(plan.polygonOffset.x, plan.polygonOffset.y);
+    }
+    Program& program = depthProgram("#define PAGE\n");
+    program.use();
+    const bool backFaces = plan.settings.bias.type == BiasType::SecondDepth;
+    uint64_t triangles = 0;
+    for (const uint32_t physical : frame.drawn) {
+        virtual_->bindPage(physical);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        const glm::mat4 viewProj(v.pageViewProj(*keyOf[physical]));
+        program.set("uPageViewProj", viewProj);
+        for (const auto& m : scene_->meshes()) {
+            cullForCasting(m.twoSided, backFaces);
+            triangles += scene_->draw(
+                m, [&](const geometry::scene::Aabb& b) { return geometry::shadow::clipOverlap(b, viewProj); });
+        }
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CULL_FACE);
+    stats_.shadowTriangles += triangles;
+    sampledDepth_ = 0; // no split maps this frame
+    geometry::shadow::VirtualMapConfig drawn = v.config;
+    drawn.poolPages = virtual_->poolPages();
+    stats_.shadowResolution = int(v.config.virtualSize);
+    stats_.shadowMemoryBytes = geometry::shadow::virtualMemoryBytes(drawn);
+    VirtualPageStats& p = stats_.virtualPages;
+    p.active = true;
+    p.requested = frame.requested;
+    p.allocated = frame.table.size();
+    p.drawn = frame.drawn.size();
+    p.cached = frame.cached;
+    p.drawnTotal = virtual_->drawnTotal();
+    p.poolPages = virtual_->poolPages();
+    p.occupied = virtual_->occupied();
+    p.memoryBytes = stats_.shadowMemoryBytes;
+    p.finestLevel = frame.finestLevel;
+    p.uncovered = virtual_->uncovered();
+    p.pageTriangles = triangles;
+    p.warning = frame.warning;
+}
+
 // ---- [SECTION] Eye view ---------------------------------------------------------------------
 
 /// The eye's depth pre-pass: the heavy eye shader (filter taps, six targets) then runs once per
@@ -469,6 +563,18 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
     eyeProgram_.set("uShadowMap", 0);
     eyeProgram_.set("uShadowMapCmp", 1);
     eyeProgram_.set("uMoments", 2);
+    // technique = virtual: the page table and the physical pages (units of their own: a unit holds
+    // one sampler type).
+    const bool virtualMap = plan.virtualMap.enabled && virtual_;
+    eyeProgram_.set("uVirtual", virtualMap ? 1 : 0);
+    bindTexture(4, GL_TEXTURE_2D_ARRAY, virtualMap ? virtual_->pageTable() : 0, nearestSampler_);
+    bindTexture(5, GL_TEXTURE_2D, virtualMap ? virtual_->atlas() : 0, nearestSampler_);
+    eyeProgram_.set("uPageTable", 4);
+    eyeProgram_.set("uPageAtlas", 5);
+    if (virtualMap) {
+        eyeProgram_.set("uVColumns", virtual_->atlasSize().x / int(plan.virtualMap.config.pageSize));
+        virtual_->setUniforms(eyeProgram_, plan.virtualMap);
+    }
     for (const auto& m : scene_->meshes()) {
         eyeProgram_.set("uColor", m.color);
         stats_.eyeTriangles += scene_->draw(m, inView);
@@ -539,6 +645,10 @@ void Renderer::compose(GLuint mask, bool addLights) {
 // ---- [SECTION] Light views ------------------------------------------------------------------
 
 void Renderer::lightViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views) {
+    if (plan.virtualMap.enabled && virtual_) {
+        virtualViewPass(plan, views);
+        return;
+    }
     const int split = std::clamp(views.lightSplit, 0, int(plan.splits.size()) - 1);
     light_.ensure(views.lightViewSize, views.lightViewSize);
     light_.bind();
@@ -553,6 +663,39 @@ void Renderer::lightViewPass(const geometry::shadow::ShadowPlan& plan, const Vie
     lightViewProgram_.set("uDepthRange", range);
     fullscreen();
     if (views.overlays) lines_.draw(geometry::shadow::warpedViewOverlays(plan, split), s.lightViewProj);
+    glEnable(GL_DEPTH_TEST);
+}
+
+void Renderer::virtualViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views) {
+    const geometry::shadow::VirtualPlan& v = plan.virtualMap;
+    light_.ensure(views.lightViewSize, views.lightViewSize);
+    light_.bind();
+    glDisable(GL_DEPTH_TEST);
+    // Framed on the allocated pages (the coarsest square when there are none), as a square.
+    glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
+    for (const auto& e : virtual_->frame().table) {
+        const double w = v.levels[size_t(e.key.level)].pageWorld;
+        const glm::dvec2 corner = glm::dvec2(double(e.key.x), double(e.key.y)) * w - v.frame.project(v.eye);
+        lo = glm::min(lo, corner);
+        hi = glm::max(hi, corner + w);
+    }
+    if (!(lo.x <= hi.x)) {
+        lo = v.levelOrigin(v.config.levels - 1);
+        hi = lo + v.levels.back().pageWorld * double(v.config.pagesPerSide());
+    }
+    const double side = std::max(hi.x - lo.x, hi.y - lo.y);
+    const glm::dvec2 corner = 0.5 * (lo + hi) - 0.5 * side;
+    virtualViewProgram_.use();
+    bindTexture(0, GL_TEXTURE_2D_ARRAY, virtual_->pageTable(), nearestSampler_);
+    bindTexture(1, GL_TEXTURE_2D, virtual_->atlas(), nearestSampler_);
+    virtualViewProgram_.set("uPageTable", 0);
+    virtualViewProgram_.set("uPageAtlas", 1);
+    virtualViewProgram_.set("uVColumns", virtual_->atlasSize().x / int(v.config.pageSize));
+    virtual_->setUniforms(virtualViewProgram_, v);
+    virtualViewProgram_.set("uViewCorner", glm::vec2(corner));
+    virtualViewProgram_.set("uViewSide", float(side));
+    virtualViewProgram_.set("uPixel", float(side / views.lightViewSize));
+    fullscreen();
     glEnable(GL_DEPTH_TEST);
 }
 

@@ -13,6 +13,7 @@
 #include "settings_block.h"
 #include "shadow_block.h"
 #include "shadow_map_key.h"
+#include "virtual_map.h"
 
 #include <array>
 #include <map>
@@ -37,6 +38,7 @@ struct FrameStats {
     bool shadowMapsReused = false;     // the last render() kept the maps of an earlier one
     uint64_t shadowPasses = 0;         // render() calls that drew the maps, since construction
     uint64_t eyePasses = 0;            // render() calls (each draws the eye view), since construction
+    VirtualPageStats virtualPages;     // technique = virtual: the pages of the last frame
 };
 
 /// What the light views show.
@@ -128,6 +130,8 @@ public:
     /// size beyond the view memory limit, std::invalid_argument for n < 1 or no frame drawn.
     [[nodiscard]] std::vector<float> readShadowSamples(const geometry::shadow::ShadowPlan& plan, int n);
     [[nodiscard]] const FrameStats& stats() const noexcept { return stats_; }
+    /// technique = virtual: the virtual map as the last frame left it (null before the first such frame).
+    [[nodiscard]] const VirtualShadowMap* virtualMap() const noexcept { return virtual_.get(); }
     /// Takes the GPU times that arrived since the last frame into stats().gpu, drawing nothing;
     /// true while some are still in flight.
     bool pollGpuTimes() noexcept {
@@ -148,6 +152,9 @@ private:
     void drawCasters(const geometry::shadow::ShadowPlan& plan, int index, Program& program, bool backFacesOnly);
     void peelAndCombine(const geometry::shadow::ShadowPlan& plan);
     void momentsPass(const geometry::shadow::ShadowPlan& plan);
+    /// technique = virtual: marks the pages the pre-pass asks for and draws those the pool says to.
+    void virtualPass(const geometry::shadow::ShadowPlan& plan);
+    void virtualViewPass(const geometry::shadow::ShadowPlan& plan, const ViewOptions& views);
     void depthPrePass(const geometry::shadow::ShadowPlan& plan, const geometry::shadow::Viewport& viewport,
                       bool draw = true);
     void eyePass(const geometry::shadow::ShadowPlan& plan);
@@ -176,6 +183,8 @@ private:
     Program addLightProgram_{"fullscreen.vert", "add_light.frag"};
     Program lightViewProgram_{"fullscreen.vert", "light_view.frag"};
     Program unlitProgram_{"eye.vert", "unlit.frag"};
+    Program virtualViewProgram_{"fullscreen.vert", "virtual_view.frag"};
+    std::unique_ptr<VirtualShadowMap> virtual_; // made on the first virtual frame
     LineRenderer lines_;
     GLuint emptyVao_ = 0;
     GLuint shadowBlockBuffer_ = 0;   // ShadowBlock (renderer/shadow_block.h), bound at kShadowBlockBinding

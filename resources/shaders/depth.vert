@@ -1,6 +1,6 @@
 #version 430 core
 // Depth only: the shadow passes draw into split uSplit's map (world → that split's shadow clip
-// space); EYE_DEPTH is the eye pass's depth pre-pass through the camera's uViewProj.
+// space); PAGE draws one page of the virtual map; EYE_DEPTH is the eye pass's depth pre-pass through the camera's uViewProj.
 #include "shadow_block.glsl"
 layout(location = 0) in vec3 aPosition;
 invariant gl_Position; // the eye pass's depth pre-pass (depth.vert) must match eye.vert bit for bit
@@ -11,6 +11,8 @@ layout(location = 2) in mat4 aModel;
 layout(location = 6) in vec4 aDecode;
 #ifdef EYE_DEPTH
 uniform mat4 uViewProj;
+#elif defined(PAGE)
+uniform mat4 uPageViewProj; // technique = virtual: world → the page's clip space (VirtualPlan::pageViewProj)
 #else
 uniform int uSplit;
 #endif
@@ -24,6 +26,8 @@ void main() {
 #endif
 #ifdef EYE_DEPTH
     gl_Position = uViewProj * world;
+#elif defined(PAGE)
+    gl_Position = uPageViewProj * world;
 #else
     gl_Position = shadow.splits[uSplit].lightViewProj * world;
 #endif

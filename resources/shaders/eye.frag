@@ -2,10 +2,12 @@
 // Eye pass: Lambert + ambient terms and the shadow factor, kept apart so the mask can be blurred
 // (Scherzer §4.3) and inspected. Every bias and filter of docs/design.md §3.5–3.6 lives here; what the
 // plan derives comes in the shadow block (renderer/shadow_block.inc), the settings as set in the
-// settings block (`settings.<key with _ for .>`, renderer/settings_block.h).
+// settings block (`settings.<key with _ for .>`, renderer/settings_block.h). technique = virtual reads its
+// pages in virtual_lookup.glsl.
 #include "shadow_block.glsl"
 #include "light.glsl"
 #include "moments.glsl"
+#include "virtual.glsl"
 in vec3 vWorldPos;
 in vec3 vNormal;
 uniform vec3 uColor;
@@ -152,6 +154,7 @@ struct Lookup {
     float depth;
     vec2 dTdx, dTdy;
     float det;
+    int level; // the split, or the virtual map's level
 };
 
 /// Looks `receiver` up in split `split`'s map. The screen derivatives of the receiver's world position
@@ -206,8 +209,11 @@ Lookup lookUp(int split, vec3 receiver, vec3 n, vec3 dPdx, vec3 dPdy, float ndot
     L.s = s;
     L.texel = texel;
     L.depth = p.z;
+    L.level = split;
     return L;
 }
+
+#include "virtual_lookup.glsl"
 
 /// m = 1/σ_min(J), screen pixels per texel along the worst direction (docs/design.md §4).
 float aliasingM(Lookup L) {
@@ -226,18 +232,22 @@ void main() {
     float res = float(shadow.arrayResolution) * shadow.splits[split].mapScale;
 
     vec3 receiver = vWorldPos;
+    vec3 dWdx = dFdx(vWorldPos), dWdy = dFdy(vWorldPos); // in uniform control flow
     if (settings.bias_type == BIAS_CONSTANT) receiver -= l * shadow.receiverOffset;
-    if (shadow.normalOffset > 0.0) receiver += n * shadow.normalOffset * texelWorldSize(vWorldPos, split, res);
+    if (shadow.normalOffset > 0.0)
+        receiver += n * shadow.normalOffset *
+                    (uVirtual == 1 ? vTexel(vLevelAt(vPlane(vWorldPos), vLevelFor(vFootprint(dWdx, dWdy))))
+                                   : texelWorldSize(vWorldPos, split, res));
     vec3 dPdx = dFdx(receiver), dPdy = dFdy(receiver); // in uniform control flow
 
-    Lookup L = lookUp(split, receiver, n, dPdx, dPdy, ndotl);
+    Lookup L = uVirtual == 1 ? virtualLookUp(receiver, dPdx, dPdy, ndotl) : lookUp(split, receiver, n, dPdx, dPdy, ndotl);
     float s = L.s;
     float m = aliasingM(L);
     // splits.blend: in the band before this split's far end, fade into the next split's shadow (and
     // its m, the texel density the blend delivers); the next split's map covers the band (the plan
     // focuses it that much earlier).
     float blendStart = shadow.splits[split].blendStart, splitFar = shadow.splits[split].splitFar;
-    if (!positionalLight() && split < shadow.splitCount - 1 && viewDepth > blendStart && splitFar > blendStart) {
+    if (uVirtual == 0 && !positionalLight() && split < shadow.splitCount - 1 && viewDepth > blendStart && splitFar > blendStart) {
         float t = clamp((viewDepth - blendStart) / (splitFar - blendStart), 0.0, 1.0);
         Lookup next = lookUp(split + 1, receiver, n, dPdx, dPdy, ndotl);
         s = mix(s, next.s, t);
@@ -248,7 +258,7 @@ void main() {
     oBase = vec4(uColor * kAmbient, max(viewDepth, 1e-6));
     oDirect = vec4(uColor * (1.0 - kAmbient) * ndotl, 1.0);
     oMask = vec4(s);
-    oAux = vec4(L.texel, float(split), L.depth);
+    oAux = vec4(L.texel, float(L.level), L.depth);
     oPosition = vec4(vWorldPos, m);
     oNormal = vec4(n, ndotl);
 }
