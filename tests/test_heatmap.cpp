@@ -247,6 +247,13 @@ TEST(Legend, CategoricalLegendsShowTheirSwatches) {
     EXPECT_EQ(splits.entries[0].label, "split 0 [0.5, 12.3]");
     EXPECT_EQ(splits.entries[2].label, "split 2 [100, 1000]");
     EXPECT_EQ(splits.entries[1].colour, splitColour(1));
+
+    // technique = virtual: the levels the pixels sample, each with its texel in scene units.
+    const std::vector<glm::dvec2> levels{{3.0, 0.0125}, {4.0, 0.025}};
+    const Legend seen = levelLegend(levels);
+    ASSERT_EQ(seen.entries.size(), 2u);
+    EXPECT_EQ(seen.entries[0].label, "level 3 (texel 0.0125)");
+    EXPECT_EQ(seen.entries[1].colour, splitColour(4));
 }
 
 TEST(Legend, ScalesWithImageHeight) {

@@ -465,6 +465,15 @@ Legend splitLegend(std::span<const glm::vec2> depthRanges) {
     return l;
 }
 
+Legend levelLegend(std::span<const glm::dvec2> levels) {
+    Legend l;
+    l.title = "virtual map levels";
+    for (const glm::dvec2& k : levels)
+        l.entries.push_back(
+            {splitColour(int(k.x)), "level " + std::to_string(int(k.x)) + " (texel " + shortNumber(float(k.y)) + ")"});
+    return l;
+}
+
 PixelRect legendRect(int width, int height, const Legend& legend) {
     const int k = legendScale(width, height, legend);
     const LegendLayout l = fittedLayout(legend, width, k);

@@ -99,6 +99,9 @@ struct Legend {
 /// One swatch per split: "split i [n, f]" with the split's eye-space depth range (x = near,
 /// y = far).
 [[nodiscard]] Legend splitLegend(std::span<const glm::vec2> depthRanges);
+/// technique = virtual: one swatch per level the pixels sample, "level k (texel t)" with the level's
+/// texel in scene units; (x = level, y = texel).
+[[nodiscard]] Legend levelLegend(std::span<const glm::dvec2> levels);
 
 struct PixelRect {
     int x = 0, y = 0, width = 0, height = 0; // top-left corner, image pixels

@@ -2,6 +2,7 @@
 
 #include "geometry/analysis/heatmap.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -24,6 +25,14 @@ Image splitsView(const Image& eye, const Inspection& in, const geometry::shadow:
     Image img = eye;
     for (size_t i = 0; i < in.aux.size(); ++i)
         if (in.aux[i].z >= 0.f) blend(&img.rgba[4 * i], splitColour(int(in.aux[i].z)), 0.45f);
+    if (plan.virtualMap.enabled) { // aux.z is the level each pixel samples: list those seen
+        std::vector<glm::dvec2> seen;
+        for (size_t k = 0; k < plan.virtualMap.levels.size(); ++k)
+            if (std::any_of(in.aux.begin(), in.aux.end(), [&](const glm::vec4& a) { return int(a.z) == int(k); }))
+                seen.emplace_back(double(k), plan.virtualMap.levels[k].texelWorld);
+        placeLegend(img, levelLegend(seen), out);
+        return img;
+    }
     std::vector<glm::vec2> ranges;
     for (const auto& s : plan.splits) ranges.emplace_back(s.near, s.far);
     placeLegend(img, splitLegend(ranges), out);
