@@ -4,6 +4,7 @@
 //   Goals (issue 4): paper/ssm ≤ 1.3 on llvmpipe, ≤ 1.15 on a GPU; 5×5 PCF eye pass ≤ 1.1× hard test.
 //   Issue 16: focus.mode samples/geometry ≤ 1.1 per preset and canonical view (480×270, as
 //   docs/performance.md's accuracy figures).
+//   Issue 34: technique = virtual over pssm3 per canonical view, pages cached and all redrawn.
 //   Issue 29: two lights ≤ 2.1× one light's frame; a point light's six faces ≤ 3× one spot light's
 //   shadow pass; Barroso's Table 2 (1 and 2 lights circling the platform's close-up, standard shadow
 //   map against the recommended presets).
@@ -179,6 +180,49 @@ const bool kSamplesOverGeometryRegistered = [] {
                 ->Args({480, 270})
                 ->Args({1280, 720})
                 ->Iterations(9)
+                ->UseRealTime();
+    return true;
+}();
+
+/// technique = virtual over pssm3 (same bias and filter) on the platform's canonical view `view`,
+/// the whole frame (issue 34). `redraw`: the light turns by 0.06° every frame, so every page is drawn
+/// again (a moving sun); else the pages stay cached (light and camera still).
+void virtualOverPssm3(benchmark::State& state, const std::string& view, bool redraw) {
+    static const geometry::io::SceneFile file =
+        geometry::io::loadSceneFile(std::string(SHADOWSCOPE_SOURCE_DIR) + "/resources/scenes/platform.json");
+    const CanonicalView& v = file.views.at(view);
+    const Viewport vp{int(state.range(0)), int(state.range(1))};
+    const ShadowSettings maps = preset("pssm3"), paged = preset("virtual");
+    Setup& st = setup();
+    st.r->setScene(file.scene);
+    renderer::ViewOptions views;
+    views.lightViewSize = 64;
+    views.overlays = views.unwarped = false;
+    int frame = 0;
+    alternate(
+        state,
+        [&](bool isB) {
+            Light light = v.light;
+            if (isB && redraw)
+                light.direction = glm::normalize(light.direction + glm::vec3(0.001f * float(++frame % 2)));
+            const ShadowPlan plan =
+                renderer::planFrame(*st.r, isB ? paged : maps, file.scene.bounds(), v.camera, light, vp);
+            st.r->render(plan, vp, views);
+            return st.r->waitForTimings();
+        },
+        [](const renderer::PassTimes& t) { return t.frame(); });
+    st.r->setScene(st.scene);
+}
+
+// virtualOverPssm3/<view>_<cached|redraw>/<width>/<height>: the frame-time ratios of docs/performance.md.
+const bool kVirtualRegistered = [] {
+    for (const char* v : {"deck", "overview", "grazing", "dueling"})
+        for (const bool redraw : {false, true})
+            benchmark::RegisterBenchmark(
+                ("virtualOverPssm3/" + std::string(v) + (redraw ? "_redraw" : "_cached")).c_str(), virtualOverPssm3,
+                std::string(v), redraw)
+                ->Args({640, 360})
+                ->Iterations(5)
                 ->UseRealTime();
     return true;
 }();

@@ -204,13 +204,22 @@ TEST(Presets, ShippedPresetsHoldTheirTechnique) {
     EXPECT_EQ(paper.splits.alpha, 2.0);
     EXPECT_EQ(paper.filter.type, FilterType::Pcf);
     EXPECT_EQ(paper.filter.kernel, 5);
+
+    // virtual: the paged map as Unreal Engine 5 ships it, with pssm3's bias and filter (like for like).
+    const ShadowSettings paged = geometry::io::loadPreset(presetPath("virtual.json"));
+    EXPECT_EQ(paged.technique, Technique::Virtual);
+    EXPECT_EQ(paged.virtualMap.size, 16384);
+    EXPECT_EQ(paged.virtualMap.pageSize, 128);
+    EXPECT_EQ(paged.bias, pssm.bias);
+    EXPECT_EQ(paged.filter, pssm.filter);
+    EXPECT_TRUE(validate(paged).empty());
 }
 
 TEST(Presets, ShippedPresetsAreWhatSavePresetWrites) {
     // Every value a shipped preset holds comes back from savePreset; keys it predates (settings
     // declared since) are written with their defaults, so a new setting needs no preset edits.
     const json defaults = geometry::io::settingsToJson({}).flatten();
-    for (const char* name : {"ssm.json", "lispsm.json", "pssm3.json", "paper.json"}) {
+    for (const char* name : {"ssm.json", "lispsm.json", "pssm3.json", "paper.json", "virtual.json"}) {
         const json j = json::parse(std::ifstream(presetPath(name), std::ios::binary));
         ASSERT_TRUE(j.at("name").is_string()) << name;
         ASSERT_TRUE(j.at("description").is_string()) << name;

@@ -16,6 +16,7 @@ using shadow::WarpMethod;
 std::vector<TuneAxis> defaultTuneSpace() {
     // The strongest levers first: coordinate descent takes the axes in this order.
     return {
+        {"technique", {"maps", "virtual"}},
         {"bias.type", {"constant", "slope", "slope_normal_offset"}},
         {"filter.type", {"hw2x2", "pcf", "pcss", "evsm4", "msm"}},
         {"shadow_map.resolution", {"1024", "2048", "4096"}},
