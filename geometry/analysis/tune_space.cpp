@@ -17,6 +17,7 @@ std::vector<TuneAxis> defaultTuneSpace() {
     // The strongest levers first: coordinate descent takes the axes in this order.
     return {
         {"technique", {"maps", "virtual"}},
+        {"virtual.pool_pages", {"1024", "4096"}}, // 64 or 256 MiB: whether the finest levels fit
         {"bias.type", {"constant", "slope", "slope_normal_offset"}},
         {"filter.type", {"hw2x2", "pcf", "pcss", "evsm4", "msm"}},
         {"shadow_map.resolution", {"1024", "2048", "4096"}},
