@@ -48,7 +48,8 @@ std::string tradeoffYLabel(TradeoffY y) {
 
 Chart tradeoffChart(const std::vector<TradeoffPoint>& points, TradeoffX xAxis, TradeoffY yAxis) {
     Chart c;
-    c.title = "Speed against accuracy (one point per configuration)";
+    c.title = std::string(xAxis == TradeoffX::MemoryMiB ? "Memory" : "Speed") +
+              " against accuracy (one point per configuration)";
     c.x.label = tradeoffXLabel(xAxis);
     c.y.label = tradeoffYLabel(yAxis);
     c.y.log = yAxis == TradeoffY::P95; // the fractions can be 0
