@@ -571,10 +571,7 @@ void Renderer::eyePass(const geometry::shadow::ShadowPlan& plan) {
     bindTexture(5, GL_TEXTURE_2D, virtualMap ? virtual_->atlas() : 0, nearestSampler_);
     eyeProgram_.set("uPageTable", 4);
     eyeProgram_.set("uPageAtlas", 5);
-    if (virtualMap) {
-        eyeProgram_.set("uVColumns", virtual_->atlasSize().x / int(plan.virtualMap.config.pageSize));
-        virtual_->setUniforms(eyeProgram_, plan.virtualMap);
-    }
+    if (virtualMap) virtual_->setUniforms(eyeProgram_, plan.virtualMap);
     for (const auto& m : scene_->meshes()) {
         eyeProgram_.set("uColor", m.color);
         stats_.eyeTriangles += scene_->draw(m, inView);
@@ -690,7 +687,6 @@ void Renderer::virtualViewPass(const geometry::shadow::ShadowPlan& plan, const V
     bindTexture(1, GL_TEXTURE_2D, virtual_->atlas(), nearestSampler_);
     virtualViewProgram_.set("uPageTable", 0);
     virtualViewProgram_.set("uPageAtlas", 1);
-    virtualViewProgram_.set("uVColumns", virtual_->atlasSize().x / int(v.config.pageSize));
     virtual_->setUniforms(virtualViewProgram_, v);
     virtualViewProgram_.set("uViewCorner", glm::vec2(corner));
     virtualViewProgram_.set("uViewSide", float(side));

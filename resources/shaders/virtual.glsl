@@ -6,6 +6,7 @@ uniform vec2 uVOrigin[16];
 uniform float uVTexel0;   // level 0's texel, world units; level k's is 2^k times wider
 uniform int uVLevels, uVPagesPerSide, uVPageSize;
 uniform float uVDepthLo, uVDepthScale; // page depth = (l·x − lo) · scale
+uniform int uVColumns;                 // physical pages a row of the atlas
 
 vec2 vPlane(vec3 x) {
     vec3 r = x - uVEye;
@@ -32,3 +33,10 @@ int vLevelFor(float footprint) {
 /// Page (x, y) of level k's square holding plane point s; outside the square when any is out of 0..pps−1.
 ivec2 vPageOf(vec2 s, int k) { return ivec2(floor((s - uVOrigin[k]) / (vTexel(k) * float(uVPageSize)))); }
 bool vInSquare(ivec2 page) { return all(greaterThanEqual(page, ivec2(0))) && all(lessThan(page, ivec2(uVPagesPerSide))); }
+
+/// Where texel t (0..pageSize−1 each way) of the page a table entry names (physical page + 1) lies in
+/// the atlas.
+ivec2 vAtlasTexel(uint entry, ivec2 t) {
+    uint physical = entry - 1u;
+    return ivec2(int(physical % uint(uVColumns)), int(physical / uint(uVColumns))) * uVPageSize + t;
+}

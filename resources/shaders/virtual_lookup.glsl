@@ -3,7 +3,6 @@
 uniform int uVirtual;               // 1: technique = virtual (the split maps are not read)
 uniform usampler2DArray uPageTable; // (page x, page y, level) → physical page + 1; 0: none
 uniform sampler2D uPageAtlas;       // the physical pages' depths, uVColumns pages a row
-uniform int uVColumns;
 
 bool vAllocated(vec2 s, int k) {
     ivec2 page = vPageOf(s, k);
@@ -19,9 +18,7 @@ float vDepthAt(vec2 s, int k) {
         uint entry = texelFetch(uPageTable, ivec3(page, k), 0).r;
         if (entry == 0u) continue;
         ivec2 t = clamp(ivec2(floor((s - uVOrigin[k]) / vTexel(k))) - page * uVPageSize, ivec2(0), ivec2(uVPageSize - 1));
-        uint physical = entry - 1u;
-        ivec2 corner = ivec2(int(physical % uint(uVColumns)), int(physical / uint(uVColumns))) * uVPageSize;
-        return texelFetch(uPageAtlas, corner + t, 0).r;
+        return texelFetch(uPageAtlas, vAtlasTexel(entry, t), 0).r;
     }
     return 2.0;
 }

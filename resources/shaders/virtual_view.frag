@@ -7,7 +7,6 @@
 in vec2 vUv;
 uniform usampler2DArray uPageTable;
 uniform sampler2D uPageAtlas;
-uniform int uVColumns;
 uniform vec2 uViewCorner; // the view's lower-left point in the plane (relative to the eye)
 uniform float uViewSide;  // world units across the view
 uniform float uPixel;     // world units per view pixel
@@ -35,9 +34,7 @@ void main() {
             return;
         }
         ivec2 t = clamp(ivec2(floor(inPage * float(uVPageSize))), ivec2(0), ivec2(uVPageSize - 1));
-        uint physical = entry - 1u;
-        ivec2 corner = ivec2(int(physical % uint(uVColumns)), int(physical / uint(uVColumns))) * uVPageSize;
-        float d = texelFetch(uPageAtlas, corner + t, 0).r;
+        float d = texelFetch(uPageAtlas, vAtlasTexel(entry, t), 0).r;
         vec3 grey = d >= 1.0 ? vec3(0.08, 0.10, 0.22) : vec3(1.0 - d);
         oColor = vec4(mix(grey, c, 0.3), 1.0);
         return;
