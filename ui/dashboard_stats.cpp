@@ -150,9 +150,24 @@ std::vector<Dashboard::StatRow> Dashboard::statRows(int sides) const {
         "Triangles submitted per pass after culling (shadow: all splits)");
     row("shadow map", [this](int i) {
         const auto* s = statsOf(i);
+        if (s && s->virtualPages.active)
+            return "virtual " + std::to_string(s->shadowResolution) + "² × " +
+                   std::to_string(sides_[i].plan.virtualMap.config.levels) + " levels";
         return s ? std::to_string(s->shadowResolution) + "² × " + std::to_string(sides_[i].plan.splits.size())
                  : std::string("–");
     });
+    row(
+        "virtual pages",
+        [this](int i) {
+            const auto* s = statsOf(i);
+            if (!s || !s->virtualPages.active) return std::string("–");
+            const auto& v = s->virtualPages;
+            return std::to_string(v.allocated) + " (" + std::to_string(v.drawn) + " drawn), pool " +
+                   fmt("%.0f %%", v.poolPages ? 100.0 * v.occupied / v.poolPages : 0.0) + " of " +
+                   fmt("%.0f MiB", double(v.memoryBytes) / (1 << 20));
+        },
+        "technique = virtual (docs/design.md §3.11): the pages the visible pixels read this frame, how many "
+        "were drawn (the others were kept from earlier frames), and how full the physical pool is");
     row(
         "m mean / p50",
         [this](int i) {
