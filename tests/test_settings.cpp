@@ -119,6 +119,9 @@ TEST(Settings, VirtualSizesArePowersOfTwoAndTheFittedMapsSettingsStepAside) {
     s.virtualMap.size = 256;
     s.virtualMap.pageSize = 128;
     EXPECT_NE(validate(s).at(0).find("more than a quarter of virtual.size"), std::string::npos);
+    s.virtualMap.size = 65536;
+    s.virtualMap.pageSize = 16;
+    EXPECT_EQ(validate(s).at(0), "virtual.size: 65536 / virtual.page_size 16 is 4096 pages a side, more than 512");
     s.virtualMap = {};
     s.splits.count = 3;
     EXPECT_FALSE(settingMatters(s, "splits.count"));

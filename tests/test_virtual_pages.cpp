@@ -257,6 +257,18 @@ TEST(VirtualPlan, PagesProjectTheirSquareAndTheCoarsestLevelCoversTheScene) {
     }
     EXPECT_NE(planVirtual(settings, S, glm::vec3(0.f), l).content,
               planVirtual(settings, S, glm::vec3(0.f), glm::normalize(l + glm::vec3(0.01f, 0.f, 0.f))).content);
+    // A widget dragged between the sizes validate() accepts gives the power of two below, never a
+    // configuration the renderer cannot draw.
+    VirtualSettings dragged;
+    dragged.size = 3000;
+    dragged.pageSize = 100;
+    const VirtualPlan snapped = planVirtual(dragged, S, glm::vec3(0.f), l);
+    EXPECT_EQ(snapped.config.virtualSize, 2048u);
+    EXPECT_EQ(snapped.config.pageSize, 64u);
+    EXPECT_FALSE(snapped.config.invalid().has_value());
+    dragged.size = 65536;
+    dragged.pageSize = 16;
+    EXPECT_EQ(planVirtual(dragged, S, glm::vec3(0.f), l).config.pagesPerSide(), uint32_t(kMaxVirtualPagesPerSide));
 }
 
 // planShadows under technique = virtual: a directional light gets the virtual plan; the biases and

@@ -125,6 +125,11 @@ std::vector<std::string> validate(const ShadowSettings& s) {
     if (v.pageSize > 0 && v.size > 0 && v.pageSize * 4 > v.size)
         problems.push_back("virtual.page_size: " + std::to_string(v.pageSize) +
                            " is more than a quarter of virtual.size (" + std::to_string(v.size) + ")");
+    // The page table holds (size / page_size)² entries a level: 512² × 16 levels is 16 MiB.
+    if (v.pageSize > 0 && v.size / v.pageSize > kMaxVirtualPagesPerSide)
+        problems.push_back("virtual.size: " + std::to_string(v.size) + " / virtual.page_size " +
+                           std::to_string(v.pageSize) + " is " + std::to_string(v.size / v.pageSize) +
+                           " pages a side, more than " + std::to_string(kMaxVirtualPagesPerSide));
     return problems;
 }
 

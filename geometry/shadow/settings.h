@@ -149,6 +149,9 @@ struct LightSettings {
       "need are drawn, each at the level its pixels' footprint asks; directional lights")
 SHADOWSCOPE_NAMED_ENUM(Technique, "TECHNIQUE_", SHADOWSCOPE_TECHNIQUES);
 
+/// Pages along a level's side at most (virtual.size / virtual.page_size): the page table's size.
+inline constexpr int kMaxVirtualPagesPerSide = 512;
+
 /// virtual.*: the virtual map's shape and its physical page pool (geometry/shadow/virtual_pages.h).
 struct VirtualSettings {
     int size = 16384;     // virtual.size: texels along a level's side (a power of two)
@@ -317,8 +320,8 @@ inline const std::vector<SettingInfo>& settingsDeclaration() {
             .mapSide(),
         number(
             "virtual.page_size",
-            "virtual: texels along a page's side (a power of two, at most a quarter of virtual.size)", Kind::Int, 16,
-            1024, [](auto& s) -> auto& { return s.virtualMap.pageSize; }, true)
+            "virtual: texels along a page's side (a power of two, from virtual.size / 512 to virtual.size / 4)",
+            Kind::Int, 16, 1024, [](auto& s) -> auto& { return s.virtualMap.pageSize; }, true)
             .when("technique", isVirtual)
             .mapSide(),
         number(

@@ -52,10 +52,13 @@ VirtualPlan planVirtual(const VirtualSettings& settings, const scene::Aabb& S, c
     p.enabled = true;
     p.frame = lightFrame(l);
     p.eye = glm::dvec3(eye);
-    p.config.virtualSize = uint32_t(settings.size);
-    p.config.pageSize = uint32_t(settings.pageSize);
-    p.config.levels = settings.levels;
-    p.config.poolPages = uint32_t(settings.poolPages);
+    // validate() refuses other sizes; a widget dragged between them is read as the power of two below,
+    // with 4 to kMaxVirtualPagesPerSide pages a side, so a plan is always one the renderer can draw.
+    p.config.virtualSize = std::bit_floor(uint32_t(std::clamp(settings.size, 64, 1 << 20)));
+    p.config.pageSize = std::clamp(std::bit_floor(uint32_t(std::clamp(settings.pageSize, 1, 1 << 16))),
+                                   p.config.virtualSize / uint32_t(kMaxVirtualPagesPerSide), p.config.virtualSize / 4);
+    p.config.levels = std::clamp(settings.levels, 1, 16);
+    p.config.poolPages = uint32_t(std::max(settings.poolPages, 1));
     // S's extent across l (D) and along it.
     glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
     p.depthLo = HUGE_VAL;
