@@ -101,6 +101,7 @@ struct SettingSources {
         if (shadowRes->count() > 0)
             geometry::shadow::applySetting(s, "shadow_map.resolution", std::to_string(shadowRes->as<int>()));
         for (const auto& a : assignments->results()) geometry::shadow::applyAssignment(s, a);
+        geometry::shadow::validateOrThrow(s); // what one value alone cannot say (virtual.* sizes)
         target->settings = s;
         target->settingsGiven = true;
     }

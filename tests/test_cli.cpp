@@ -358,6 +358,16 @@ TEST(Cli, RenderWritesTheRawShadowMaps) {
     }
 }
 
+// Settings every value of which is in range but that validate() refuses together (a virtual size that
+// is not a power of two) are refused by the commands, naming the key, before anything is drawn.
+TEST(Cli, RenderRefusesAVirtualSizeThatIsNotAPowerOfTwo) {
+    const CommandResult bad = run("render --backend osmesa --scene plane --size 32x32 --set technique=virtual --set "
+                                  "virtual.size=3000 --out " +
+                                  freshDir("virtual_bad").string());
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("virtual.size: 3000 is not a power of two"), std::string::npos) << bad.output;
+}
+
 // --views soft: s − v against the sun's disk, red where the render is darker than the sun allows,
 // blue where lighter, white where they agree (checked against the pixel layers of the same frame);
 // without a sun size it is a one-line error.
