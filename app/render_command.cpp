@@ -231,7 +231,16 @@ RenderOutput renderInto(geometry::scene::Scene scene, const RenderOptions& o, co
         w.pfm("aliasing.pfm", in.m, in.width, in.height);
     }
     if (wants(e, "splits")) w.png("splits.png", splitsView(eye, in, f.plan));
-    if (wants(e, "shadow_map")) // the raw depth each split's map holds, for diffing between frames and tools
+    if (wants(e, "shadow_map") && f.plan.virtualMap.enabled) { // technique = virtual: the physical pages as they lie
+        const auto* map = f.renderer->virtualMap();
+        const glm::ivec2 size = map->atlasSize();
+        const std::vector<float> bottomUp = map->readAtlas();
+        std::vector<float> topDown(bottomUp.size());
+        for (int row = 0; row < size.y; ++row)
+            std::copy_n(bottomUp.begin() + std::ptrdiff_t(size_t(size.y - 1 - row) * size_t(size.x)), size.x,
+                        topDown.begin() + std::ptrdiff_t(size_t(row) * size_t(size.x)));
+        w.pfm("shadow_map_pages.pfm", topDown, size.x, size.y);
+    } else if (wants(e, "shadow_map")) // the raw depth each split's map holds, for diffing between frames and tools
         for (int i = 0; i < int(f.plan.splits.size()); ++i) {
             const int res = std::min(f.plan.splits[size_t(i)].resolution, f.renderer->stats().shadowResolution);
             w.pfm("shadow_map_" + std::to_string(i) + ".pfm", f.renderer->readShadowMap(i, res), res, res);

@@ -358,6 +358,27 @@ TEST(Cli, RenderWritesTheRawShadowMaps) {
     }
 }
 
+// --views shadow_map under technique = virtual: the physical pages (the atlas, pages side by side), in
+// [0, 1] with casters below 1.
+TEST(Cli, RenderWritesTheVirtualMapsPages) {
+    const fs::path dir = freshDir("virtual_pages");
+    const CommandResult r = run("render --backend osmesa --scene plane --size 80x60 --views shadow_map --set "
+                                "technique=virtual --set virtual.size=1024 --set virtual.page_size=32 --set "
+                                "virtual.pool_pages=64 --out " +
+                                dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    int w = 0, h = 0;
+    const auto depth = geometry::analysis::readPfm((dir / "shadow_map_pages.pfm").string(), w, h);
+    EXPECT_EQ(w, 8 * 32); // ⌈√64⌉ pages a row
+    EXPECT_EQ(h, 8 * 32);
+    size_t casters = 0;
+    for (float d : depth) {
+        ASSERT_TRUE(d >= 0.f && d <= 1.f) << d;
+        casters += d < 1.f;
+    }
+    EXPECT_GT(casters, depth.size() / 20);
+}
+
 // Settings every value of which is in range but that validate() refuses together (a virtual size that
 // is not a power of two) are refused by the commands, naming the key, before anything is drawn.
 TEST(Cli, RenderRefusesAVirtualSizeThatIsNotAPowerOfTwo) {
