@@ -17,9 +17,15 @@ struct Aabb {
     glm::vec3 hi{std::numeric_limits<float>::lowest()};
 
     [[nodiscard]] bool empty() const noexcept { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
+    /// glm::min and glm::max component by component (a NaN coordinate leaves the box as it was), written
+    /// out: glm's vector forms call through a function pointer per component, the loaders' hot path.
     void add(const glm::vec3& p) noexcept {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+        lo.x = p.x < lo.x ? p.x : lo.x;
+        lo.y = p.y < lo.y ? p.y : lo.y;
+        lo.z = p.z < lo.z ? p.z : lo.z;
+        hi.x = hi.x < p.x ? p.x : hi.x;
+        hi.y = hi.y < p.y ? p.y : hi.y;
+        hi.z = hi.z < p.z ? p.z : hi.z;
     }
     void add(const Aabb& b) noexcept {
         if (!b.empty()) {

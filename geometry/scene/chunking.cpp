@@ -45,8 +45,12 @@ struct Splitter {
         const glm::vec3 e = box.extent();
         const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
         const uint32_t mid = begin + (end - begin) / 2;
-        std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
-                         [axis](const Item& a, const Item& b) { return a.c[axis] < b.c[axis]; });
+        const auto first = items.begin() + begin, nth = items.begin() + mid, last = items.begin() + end;
+        // One comparator per axis: indexing a glm vector by a variable is a switch in every comparison.
+        if (axis == 0) std::nth_element(first, nth, last, [](const Item& a, const Item& b) { return a.c.x < b.c.x; });
+        else if (axis == 1)
+            std::nth_element(first, nth, last, [](const Item& a, const Item& b) { return a.c.y < b.c.y; });
+        else std::nth_element(first, nth, last, [](const Item& a, const Item& b) { return a.c.z < b.c.z; });
         if (spawn <= 0 || end - begin < kParallelTriangles) {
             split(items, begin, mid, inChunk, 0);
             split(items, mid, end, inChunk, 0);
@@ -85,6 +89,12 @@ int spawnLevels() noexcept {
 Aabb runBounds(const Mesh& mesh, const TriangleRun& run) {
     Aabb world;
     const size_t end = std::min(3 * (size_t(run.firstTriangle) + run.triangleCount), mesh.indices.size());
+    if (mesh.transform == glm::mat4(1.f)) { // a loaded model's: no product needed
+        // + 0 makes −0 +0, as the product does: the same box bit for bit.
+        for (size_t i = 3 * size_t(run.firstTriangle); i < end; ++i)
+            if (mesh.indices[i] < mesh.positions.size()) world.add(mesh.positions[mesh.indices[i]] + glm::vec3(0.f));
+        return world;
+    }
     for (size_t i = 3 * size_t(run.firstTriangle); i < end; ++i)
         if (mesh.indices[i] < mesh.positions.size())
             world.add(glm::vec3(mesh.transform * glm::vec4(mesh.positions[mesh.indices[i]], 1.f)));

@@ -111,16 +111,23 @@ void snapToGrid(Mesh& mesh) {
     std::vector<glm::vec3>& positions = mesh.positions;
     forEachRange(
         positions.size(), rangeThreads(positions.size(), kSnapPerThreadMin), [&](unsigned, size_t b, size_t e) {
+            const auto snap = [step](float& c) noexcept {
+                // Exact: a power of two divides, and |q| < 2^22 with at most 24 significant bits (the step is
+                // 8 spacings at the largest coordinate), so q ± 0.5 is exact too and the conversion that
+                // truncates it is std::round(q), sign of a zero included, without a library call.
+                const double q = double(c) / step;
+                double x = std::copysign(double(int64_t(q + std::copysign(0.5, q))), q) * step; // exact in float
+                // Within half a step of float's largest value, rounding up would leave its range: round
+                // towards zero instead (less than a step away).
+                if (std::abs(x) > kLargest) x = std::trunc(q) * step;
+                c = float(x);
+            };
             for (size_t i = b; i < e; ++i) {
                 glm::vec3& p = positions[i];
                 if (!finite(p)) continue;
-                for (int a = 0; a < 3; ++a) {
-                    double x = std::round(double(p[a]) / step) * step; // a multiple of the step: exact in float
-                    // Within half a step of float's largest value, rounding up would leave its range: round
-                    // towards zero instead (less than a step away).
-                    if (std::abs(x) > kLargest) x = std::trunc(double(p[a]) / step) * step;
-                    p[a] = float(x);
-                }
+                snap(p.x);
+                snap(p.y);
+                snap(p.z);
             }
         });
 }
