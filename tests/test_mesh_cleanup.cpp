@@ -351,3 +351,51 @@ TEST(MeshCleanup, SameResultOnOneThreadAndOnSeveral) {
     EXPECT_EQ(0, std::memcmp(one.normals.data(), several.normals.data(), one.normals.size() * sizeof(glm::vec3)));
     expectValid(several);
 }
+
+TEST(MeshCleanup, CornerNormalsAverageTheFacesWithinTheCreaseAngle) {
+    // Fans of n faces around an apex, its height alternating so that neighbours meet at a crease or
+    // not: apex degrees either side of the 64 up to which faces within the angle are kept as a bit
+    // mask (up to 256 every pair is tested; beyond, faces are grouped). Each corner's normal is checked against the
+    // definition, computed here from the input alone: the area-weighted sum of the normals of the faces at its position
+    // within the crease angle of its own face, the own face always counted.
+    for (const int n : {5, 12, 63, 64, 65, 100}) {
+        Mesh m;
+        m.positions.emplace_back(0.f, 0.f, 1.f);
+        for (int i = 0; i < n; ++i) {
+            const float a = 2.f * 3.14159265f * float(i) / float(n), r = i % 3 == 0 ? 0.4f : 1.f;
+            m.positions.emplace_back(r * std::cos(a), r * std::sin(a), i % 2 == 0 ? 0.f : 0.6f);
+            m.indices.insert(m.indices.end(), {0u, uint32_t(1 + i), uint32_t(1 + (i + 1) % n)});
+        }
+        std::vector<glm::vec3> faceN;
+        for (size_t t = 0; t < m.triangleCount(); ++t) {
+            const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                            c = m.positions[m.indices[3 * t + 2]];
+            faceN.push_back(glm::cross(b - a, c - a));
+        }
+        const Mesh input = m;
+        CleanupOptions o;
+        o.creaseAngleDeg = 30;
+        const float cosCrease = std::cos(glm::radians(30.f));
+        ASSERT_EQ(cleanMesh(m, o).outputFaces, size_t(n));
+        expectValid(m);
+        // Cleanup keeps the faces in order (nothing dropped) and positions exactly (nothing merged).
+        for (size_t t = 0; t < m.triangleCount(); ++t)
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 p = input.positions[input.indices[3 * t + k]];
+                ASSERT_EQ(m.positions[m.indices[3 * t + k]], p);
+                const glm::vec3 own = glm::normalize(faceN[t]);
+                glm::vec3 sum(0.f);
+                for (size_t g = 0; g < faceN.size(); ++g) {
+                    bool at = false;
+                    for (int j = 0; j < 3; ++j) at = at || input.positions[input.indices[3 * g + j]] == p;
+                    if (at && (g == t || glm::dot(own, glm::normalize(faceN[g])) >= cosCrease)) sum += faceN[g];
+                }
+                const glm::vec3 want = glm::normalize(sum), got = m.normals[m.indices[3 * t + k]];
+                EXPECT_NEAR(glm::length(got - want), 0.f, 1e-5f) << n << " faces, face " << t << " corner " << k;
+            }
+        // The apex splits into as many vertices as it has distinct corner normals: more than one here.
+        size_t apexVertices = 0;
+        for (const glm::vec3& p : m.positions) apexVertices += p == glm::vec3(0.f, 0.f, 1.f);
+        EXPECT_GT(apexVertices, 1u) << n << " faces";
+    }
+}

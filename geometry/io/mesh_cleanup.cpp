@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -446,6 +447,40 @@ struct SplitVertices {
     std::vector<glm::vec3> positions, normals;
 };
 
+/// Degrees up to which a corner's faces within the crease angle are kept as a bit mask.
+constexpr size_t kMaskedCornerDegree = 64;
+
+/// cornerNormals for a vertex of at most 64 faces, with the same result bit for bit: whether two faces
+/// are within the crease angle is symmetric, so each pair is tested once, and corners whose faces
+/// within the angle are the same set (every corner of a smooth vertex, the corners of one side of a
+/// crease) share one sum, added in the same order and normalised once.
+void maskedCornerNormals(const uint32_t* begin, size_t deg, const std::vector<glm::vec3>& faceN,
+                         const std::vector<glm::vec3>& unit, float cosCrease, std::vector<glm::vec3>& cornerN) {
+    std::array<uint64_t, kMaskedCornerDegree> within;              // bit k of within[i]: face k counts for corner i
+    for (size_t i = 0; i < deg; ++i) within[i] = uint64_t(1) << i; // a corner's own face always counts
+    for (size_t i = 0; i < deg; ++i)
+        for (size_t k = i + 1; k < deg; ++k)
+            if (glm::dot(unit[i], unit[k]) >= cosCrease) { // dot(a, b) == dot(b, a) exactly
+                within[i] |= uint64_t(1) << k;
+                within[k] |= uint64_t(1) << i;
+            }
+    uint64_t summed = 0; // corners whose sum had a length: their normal is the set's, not their own face's
+    for (size_t i = 0; i < deg; ++i) {
+        size_t same = 0;
+        while (same < i && !(within[same] == within[i] && (summed >> same & 1))) ++same;
+        if (same < i) {
+            cornerN[i] = cornerN[same];
+            summed |= uint64_t(1) << i;
+            continue;
+        }
+        glm::vec3 sum(0.f);
+        for (uint64_t bits = within[i]; bits != 0; bits &= bits - 1) sum += faceN[begin[std::countr_zero(bits)]];
+        const float len = glm::length(sum);
+        cornerN[i] = len > 0 ? sum / len : unit[i];
+        if (len > 0) summed |= uint64_t(1) << i;
+    }
+}
+
 /// The corner normals of vertex `v` into `cornerN` (one per face around it, in `vf.of(v)`'s order): each
 /// averages the (area-weighted) normals of the faces around v within the crease angle of its own face.
 void cornerNormals(uint32_t v, const VertexFaces& vf, const std::vector<glm::vec3>& faceN, float cosCrease,
@@ -457,6 +492,10 @@ void cornerNormals(uint32_t v, const VertexFaces& vf, const std::vector<glm::vec
     for (size_t i = 0; i < deg; ++i) unit[i] = unitOf(faceN[begin[i]]);
     if (deg > kExactCornerDegree) {
         clusterCornerNormals(begin, end, faceN, unit, cosCrease, cornerN);
+        return;
+    }
+    if (deg <= kMaskedCornerDegree) {
+        maskedCornerNormals(begin, deg, faceN, unit, cosCrease, cornerN);
         return;
     }
     for (size_t i = 0; i < deg; ++i) {
