@@ -23,7 +23,9 @@ constexpr uint32_t kEmpty = ~0u;
 constexpr size_t kHeaderBytes = 84, kFacetBytes = 50;
 constexpr size_t kFacetsPerThreadMin = 1 << 16;    // below this a thread costs more than it saves
 constexpr std::ptrdiff_t kReleaseBytes = 16 << 20; // read pages dropped every 16 MiB
-constexpr size_t kAheadFacets = 4;                 // facets whose slots are prefetched ahead
+constexpr size_t kAheadFacets = 8;                 // facets whose slots are prefetched ahead
+constexpr size_t kAheadKeys = 3;                   // facets whose keys are, their slots in by then
+constexpr size_t kAheadLookups = 16;               // keys whose slots a range's lookups prefetch
 
 /// The file's bytes, mapped read-only for the reader's lifetime.
 class MappedFile {
@@ -130,6 +132,12 @@ public:
     uint32_t append(const Key& k) { return push(k); }
     /// Starts loading the slot where `k`'s search begins: the table is far larger than the caches.
     void prefetch(const Key& k) const noexcept { __builtin_prefetch(&slots_[hashOf(k) & (slots_.size() - 1)]); }
+    /// Starts loading the key that slot names, once prefetch() has brought the slot in: a search
+    /// that finds a vertex compares its key, a second miss.
+    void prefetchKey(const Key& k) const noexcept {
+        const uint32_t id = slots_[hashOf(k) & (slots_.size() - 1)];
+        if (id != kEmpty) __builtin_prefetch(&keys_[id]);
+    }
     [[nodiscard]] const std::vector<Key>& keys() const noexcept { return keys_; }
 
 private:
@@ -170,6 +178,8 @@ void weldRange(const char* data, RangeWeld& r, std::vector<uint32_t>& indices, c
         const char* corner = facet + 12; // past the facet normal
         if (t + kAheadFacets < r.last)
             for (size_t k = 0; k < 3; ++k) r.welder.prefetch(keyOf(corner + kAheadFacets * kFacetBytes + 12 * k));
+        if (t + kAheadKeys < r.last)
+            for (size_t k = 0; k < 3; ++k) r.welder.prefetchKey(keyOf(corner + kAheadKeys * kFacetBytes + 12 * k));
         for (size_t k = 0; k < 3; ++k) {
             bool welded = false;
             indices[3 * t + k] = r.welder.add(keyOf(corner + 12 * k), welded);
@@ -220,7 +230,10 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
         // is a new vertex (a range's keys are distinct), and only a range that others follow needs
         // its new keys in the table.
         scene::forEachRange(local.size(), threadsFor(local.size()), [&](unsigned, size_t b, size_t e) {
-            for (size_t v = b; v < e; ++v) global[v] = all.find(local[v]);
+            for (size_t v = b; v < e; ++v) {
+                if (v + kAheadLookups < e) all.prefetch(local[v + kAheadLookups]);
+                global[v] = all.find(local[v]);
+            }
         });
         const bool lastRange = i + 1 == threads;
         for (size_t v = 0; v < local.size(); ++v) {
