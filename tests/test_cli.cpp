@@ -328,6 +328,25 @@ TEST(Cli, RenderWritesThePixelLayers) {
     EXPECT_NE(bad.output.find("--views pixels needs --truth"), std::string::npos) << bad.output;
 }
 
+namespace {
+
+/// A depth map written by --views shadow_map: w × h, every depth in [0, 1], more than 1/`share` of
+/// the texels below 1 (casters).
+void expectDepthMap(const fs::path& path, int w, int h, size_t share) {
+    int width = 0, height = 0;
+    const auto depth = geometry::analysis::readPfm(path.string(), width, height);
+    EXPECT_EQ(width, w) << path;
+    EXPECT_EQ(height, h) << path;
+    size_t casters = 0;
+    for (float d : depth) {
+        ASSERT_TRUE(d >= 0.f && d <= 1.f) << path << ": " << d;
+        casters += d < 1.f;
+    }
+    EXPECT_GT(casters, depth.size() / share) << path;
+}
+
+} // namespace
+
 // --views shadow_map: each split's raw map, at its resolution, holding depths in [0, 1] (casters
 // below 1, the cleared background at 1); a bad stabilize or blend value is refused naming its key.
 TEST(Cli, RenderWritesTheRawShadowMaps) {
@@ -337,18 +356,7 @@ TEST(Cli, RenderWritesTheRawShadowMaps) {
                                 "--out " +
                                 dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* name : {"shadow_map_0.pfm", "shadow_map_1.pfm"}) {
-        int w = 0, h = 0;
-        const auto depth = geometry::analysis::readPfm((dir / name).string(), w, h);
-        EXPECT_EQ(w, 256) << name;
-        EXPECT_EQ(h, 256) << name;
-        size_t casters = 0;
-        for (float d : depth) {
-            ASSERT_TRUE(d >= 0.f && d <= 1.f) << name << ": " << d;
-            casters += d < 1.f;
-        }
-        EXPECT_GT(casters, depth.size() / 10) << name;
-    }
+    for (const char* name : {"shadow_map_0.pfm", "shadow_map_1.pfm"}) expectDepthMap(dir / name, 256, 256, 10);
     for (const std::string bad : {"splits.blend=2", "stabilize.mode=maybe"}) {
         const CommandResult b = run("render --backend osmesa --scene plane --size 32x32 --set " + bad + " --out " +
                                     freshDir("bad_stabilize").string());
@@ -367,16 +375,7 @@ TEST(Cli, RenderWritesTheVirtualMapsPages) {
                                 "virtual.pool_pages=64 --out " +
                                 dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    int w = 0, h = 0;
-    const auto depth = geometry::analysis::readPfm((dir / "shadow_map_pages.pfm").string(), w, h);
-    EXPECT_EQ(w, 8 * 32); // ⌈√64⌉ pages a row
-    EXPECT_EQ(h, 8 * 32);
-    size_t casters = 0;
-    for (float d : depth) {
-        ASSERT_TRUE(d >= 0.f && d <= 1.f) << d;
-        casters += d < 1.f;
-    }
-    EXPECT_GT(casters, depth.size() / 20);
+    expectDepthMap(dir / "shadow_map_pages.pfm", 8 * 32, 8 * 32, 20); // ⌈√64⌉ pages a row
 }
 
 // Settings every value of which is in range but that validate() refuses together (a virtual size that
