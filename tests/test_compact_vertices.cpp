@@ -198,6 +198,31 @@ TEST(CompactVertices, WhatCannotBePackedIsRefused) {
     EXPECT_FALSE(compactVertices(tooMany).has_value());
 }
 
+TEST(CompactVertices, TheStepAloneIsTheStepOfTheCompactVertices) {
+    // compactStep answers without building when it can: the same answer as building, whichever way.
+    Mesh plain = strip(glm::vec3(0.f), 1.f, 4);
+    chunkMesh(plain, 2, 2);
+    Mesh spareNan = plain; // a vertex no triangle uses may be anything: the quick answer is not certain
+    spareNan.positions.push_back(glm::vec3(NAN));
+    spareNan.normals.push_back(glm::vec3(0.f, 0.f, 1.f));
+    Mesh bigChunk = strip(glm::vec3(0.f), 1.f, 11000); // 22 000 triangles in one chunk: too many to be sure
+    chunkMesh(bigChunk, 30000, 30000);
+    ASSERT_EQ(bigChunk.chunks.size(), 1u);
+    for (const Mesh* m : {&plain, &spareNan, &bigChunk}) {
+        const std::optional<CompactVertices> built = compactVertices(*m);
+        ASSERT_TRUE(built.has_value());
+        const std::optional<float> step = compactStep(*m);
+        ASSERT_TRUE(step.has_value());
+        EXPECT_EQ(*step, built->step);
+    }
+    Mesh offGrid = plain; // an unused vertex off the grid: the quick answer fails, the built one holds
+    offGrid.positions.push_back(glm::vec3(0.3f * gridStep(plain)));
+    offGrid.normals.push_back(glm::vec3(0.f, 0.f, 1.f));
+    const std::optional<CompactVertices> built = compactVertices(offGrid);
+    ASSERT_TRUE(built.has_value());
+    EXPECT_EQ(compactStep(offGrid), built->step);
+}
+
 TEST(CompactVertices, NormalsPackAsGlReadsThem) {
     EXPECT_EQ(unpackNormal(packNormal({1.f, -1.f, 0.f})), glm::vec3(1.f, -1.f, 0.f));
     EXPECT_EQ(unpackNormal(packNormal({NAN, INFINITY, -2.f})), glm::vec3(0.f, 0.f, -1.f));

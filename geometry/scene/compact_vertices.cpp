@@ -3,6 +3,7 @@
 #include "geometry/scene/parallel_ranges.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -132,7 +133,41 @@ void snapToGrid(Mesh& mesh) {
         });
 }
 
+namespace {
+
+/// layout()'s step where its success is certain without its pass over every corner (half of `mesh
+/// info`'s time after loading): a chunk of at most kMaxChunkVertices / 3 triangles cannot name more
+/// vertices than a chunk may hold, so with every index in range and every vertex, used or not, finite
+/// and on the grid, layout() succeeds. None: ask layout().
+std::optional<float> certainStep(const Mesh& mesh) {
+    if (mesh.chunks.empty() || mesh.positions.empty() || !chunksTile(mesh)) return std::nullopt;
+    for (const Chunk& c : mesh.chunks)
+        if (c.triangleCount > kMaxChunkVertices / 3) return std::nullopt;
+    const float step = gridStep(mesh);
+    const size_t n = mesh.positions.size();
+    std::atomic<bool> certain{true};
+    forEachRange(n, rangeThreads(n, kSnapPerThreadMin), [&](unsigned, size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i)
+            if (!finite(mesh.positions[i]) || !onGrid(mesh.positions[i], step)) {
+                certain.store(false, std::memory_order_relaxed);
+                return;
+            }
+    });
+    const size_t corners = mesh.indices.size();
+    forEachRange(corners, rangeThreads(corners, kSnapPerThreadMin), [&](unsigned, size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i)
+            if (mesh.indices[i] >= n) {
+                certain.store(false, std::memory_order_relaxed);
+                return;
+            }
+    });
+    return certain.load(std::memory_order_relaxed) ? std::optional(step) : std::nullopt;
+}
+
+} // namespace
+
 std::optional<float> compactStep(const Mesh& mesh) {
+    if (const std::optional<float> step = certainStep(mesh)) return step;
     const std::optional<Layout> l = layout(mesh);
     return l ? std::optional(l->step) : std::nullopt;
 }
