@@ -9,6 +9,10 @@
 #include <numeric>
 #include <thread>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 namespace geometry::scene {
 
 namespace {
@@ -25,6 +29,45 @@ struct Item {
     glm::vec3 c;
     uint32_t id;
 };
+static_assert(sizeof(Item) == 16, "centroidBox loads an item as four floats");
+
+/// The box of the centroids of items [begin, end), as Aabb::add makes it (up to the sign of a zero
+/// bound, which no extent comparison sees). Four boxes over interleaved items, joined at the end: one
+/// running min and max per axis is a chain of dependent instructions (4 M piperack STL, one thread:
+/// chunking 0.445 -> 0.42 s).
+Aabb centroidBox(const std::vector<Item>& items, uint32_t begin, uint32_t end) noexcept {
+    Aabb box;
+#if defined(__SSE2__)
+    // _mm_min_ps(p, lo) is p < lo ? p : lo, lane by lane: Aabb::add's comparison, NaN included. The
+    // fourth lane holds the item's index and is not read.
+    __m128 lo[4], hi[4];
+    for (int k = 0; k < 4; ++k) {
+        lo[k] = _mm_set1_ps(box.lo.x);
+        hi[k] = _mm_set1_ps(box.hi.x);
+    }
+    uint32_t i = begin;
+    for (; i + 4 <= end; i += 4)
+        for (int k = 0; k < 4; ++k) {
+            const __m128 p = _mm_loadu_ps(&items[i + k].c.x);
+            lo[k] = _mm_min_ps(p, lo[k]);
+            hi[k] = _mm_max_ps(p, hi[k]);
+        }
+    for (; i < end; ++i) {
+        const __m128 p = _mm_loadu_ps(&items[i].c.x);
+        lo[0] = _mm_min_ps(p, lo[0]);
+        hi[0] = _mm_max_ps(p, hi[0]);
+    }
+    // Joined lane by lane: the starting values are what min and max leave alone.
+    alignas(16) float l[4], h[4];
+    _mm_store_ps(l, _mm_min_ps(_mm_min_ps(lo[0], lo[1]), _mm_min_ps(lo[2], lo[3])));
+    _mm_store_ps(h, _mm_max_ps(_mm_max_ps(hi[0], hi[1]), _mm_max_ps(hi[2], hi[3])));
+    box.lo = glm::vec3(l[0], l[1], l[2]);
+    box.hi = glm::vec3(h[0], h[1], h[2]);
+#else
+    for (uint32_t i = begin; i < end; ++i) box.add(items[i].c);
+#endif
+    return box;
+}
 
 struct Splitter {
     uint32_t maxTriangles, maxPartTriangles;
@@ -40,9 +83,7 @@ struct Splitter {
             parts.emplace_back(begin, end);
             return;
         }
-        Aabb box;
-        for (uint32_t i = begin; i < end; ++i) box.add(items[i].c);
-        const glm::vec3 e = box.extent();
+        const glm::vec3 e = centroidBox(items, begin, end).extent();
         const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
         const uint32_t mid = begin + (end - begin) / 2;
         const auto first = items.begin() + begin, nth = items.begin() + mid, last = items.begin() + end;
