@@ -214,6 +214,9 @@ std::vector<uint32_t> mergeCandidates(const std::vector<glm::vec3>& pos, const s
     return std::move(kept[0]);
 }
 
+/// Candidates ahead whose cell's slot the merge prefetches.
+constexpr uint32_t kMergeAhead = 8;
+
 /// Maps every vertex to the first vertex within `tol` of it (spatial hash over the candidates of
 /// mergeCandidates, in index order); non-finite vertices map to themselves and are dropped later
 /// as unused.
@@ -231,16 +234,28 @@ std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const s
     const size_t cap = tableSize(candidates.size());
     // Cell lists of candidates, by their index in `candidates`.
     std::vector<uint32_t> heads(cap, kNone), next(candidates.size(), kNone);
-    // Slot holding the list head of cell (x, y, z), or the empty slot where it would go.
-    auto find = [&](int64_t x, int64_t y, int64_t z) -> size_t {
-        for (size_t s = MergeGrid::hash(x, y, z) & (cap - 1);; s = (s + 1) & (cap - 1)) {
-            const uint32_t h = heads[s];
-            if (h == kNone) return s;
-            const glm::vec3& q = pos[candidates[h]];
+    // One bit a cell hash, set where a cell holds a candidate: nearly every cell a search looks at is
+    // empty (merges beyond the STL weld are rare), and a clear bit says so from a table a quarter of
+    // the size of `heads`, which stays in the cache where `heads` does not. A set bit may be another
+    // cell's: the table decides. With the slot prefetch below, the 16 M piperack STL's loop (1.5 M
+    // candidates) took 0.35-0.49 s instead of 0.65-0.75 s.
+    const uint64_t bitMask = 8 * cap - 1;
+    std::vector<uint64_t> occupied(cap / 8, 0);
+    const auto maybeOccupied = [&](uint64_t h) { return (occupied[(h & bitMask) >> 6] >> (h & 63) & 1) != 0; };
+    // Slot holding the list head of cell (x, y, z) of hash h, or the empty slot where it would go.
+    auto find = [&](uint64_t h, int64_t x, int64_t y, int64_t z) -> size_t {
+        for (size_t s = h & (cap - 1);; s = (s + 1) & (cap - 1)) {
+            const uint32_t head = heads[s];
+            if (head == kNone) return s;
+            const glm::vec3& q = pos[candidates[head]];
             if (grid.cell(q, 0) == x && grid.cell(q, 1) == y && grid.cell(q, 2) == z) return s;
         }
     };
     for (uint32_t k = 0; k < candidates.size(); ++k) {
+        // The slot where a candidate a few on goes in (or finds its cell): in the loop itself, as GCC
+        // drops a call whose only effect is a prefetch.
+        if (k + kMergeAhead < candidates.size())
+            __builtin_prefetch(&heads[grid.hash(pos[candidates[k + kMergeAhead]]) & (cap - 1)]);
         const uint32_t i = candidates[k];
         const glm::vec3& p = pos[i];
         const int64_t c[3] = {grid.cell(p, 0), grid.cell(p, 1), grid.cell(p, 2)};
@@ -253,20 +268,26 @@ std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const s
         uint32_t found = kNone;
         for (int dx = lo[0]; dx <= hi[0] && found == kNone; ++dx)
             for (int dy = lo[1]; dy <= hi[1] && found == kNone; ++dy)
-                for (int dz = lo[2]; dz <= hi[2] && found == kNone; ++dz)
-                    for (uint32_t q = heads[find(c[0] + dx, c[1] + dy, c[2] + dz)]; q != kNone; q = next[q]) {
+                for (int dz = lo[2]; dz <= hi[2] && found == kNone; ++dz) {
+                    const int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+                    const uint64_t h = MergeGrid::hash(x, y, z);
+                    if (!maybeOccupied(h)) continue;
+                    for (uint32_t q = heads[find(h, x, y, z)]; q != kNone; q = next[q]) {
                         const glm::dvec3 d = glm::dvec3(pos[candidates[q]]) - glm::dvec3(p);
                         if (glm::dot(d, d) <= tol2) {
                             found = candidates[q];
                             break;
                         }
                     }
+                }
         if (found != kNone) {
             rep[i] = found;
             ++r.mergedVertices;
             continue;
         }
-        const size_t s = find(c[0], c[1], c[2]);
+        const uint64_t h = MergeGrid::hash(c[0], c[1], c[2]);
+        occupied[(h & bitMask) >> 6] |= uint64_t(1) << (h & 63);
+        const size_t s = find(h, c[0], c[1], c[2]);
         if (heads[s] == kNone) heads[s] = k;
         else {
             next[k] = next[heads[s]];
