@@ -10,6 +10,7 @@
 //   mesh ............ cleanMesh
 #include "geometry/io/model_loader.h"
 #include "geometry/scene/parallel_ranges.h"
+#include "geometry/scene/unwritten_vector.h"
 
 #include <algorithm>
 #include <array>
@@ -180,7 +181,7 @@ std::vector<uint32_t> mergeCandidates(const std::vector<glm::vec3>& pos, const s
     // the counters and reads every vertex's, so no increment needs to be atomic. Counters are
     // prefetched a few vertices ahead: the table is far larger than the caches.
     constexpr size_t kAhead = 16;
-    std::vector<uint32_t> slot(n);
+    scene::UnwrittenVector<uint32_t> slot(n);
     scene::forEachRange(n, threads, [&](unsigned, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             bool near = false;
@@ -205,7 +206,7 @@ std::vector<uint32_t> mergeCandidates(const std::vector<glm::vec3>& pos, const s
             if ((slot[i] & kNear) || seen[slot[i] & mask] >= 2) kept[t].push_back(static_cast<uint32_t>(i));
         }
     });
-    std::vector<uint32_t>().swap(slot);
+    decltype(slot)().swap(slot);
     std::vector<uint8_t>().swap(seen);
     for (size_t t = 1; t < kept.size(); ++t) {
         kept[0].insert(kept[0].end(), kept[t].begin(), kept[t].end());
@@ -323,7 +324,7 @@ void dropDegenerate(const std::vector<glm::vec3>& pos, std::vector<Tri>& tris, d
 /// sorted on their own threads by vertex range (each face is in one bucket).
 void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupReport& r) {
     const unsigned threads = scene::rangeThreads(tris.size(), kFacesPerThreadMin);
-    std::vector<Tri> keys(tris.size());
+    scene::UnwrittenVector<Tri> keys(tris.size());
     scene::forEachRange(tris.size(), threads, [&](unsigned, size_t b, size_t e) {
         for (size_t f = b; f < e; ++f) { // three compare-exchanges: std::sort's set-up costs more than its work
             auto [x, y, z] = tris[f];
@@ -427,6 +428,9 @@ void fixOrientation(size_t vertexCount, std::vector<Tri>& tris, CleanupReport& r
 
 // ---- [SECTION] Normals ----------------------------------------------------------------------
 
+/// Area-weighted face normals, one a face, written by one parallel pass.
+using FaceNormals = scene::UnwrittenVector<glm::vec3>;
+
 /// Above this many faces around one vertex (fans of huge cones, hostile input) per-corner
 /// averaging is quadratic; faces are grouped instead.
 constexpr size_t kExactCornerDegree = 256;
@@ -434,7 +438,7 @@ constexpr size_t kExactCornerDegree = 256;
 /// Groups the faces around a vertex greedily by normal (a face joins the first group whose seed
 /// is within the crease angle) and gives every corner its group's average. O(faces × groups);
 /// groups stay few because their seeds are more than the crease angle apart.
-void clusterCornerNormals(const uint32_t* begin, const uint32_t* end, const std::vector<glm::vec3>& faceN,
+void clusterCornerNormals(const uint32_t* begin, const uint32_t* end, const FaceNormals& faceN,
                           const std::vector<glm::vec3>& unit, float cosCrease, std::vector<glm::vec3>& cornerN) {
     // Below ~5° the seeds could be as many as the faces: keep the grouping coarse enough.
     const float cosGroup = std::min(cosCrease, 0.996f);
@@ -475,7 +479,7 @@ constexpr size_t kMaskedCornerDegree = 64;
 /// are within the crease angle is symmetric, so each pair is tested once, and corners whose faces
 /// within the angle are the same set (every corner of a smooth vertex, the corners of one side of a
 /// crease) share one sum, added in the same order and normalised once.
-void maskedCornerNormals(const uint32_t* begin, size_t deg, const std::vector<glm::vec3>& faceN,
+void maskedCornerNormals(const uint32_t* begin, size_t deg, const FaceNormals& faceN,
                          const std::vector<glm::vec3>& unit, float cosCrease, std::vector<glm::vec3>& cornerN) {
     std::array<uint64_t, kMaskedCornerDegree> within;              // bit k of within[i]: face k counts for corner i
     for (size_t i = 0; i < deg; ++i) within[i] = uint64_t(1) << i; // a corner's own face always counts
@@ -504,7 +508,7 @@ void maskedCornerNormals(const uint32_t* begin, size_t deg, const std::vector<gl
 
 /// The corner normals of vertex `v` into `cornerN` (one per face around it, in `vf.of(v)`'s order): each
 /// averages the (area-weighted) normals of the faces around v within the crease angle of its own face.
-void cornerNormals(uint32_t v, const VertexFaces& vf, const std::vector<glm::vec3>& faceN, float cosCrease,
+void cornerNormals(uint32_t v, const VertexFaces& vf, const FaceNormals& faceN, float cosCrease,
                    std::vector<glm::vec3>& cornerN, std::vector<glm::vec3>& unit) {
     const auto [begin, end] = vf.of(v);
     const size_t deg = static_cast<size_t>(end - begin);
@@ -536,7 +540,7 @@ constexpr uint32_t kAheadVertices = 4;
 /// per distinct corner normal, appended to `out`; each corner of `tris` at such a vertex gets
 /// `provisional` + its output's index in `out`, marked (bit 31) so that a later vertex's search
 /// does not take it for its own id. Ranges are independent: each writes its own corners only.
-void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, const std::vector<glm::vec3>& faceN,
+void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, const FaceNormals& faceN,
                           const std::vector<glm::vec3>& pos, float cosCrease, uint32_t provisional,
                           std::vector<Tri>& tris, SplitVertices& out) {
     // Crease splits add vertices: room for half as many again, so that growth by doubling rarely
@@ -601,7 +605,7 @@ void computeNormals(scene::Mesh& mesh, std::vector<glm::vec3>& pos, std::vector<
     {
         // Unit normals are made per vertex from these, not kept per face: 12 bytes a triangle less
         // at the load's peak.
-        std::vector<glm::vec3> faceN(tris.size());
+        FaceNormals faceN(tris.size());
         scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kNormalsPerThreadMin),
                             [&](unsigned, size_t b, size_t e) {
                                 for (size_t f = b; f < e; ++f) {

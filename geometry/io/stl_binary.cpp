@@ -1,6 +1,7 @@
 #include "geometry/io/stl_binary.h"
 
 #include "geometry/scene/parallel_ranges.h"
+#include "geometry/scene/unwritten_vector.h"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -222,7 +223,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
     Welder& all = ranges[0].welder;
     for (unsigned i = 1; i < threads; ++i) {
         const std::vector<Key>& local = ranges[i].welder.keys();
-        std::vector<uint32_t> global(local.size());
+        scene::UnwrittenVector<uint32_t> global(local.size());
         // Looked up on every core (the table is only read), then numbered in order: a key not found
         // is a new vertex (a range's keys are distinct), and only a range that others follow needs
         // its new keys in the table.

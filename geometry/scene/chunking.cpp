@@ -2,6 +2,7 @@
 
 #include "geometry/scene/compact_vertices.h"
 #include "geometry/scene/parallel_ranges.h"
+#include "geometry/scene/unwritten_vector.h"
 
 #include <algorithm>
 #include <bit>
@@ -30,12 +31,14 @@ struct Item {
     uint32_t id;
 };
 static_assert(sizeof(Item) == 16, "centroidBox loads an item as four floats");
+/// Every triangle's item, written by one parallel pass.
+using Items = UnwrittenVector<Item>;
 
 /// The box of the centroids of items [begin, end), as Aabb::add makes it (up to the sign of a zero
 /// bound, which no extent comparison sees). Four boxes over interleaved items, joined at the end: one
 /// running min and max per axis is a chain of dependent instructions (4 M piperack STL, one thread:
 /// chunking 0.445 -> 0.42 s).
-Aabb centroidBox(const std::vector<Item>& items, uint32_t begin, uint32_t end) noexcept {
+Aabb centroidBox(const Items& items, uint32_t begin, uint32_t end) noexcept {
     Aabb box;
 #if defined(__SSE2__)
     // _mm_min_ps(p, lo) is p < lo ? p : lo, lane by lane: Aabb::add's comparison, NaN included. The
@@ -74,7 +77,7 @@ struct Splitter {
     std::vector<Range> chunks, parts; // each in order of begin
 
     /// `spawn`: levels below this one that may still hand their upper half to a new thread.
-    void split(std::vector<Item>& items, uint32_t begin, uint32_t end, bool inChunk, int spawn) {
+    void split(Items& items, uint32_t begin, uint32_t end, bool inChunk, int spawn) {
         if (!inChunk && end - begin <= maxTriangles) {
             chunks.emplace_back(begin, end);
             inChunk = true;
@@ -158,7 +161,7 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
     if (triCount == 0) return;
 
     const unsigned threads = rangeThreads(triCount, kParallelTriangles);
-    std::vector<Item> items(triCount);
+    Items items(triCount);
     forEachRange(triCount, threads, [&](unsigned, size_t b, size_t e) {
         for (size_t t = b; t < e; ++t)
             items[t] = {(mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
@@ -174,7 +177,7 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
         for (size_t i = b; i < e; ++i)
             for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.indices[3 * size_t(items[i].id) + k];
     });
-    std::vector<Item>().swap(items);
+    Items().swap(items);
     mesh.indices = std::move(indices);
 
     // Parts come in order of begin and tile the chunks, which come in the same order. A chunk of one
