@@ -3,11 +3,14 @@
 //
 // Index
 //   [SECTION] Cleanup report ............. CleanupReport::operator+=
-//   [SECTION] Small helpers .............. mix, tableSize, triangles, keepUnmarked, renumber, fitCapacity
-//   [SECTION] Bad faces and duplicates ... dropNonFinite, MergeGrid, mergeCandidates, mergeDuplicates, dropDegenerate,
-//   dropDuplicateFaces [SECTION] Orientation ................ VertexFaces, cornerOf, fixOrientation [SECTION] Normals
-//   .................... clusterCornerNormals, cornerNormals, splitCornersByNormal, computeNormals [SECTION] Cleaning a
-//   mesh ............ cleanMesh
+//   [SECTION] Small helpers .............. mix, tableSize, triangles, keepUnmarked, renumber, bucketFaces,
+//                                          fitCapacity
+//   [SECTION] Bad faces and duplicates ... dropNonFinite, MergeGrid, mergeCandidates, mergeDuplicates,
+//                                          dropDegenerate, dropDuplicateFaces
+//   [SECTION] Orientation ................ VertexFaces, cornerOf, fixOrientation
+//   [SECTION] Normals .................... clusterCornerNormals, cornerNormals, splitCornersByNormal,
+//                                          computeNormals
+//   [SECTION] Cleaning a mesh ............ cleanMesh
 #include "geometry/io/model_loader.h"
 #include "geometry/scene/parallel_ranges.h"
 #include "geometry/scene/unwritten_vector.h"
@@ -94,6 +97,51 @@ void renumber(std::vector<Tri>& tris, const std::vector<uint32_t>& to) {
                             for (size_t f = b; f < e; ++f)
                                 for (uint32_t& v : tris[f]) v = to[v];
                         });
+}
+
+/// Faces a bucketing pass looks at together: a block whose vertices all lie outside a thread's range
+/// is skipped by that thread.
+constexpr size_t kBucketBlockFaces = 4096;
+
+/// Faces bucketed by vertex (a counting sort): `corners(f, emit)` calls emit(v) for each vertex face f
+/// is listed under; `start` gets vertexCount + 1 offsets into `order`, which lists each vertex's faces
+/// in face order. On every core: each thread owns a range of vertices and writes only their counts and
+/// list entries, reading the blocks of faces that touch its range (a loaded mesh numbers its vertices
+/// about in face order, so mostly its own share), so the result is the same for any thread count.
+template <class Corners>
+void bucketFaces(size_t vertexCount, size_t faceCount, const Corners& corners, std::vector<uint32_t>& start,
+                 scene::UnwrittenVector<uint32_t>& order) {
+    const unsigned threads = scene::rangeThreads(faceCount, kFacesPerThreadMin);
+    const size_t blocks = (faceCount + kBucketBlockFaces - 1) / kBucketBlockFaces;
+    std::vector<std::pair<uint32_t, uint32_t>> span(blocks, {~0u, 0u}); // the vertices a block lists under
+    scene::forEachRange(blocks, threads, [&](unsigned, size_t b, size_t e) {
+        for (size_t k = b; k < e; ++k)
+            for (size_t f = k * kBucketBlockFaces; f < std::min(faceCount, (k + 1) * kBucketBlockFaces); ++f)
+                corners(f, [&](uint32_t v) {
+                    span[k].first = std::min(span[k].first, v);
+                    span[k].second = std::max(span[k].second, v);
+                });
+    });
+    // Each thread's faces listed under its vertices [lo, hi), block by block.
+    const auto forOwnCorners = [&](size_t lo, size_t hi, const auto& body) {
+        for (size_t k = 0; k < blocks; ++k) {
+            if (span[k].second < lo || span[k].first >= hi) continue;
+            for (size_t f = k * kBucketBlockFaces; f < std::min(faceCount, (k + 1) * kBucketBlockFaces); ++f)
+                corners(f, [&](uint32_t v) {
+                    if (v >= lo && v < hi) body(v, uint32_t(f));
+                });
+        }
+    };
+    start.assign(vertexCount + 1, 0);
+    scene::forEachRange(vertexCount, threads, [&](unsigned, size_t lo, size_t hi) {
+        forOwnCorners(lo, hi, [&](uint32_t v, uint32_t) { ++start[v + 1]; });
+    });
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    order.resize(start.back());
+    scene::forEachRange(vertexCount, threads, [&](unsigned, size_t lo, size_t hi) {
+        std::vector<uint32_t> fill(start.begin() + lo, start.begin() + hi);
+        forOwnCorners(lo, hi, [&](uint32_t v, uint32_t f) { order[fill[v - lo]++] = f; });
+    });
 }
 
 /// Reallocates `v` to its size plus `spare` when it holds more than 1/16 beyond that.
@@ -334,12 +382,10 @@ void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupRepor
             keys[f] = {x, y, z};
         }
     });
-    std::vector<uint32_t> start(vertexCount + 1, 0);
-    for (const Tri& k : keys) ++start[k[0] + 1];
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    std::vector<uint32_t> order(tris.size()), fill(start.begin(), start.end() - 1);
-    for (uint32_t f = 0; f < tris.size(); ++f) order[fill[keys[f][0]]++] = f;
-    std::vector<uint32_t>().swap(fill);
+    std::vector<uint32_t> start;
+    scene::UnwrittenVector<uint32_t> order;
+    bucketFaces(
+        vertexCount, keys.size(), [&](size_t f, const auto& emit) { emit(keys[f][0]); }, start, order);
     std::vector<char> dup(tris.size(), 0);
     scene::forEachRange(
         vertexCount, threads,
@@ -363,14 +409,15 @@ void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupRepor
 
 /// Vertex → incident faces, compressed (counting sort).
 struct VertexFaces {
-    std::vector<uint32_t> offset, faces;
-    VertexFaces(size_t vertexCount, const std::vector<Tri>& tris) : offset(vertexCount + 1, 0), faces(3 * tris.size()) {
-        for (const Tri& t : tris)
-            for (uint32_t v : t) ++offset[v + 1];
-        std::partial_sum(offset.begin(), offset.end(), offset.begin());
-        std::vector<uint32_t> fill(offset.begin(), offset.end() - 1);
-        for (uint32_t f = 0; f < tris.size(); ++f)
-            for (uint32_t v : tris[f]) faces[fill[v]++] = f;
+    std::vector<uint32_t> offset;
+    scene::UnwrittenVector<uint32_t> faces;
+    VertexFaces(size_t vertexCount, const std::vector<Tri>& tris) {
+        bucketFaces(
+            vertexCount, tris.size(),
+            [&](size_t f, const auto& emit) {
+                for (uint32_t v : tris[f]) emit(v);
+            },
+            offset, faces);
     }
     [[nodiscard]] std::pair<const uint32_t*, const uint32_t*> of(uint32_t v) const {
         return {faces.data() + offset[v], faces.data() + offset[v + 1]};
