@@ -113,24 +113,26 @@ void bucketFaces(size_t vertexCount, size_t faceCount, const Corners& corners, s
                  scene::UnwrittenVector<uint32_t>& order) {
     const unsigned threads = scene::rangeThreads(faceCount, kFacesPerThreadMin);
     const size_t blocks = (faceCount + kBucketBlockFaces - 1) / kBucketBlockFaces;
+    // body(v, f) for every vertex v that the faces of block k list under.
+    const auto forBlockCorners = [&](size_t k, const auto& body) {
+        for (size_t f = k * kBucketBlockFaces; f < std::min(faceCount, (k + 1) * kBucketBlockFaces); ++f)
+            corners(f, [&](uint32_t v) { body(v, uint32_t(f)); });
+    };
     std::vector<std::pair<uint32_t, uint32_t>> span(blocks, {~0u, 0u}); // the vertices a block lists under
     scene::forEachRange(blocks, threads, [&](unsigned, size_t b, size_t e) {
         for (size_t k = b; k < e; ++k)
-            for (size_t f = k * kBucketBlockFaces; f < std::min(faceCount, (k + 1) * kBucketBlockFaces); ++f)
-                corners(f, [&](uint32_t v) {
-                    span[k].first = std::min(span[k].first, v);
-                    span[k].second = std::max(span[k].second, v);
-                });
+            forBlockCorners(k, [&](uint32_t v, uint32_t) {
+                span[k].first = std::min(span[k].first, v);
+                span[k].second = std::max(span[k].second, v);
+            });
     });
     // Each thread's faces listed under its vertices [lo, hi), block by block.
     const auto forOwnCorners = [&](size_t lo, size_t hi, const auto& body) {
-        for (size_t k = 0; k < blocks; ++k) {
-            if (span[k].second < lo || span[k].first >= hi) continue;
-            for (size_t f = k * kBucketBlockFaces; f < std::min(faceCount, (k + 1) * kBucketBlockFaces); ++f)
-                corners(f, [&](uint32_t v) {
-                    if (v >= lo && v < hi) body(v, uint32_t(f));
+        for (size_t k = 0; k < blocks; ++k)
+            if (span[k].second >= lo && span[k].first < hi)
+                forBlockCorners(k, [&](uint32_t v, uint32_t f) {
+                    if (v >= lo && v < hi) body(v, f);
                 });
-        }
     };
     start.assign(vertexCount + 1, 0);
     scene::forEachRange(vertexCount, threads, [&](unsigned, size_t lo, size_t hi) {
@@ -290,7 +292,13 @@ std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const s
     // candidates) took 0.35-0.49 s instead of 0.65-0.75 s.
     const uint64_t bitMask = 8 * cap - 1;
     std::vector<uint64_t> occupied(cap / 8, 0);
-    const auto maybeOccupied = [&](uint64_t h) { return (occupied[(h & bitMask) >> 6] >> (h & 63) & 1) != 0; };
+    const auto bitOf = [&](uint64_t h) -> std::pair<uint64_t&, uint64_t> {
+        return {occupied[(h & bitMask) >> 6], uint64_t(1) << (h & 63)};
+    };
+    const auto maybeOccupied = [&](uint64_t h) {
+        const auto [word, bit] = bitOf(h);
+        return (word & bit) != 0;
+    };
     // Slot holding the list head of cell (x, y, z) of hash h, or the empty slot where it would go.
     auto find = [&](uint64_t h, int64_t x, int64_t y, int64_t z) -> size_t {
         for (size_t s = h & (cap - 1);; s = (s + 1) & (cap - 1)) {
@@ -335,7 +343,8 @@ std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const s
             continue;
         }
         const uint64_t h = MergeGrid::hash(c[0], c[1], c[2]);
-        occupied[(h & bitMask) >> 6] |= uint64_t(1) << (h & 63);
+        const auto [word, bit] = bitOf(h);
+        word |= bit;
         const size_t s = find(h, c[0], c[1], c[2]);
         if (heads[s] == kNone) heads[s] = k;
         else {
