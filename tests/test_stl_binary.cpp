@@ -4,6 +4,7 @@
 // (read corner by corner and merged by cleanup alone).
 #include "geometry/io/model_loader.h"
 #include "geometry/io/stl_binary.h"
+#include "geometry/scene/scratch_pages.h"
 
 #include "temp_dir_test_util.h"
 
@@ -139,4 +140,41 @@ TEST_F(StlBinaryTest, LoadsAsItsAsciiTwinDoes) {
     EXPECT_LE(m.positions.capacity(), m.positions.size() + 1 + m.positions.size() / 16);
     EXPECT_LE(m.normals.capacity(), m.normals.size() + m.normals.size() / 16);
     EXPECT_EQ(m.indices.capacity(), m.indices.size());
+}
+
+TEST_F(StlBinaryTest, PagesLeftByEarlierWorkChangeNothing) {
+    // 180 k facets: the load's arrays are MiBs, scratch pages (geometry/scene/scratch_pages.h). Kept
+    // pages hold what was last written in them, unlike fresh ones: a pass that read an element
+    // before writing it would see 0xff here and zero in the first load.
+    namespace scratch = geometry::scene::scratch;
+    const std::vector<Triangle> tris = shuffledGrid(300, 3);
+    const std::string path = write("big.stl", binaryStl(tris));
+    const geometry::io::LoadedModel first = geometry::io::loadModel(path);
+    EXPECT_EQ(scratch::keptBytes(), 0u); // the load gave its pages back
+    geometry::io::LoadedModel again;
+    {
+        const geometry::scene::ScratchScope outer; // keeps these and the pages the load frees
+        for (const size_t mib : {1, 2, 8, 32}) {
+            void* block = scratch::allocate(mib << 20);
+            std::memset(block, 0xff, mib << 20);
+            scratch::release(block, mib << 20);
+        }
+        again = geometry::io::loadModel(path);
+        if (geometry::scene::kScratchPages) {
+            EXPECT_GT(scratch::keptBytes(), 0u);
+        }
+    }
+    EXPECT_EQ(scratch::keptBytes(), 0u);
+    ASSERT_EQ(first.meshes.size(), 1u);
+    ASSERT_EQ(again.meshes.size(), 1u);
+    const geometry::scene::Mesh &a = first.meshes[0], &b = again.meshes[0];
+    EXPECT_EQ(a.triangleCount(), tris.size());
+    EXPECT_EQ(b.indices, a.indices);
+    EXPECT_EQ(b.positions, a.positions);
+    EXPECT_EQ(b.normals, a.normals);
+    ASSERT_EQ(b.chunks.size(), a.chunks.size());
+    for (size_t c = 0; c < a.chunks.size(); ++c) {
+        EXPECT_EQ(b.chunks[c].firstTriangle, a.chunks[c].firstTriangle);
+        EXPECT_EQ(b.chunks[c].triangleCount, a.chunks[c].triangleCount);
+    }
 }

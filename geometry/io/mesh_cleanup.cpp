@@ -13,6 +13,7 @@
 //   [SECTION] Cleaning a mesh ............ cleanMesh
 #include "geometry/io/model_loader.h"
 #include "geometry/scene/parallel_ranges.h"
+#include "geometry/scene/scratch_pages.h"
 #include "geometry/scene/unwritten_vector.h"
 
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include <cstdio>
 #include <cstring>
 #include <numeric>
+#include <span>
 #include <tuple>
 
 namespace geometry::io {
@@ -55,6 +57,9 @@ namespace {
 
 constexpr uint32_t kNone = ~0u;
 using Tri = std::array<uint32_t, 3>;
+/// The faces being cleaned: scratch pages (a load's passes reuse each other's pages), each face
+/// written before it is read.
+using Tris = scene::UnwrittenVector<Tri>;
 
 uint64_t mix(uint64_t x) { // splitmix64 finaliser: cheap, good enough spread for probing
     x ^= x >> 30;
@@ -70,18 +75,21 @@ size_t tableSize(size_t n) {
     return cap;
 }
 
-std::vector<Tri> triangles(const scene::Mesh& mesh) {
-    std::vector<Tri> tris(mesh.triangleCount());
-    for (size_t t = 0; t < tris.size(); ++t)
-        tris[t] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
-    return tris;
-}
-
 /// Faces per thread below which a pass over the faces stays on one thread.
 constexpr size_t kFacesPerThreadMin = size_t(1) << 17;
 
+Tris triangles(const scene::Mesh& mesh) {
+    Tris tris(mesh.triangleCount());
+    scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kFacesPerThreadMin),
+                        [&](unsigned, size_t b, size_t e) {
+                            for (size_t t = b; t < e; ++t)
+                                tris[t] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
+                        });
+    return tris;
+}
+
 /// Drops the faces marked in `drop`, keeping the others in order; returns how many went.
-size_t keepUnmarked(std::vector<Tri>& tris, const std::vector<char>& drop) {
+size_t keepUnmarked(Tris& tris, const scene::ScratchVector<char>& drop) {
     size_t out = 0;
     for (size_t f = 0; f < tris.size(); ++f)
         if (!drop[f]) tris[out++] = tris[f];
@@ -91,7 +99,7 @@ size_t keepUnmarked(std::vector<Tri>& tris, const std::vector<char>& drop) {
 }
 
 /// Every corner v becomes to[v], on every core.
-void renumber(std::vector<Tri>& tris, const std::vector<uint32_t>& to) {
+void renumber(Tris& tris, const scene::ScratchVector<uint32_t>& to) {
     scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kFacesPerThreadMin),
                         [&](unsigned, size_t b, size_t e) {
                             for (size_t f = b; f < e; ++f)
@@ -109,7 +117,7 @@ constexpr size_t kBucketBlockFaces = 4096;
 /// list entries, reading the blocks of faces that touch its range (a loaded mesh numbers its vertices
 /// about in face order, so mostly its own share), so the result is the same for any thread count.
 template <class Corners>
-void bucketFaces(size_t vertexCount, size_t faceCount, const Corners& corners, std::vector<uint32_t>& start,
+void bucketFaces(size_t vertexCount, size_t faceCount, const Corners& corners, scene::ScratchVector<uint32_t>& start,
                  scene::UnwrittenVector<uint32_t>& order) {
     const unsigned threads = scene::rangeThreads(faceCount, kFacesPerThreadMin);
     const size_t blocks = (faceCount + kBucketBlockFaces - 1) / kBucketBlockFaces;
@@ -160,8 +168,8 @@ template <class T> void fitCapacity(std::vector<T>& v, size_t spare) {
 
 /// Drops faces with an index out of range or touching a NaN/Inf vertex. Returns the
 /// finite-vertex mask.
-std::vector<char> dropNonFinite(const scene::Mesh& mesh, std::vector<Tri>& tris, CleanupReport& r) {
-    std::vector<char> ok(mesh.positions.size());
+scene::ScratchVector<char> dropNonFinite(const scene::Mesh& mesh, Tris& tris, CleanupReport& r) {
+    scene::ScratchVector<char> ok(mesh.positions.size());
     for (size_t i = 0; i < ok.size(); ++i) ok[i] = scene::finite(mesh.positions[i]);
     r.nonFiniteVertices = static_cast<size_t>(std::count(ok.begin(), ok.end(), 0));
     const size_t n = ok.size();
@@ -208,7 +216,8 @@ constexpr size_t kMergePerThreadMin = size_t(1) << 16;
 /// result, and the set kept holds every neighbour of its members. Occupancy is counted in a byte
 /// table by hash (a collision only keeps a vertex in), in parallel: the final counts, and so the set,
 /// do not depend on the order of the increments.
-std::vector<uint32_t> mergeCandidates(const std::vector<glm::vec3>& pos, const std::vector<char>& ok, double tol) {
+scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, const scene::ScratchVector<char>& ok,
+                                               double tol) {
     const size_t n = pos.size();
     const bool exact = !(tol > 0);
     const double inv = exact ? 1.0 : 1.0 / (64 * tol), reach = 1.0 / 64;
@@ -224,7 +233,7 @@ std::vector<uint32_t> mergeCandidates(const std::vector<glm::vec3>& pos, const s
         return MergeGrid::hash(c[0], c[1], c[2]);
     };
     const unsigned threads = scene::rangeThreads(n, kMergePerThreadMin);
-    std::vector<uint8_t> seen(tableSize(4 * n), 0); // ≥ 8 counters a vertex: few collisions
+    scene::ScratchVector<uint8_t> seen(tableSize(4 * n), 0); // ≥ 8 counters a vertex: few collisions
     const uint32_t mask = uint32_t(std::min<size_t>(seen.size(), size_t(1) << 30) - 1);
     constexpr uint32_t kNear = 0x80000000u, kNotFinite = kNone;
     // Each vertex's counter (bit 31: near a cell face), then the counts: each thread owns a slice of
@@ -248,7 +257,7 @@ std::vector<uint32_t> mergeCandidates(const std::vector<glm::vec3>& pos, const s
             if (s >= lo && s < hi && seen[s] < 2) ++seen[s];
         }
     });
-    std::vector<std::vector<uint32_t>> kept(threads);
+    scene::ScratchVector<scene::ScratchVector<uint32_t>> kept(threads);
     scene::forEachRange(n, threads, [&](unsigned t, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             if (i + kAhead < e) __builtin_prefetch(&seen[slot[i + kAhead] & mask]);
@@ -257,10 +266,10 @@ std::vector<uint32_t> mergeCandidates(const std::vector<glm::vec3>& pos, const s
         }
     });
     decltype(slot)().swap(slot);
-    std::vector<uint8_t>().swap(seen);
+    scene::ScratchVector<uint8_t>().swap(seen);
     for (size_t t = 1; t < kept.size(); ++t) {
         kept[0].insert(kept[0].end(), kept[t].begin(), kept[t].end());
-        std::vector<uint32_t>().swap(kept[t]);
+        scene::ScratchVector<uint32_t>().swap(kept[t]);
     }
     return std::move(kept[0]);
 }
@@ -271,12 +280,12 @@ constexpr uint32_t kMergeAhead = 8;
 /// Maps every vertex to the first vertex within `tol` of it (spatial hash over the candidates of
 /// mergeCandidates, in index order); non-finite vertices map to themselves and are dropped later
 /// as unused.
-std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const std::vector<char>& ok, double tol,
-                                      CleanupReport& r) {
+scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, const scene::ScratchVector<char>& ok,
+                                               double tol, CleanupReport& r) {
     const size_t n = pos.size();
-    std::vector<uint32_t> rep(n);
+    scene::ScratchVector<uint32_t> rep(n);
     std::iota(rep.begin(), rep.end(), 0u);
-    const std::vector<uint32_t> candidates = mergeCandidates(pos, ok, tol);
+    const scene::ScratchVector<uint32_t> candidates = mergeCandidates(pos, ok, tol);
     // Cells four tolerances wide: most points are far enough from every cell face that only
     // their own cell needs looking at.
     const MergeGrid grid{!(tol > 0), tol > 0 ? 4 * tol : 1.0};
@@ -284,14 +293,14 @@ std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const s
     const double tol2 = tol * tol;
     const size_t cap = tableSize(candidates.size());
     // Cell lists of candidates, by their index in `candidates`.
-    std::vector<uint32_t> heads(cap, kNone), next(candidates.size(), kNone);
+    scene::ScratchVector<uint32_t> heads(cap, kNone), next(candidates.size(), kNone);
     // One bit a cell hash, set where a cell holds a candidate: nearly every cell a search looks at is
     // empty (merges beyond the STL weld are rare), and a clear bit says so from a table a quarter of
     // the size of `heads`, which stays in the cache where `heads` does not. A set bit may be another
     // cell's: the table decides. With the slot prefetch below, the 16 M piperack STL's loop (1.5 M
     // candidates) took 0.35-0.49 s instead of 0.65-0.75 s.
     const uint64_t bitMask = 8 * cap - 1;
-    std::vector<uint64_t> occupied(cap / 8, 0);
+    scene::ScratchVector<uint64_t> occupied(cap / 8, 0);
     const auto bitOf = [&](uint64_t h) -> std::pair<uint64_t&, uint64_t> {
         return {occupied[(h & bitMask) >> 6], uint64_t(1) << (h & 63)};
     };
@@ -356,9 +365,9 @@ std::vector<uint32_t> mergeDuplicates(const std::vector<glm::vec3>& pos, const s
 }
 
 /// Removes faces with a repeated index or an area below the merge resolution.
-void dropDegenerate(const std::vector<glm::vec3>& pos, std::vector<Tri>& tris, double tol, CleanupReport& r) {
+void dropDegenerate(std::span<const glm::vec3> pos, Tris& tris, double tol, CleanupReport& r) {
     const double minCross2 = tol * tol * tol * tol; // |cross| = 2·area ≤ tol²
-    std::vector<char> bad(tris.size());
+    scene::ScratchVector<char> bad(tris.size());
     scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kFacesPerThreadMin),
                         [&](unsigned, size_t b, size_t e) {
                             for (size_t f = b; f < e; ++f) {
@@ -379,7 +388,7 @@ void dropDegenerate(const std::vector<glm::vec3>& pos, std::vector<Tri>& tris, d
 /// Duplicates share their smallest vertex, so faces are bucketed by it (counting sort: cache
 /// friendly, unlike a hash table over all faces) and compared within a bucket only; buckets are
 /// sorted on their own threads by vertex range (each face is in one bucket).
-void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupReport& r) {
+void dropDuplicateFaces(size_t vertexCount, Tris& tris, CleanupReport& r) {
     const unsigned threads = scene::rangeThreads(tris.size(), kFacesPerThreadMin);
     scene::UnwrittenVector<Tri> keys(tris.size());
     scene::forEachRange(tris.size(), threads, [&](unsigned, size_t b, size_t e) {
@@ -391,11 +400,11 @@ void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupRepor
             keys[f] = {x, y, z};
         }
     });
-    std::vector<uint32_t> start;
+    scene::ScratchVector<uint32_t> start;
     scene::UnwrittenVector<uint32_t> order;
     bucketFaces(
         vertexCount, keys.size(), [&](size_t f, const auto& emit) { emit(keys[f][0]); }, start, order);
-    std::vector<char> dup(tris.size(), 0);
+    scene::ScratchVector<char> dup(tris.size(), 0);
     scene::forEachRange(
         vertexCount, threads,
         [&](unsigned, size_t first, size_t last) {
@@ -410,7 +419,7 @@ void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupRepor
                     if (keys[*it] == keys[*(it - 1)]) dup[*it] = 1;
             }
         },
-        &start);
+        start);
     r.duplicateFaces += keepUnmarked(tris, dup);
 }
 
@@ -418,9 +427,9 @@ void dropDuplicateFaces(size_t vertexCount, std::vector<Tri>& tris, CleanupRepor
 
 /// Vertex → incident faces, compressed (counting sort).
 struct VertexFaces {
-    std::vector<uint32_t> offset;
+    scene::ScratchVector<uint32_t> offset;
     scene::UnwrittenVector<uint32_t> faces;
-    VertexFaces(size_t vertexCount, const std::vector<Tri>& tris) {
+    VertexFaces(size_t vertexCount, const Tris& tris) {
         bucketFaces(
             vertexCount, tris.size(),
             [&](size_t f, const auto& emit) {
@@ -437,10 +446,10 @@ int cornerOf(const Tri& t, uint32_t v) { return t[0] == v ? 0 : (t[1] == v ? 1 :
 
 /// Makes winding consistent across edge-adjacent faces, per connected component, keeping the
 /// majority orientation of each component (so a few flipped faces are the ones turned).
-void fixOrientation(size_t vertexCount, std::vector<Tri>& tris, CleanupReport& r) {
+void fixOrientation(size_t vertexCount, Tris& tris, CleanupReport& r) {
     const VertexFaces vf(vertexCount, tris);
-    std::vector<char> seen(tris.size(), 0), flip(tris.size(), 0);
-    std::vector<uint32_t> component, queue;
+    scene::ScratchVector<char> seen(tris.size(), 0), flip(tris.size(), 0);
+    scene::ScratchVector<uint32_t> component, queue;
     for (uint32_t seed = 0; seed < tris.size(); ++seed) {
         if (seen[seed]) continue;
         component.clear();
@@ -525,7 +534,7 @@ glm::vec3 unitOf(const glm::vec3& n) {
 
 /// One range of vertices' output: positions and normals in the order of their vertices.
 struct SplitVertices {
-    std::vector<glm::vec3> positions, normals;
+    scene::ScratchVector<glm::vec3> positions, normals;
 };
 
 /// Degrees up to which a corner's faces within the crease angle are kept as a bit mask.
@@ -597,8 +606,8 @@ constexpr uint32_t kAheadVertices = 4;
 /// `provisional` + its output's index in `out`, marked (bit 31) so that a later vertex's search
 /// does not take it for its own id. Ranges are independent: each writes its own corners only.
 void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, const FaceNormals& faceN,
-                          const std::vector<glm::vec3>& pos, float cosCrease, uint32_t provisional,
-                          std::vector<Tri>& tris, SplitVertices& out) {
+                          const scene::ScratchVector<glm::vec3>& pos, float cosCrease, uint32_t provisional, Tris& tris,
+                          SplitVertices& out) {
     // Crease splits add vertices: room for half as many again, so that growth by doubling rarely
     // comes on top of this stage's temporaries.
     out.positions.reserve((last - first) + (last - first) / 2);
@@ -650,7 +659,7 @@ constexpr size_t kNormalsPerThreadMin = size_t(1) << 16;
 /// vertices, so sharp CAD edges stay sharp. Vertex ranges run on their own threads, each into its own
 /// arrays, joined in vertex order once the face normals and the vertex → face table are gone (the
 /// load's memory peak at scale), so the result is the same for any thread count.
-void computeNormals(scene::Mesh& mesh, std::vector<glm::vec3>& pos, std::vector<Tri>& tris, double creaseDeg) {
+void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Tris& tris, double creaseDeg) {
     const float cosCrease = static_cast<float>(std::cos(glm::radians(std::clamp(creaseDeg, 0.0, 180.0))));
     // Provisional indices are corner counts (an upper bound on the outputs before a vertex), marked
     // by bit 31: past 2³¹ corners one range is all there can be.
@@ -677,9 +686,12 @@ void computeNormals(scene::Mesh& mesh, std::vector<glm::vec3>& pos, std::vector<
                 provisional[r] = vf.offset[b];
                 splitCornersByNormal(uint32_t(b), uint32_t(e), vf, faceN, pos, cosCrease, provisional[r], tris, out[r]);
             },
-            &vf.offset);
+            vf.offset);
     }
-    std::vector<glm::vec3>().swap(pos);
+    scene::ScratchVector<glm::vec3>().swap(pos);
+    // The mesh's arrays come from the heap: pages kept from the face normals and the vertex → face
+    // table would stay resident beside them, above the load's peak.
+    scene::scratch::releaseKept();
     // Join: exact sizes, one spare vertex of capacity for positions (Embree's last load,
     // scene::reserveSpareVertex).
     std::vector<uint32_t> base(threads + 1, 0); // the ranges' first real index
@@ -729,14 +741,14 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
     CleanupReport r;
     r.inputVertices = mesh.positions.size();
     r.inputFaces = mesh.triangleCount();
-    std::vector<Tri> tris = triangles(mesh);
+    Tris tris = triangles(mesh);
     std::vector<uint32_t>().swap(mesh.indices); // tris hold them now: peak memory is what counts at scale
-    std::vector<glm::vec3> pos;
+    scene::ScratchVector<glm::vec3> pos;
     {
         // Each temporary lives in this block only, so that none is held through computeNormals
         // (the peak: face normals, vertex → faces and the output arrays at once).
         stage(0.f, "cleaning: non-finite vertices");
-        const std::vector<char> ok = dropNonFinite(mesh, tris, r);
+        const scene::ScratchVector<char> ok = dropNonFinite(mesh, tris, r);
         scene::Aabb box;
         for (size_t i = 0; i < mesh.positions.size(); ++i)
             if (ok[i]) box.add(mesh.positions[i]);
@@ -748,14 +760,14 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
         r.mergeTolerance = tol;
 
         stage(0.05f, "cleaning: merging vertices");
-        const std::vector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, r);
+        const scene::ScratchVector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, r);
         renumber(tris, rep);
         stage(0.2f, "cleaning: degenerate and duplicate faces");
         dropDegenerate(mesh.positions, tris, tol, r);
         dropDuplicateFaces(mesh.positions.size(), tris, r);
 
         // Compact: keep referenced vertices, in their original order.
-        std::vector<uint32_t> newIndex(mesh.positions.size(), kNone);
+        scene::ScratchVector<uint32_t> newIndex(mesh.positions.size(), kNone);
         for (const Tri& t : tris)
             for (uint32_t v : t) newIndex[v] = 0;
         size_t kept = 0;
@@ -779,8 +791,8 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
     }
     stage(0.4f, "cleaning: normals");
     computeNormals(mesh, pos, tris, options.creaseAngleDeg);
-    std::vector<Tri>().swap(tris);
-    std::vector<glm::vec3>().swap(pos);
+    Tris().swap(tris);
+    scene::ScratchVector<glm::vec3>().swap(pos);
     // The slack left for crease splits would stay resident for the model's life. Positions keep one
     // spare vertex (Embree's last load, scene::reserveSpareVertex).
     fitCapacity(mesh.positions, 1);

@@ -3,6 +3,7 @@
 
 #include "geometry/io/gltf_loader.h"
 #include "geometry/scene/chunking.h"
+#include "geometry/scene/scratch_pages.h"
 
 #include <algorithm>
 #include <array>
@@ -71,6 +72,8 @@ void turnUp(LoadedModel& model, UpAxis axis) {
 
 LoadedModel loadModel(const std::string& path, const CleanupOptions& options, const Progress& progress,
                       std::optional<UpAxis> up) {
+    // The passes' temporaries reuse each other's pages; the model's own arrays are not scratch.
+    const scene::ScratchScope scratch;
     LoadedModel model = readModel(path, options, progress);
     turnUp(model, up.value_or(defaultUpAxis(model.format)));
     // Finite transforms can compose to infinity (a glTF node's scale 1e38 on a translation 3e38).

@@ -1,6 +1,7 @@
 #include "geometry/io/stl_binary.h"
 
 #include "geometry/scene/parallel_ranges.h"
+#include "geometry/scene/scratch_pages.h"
 #include "geometry/scene/unwritten_vector.h"
 
 #include <fcntl.h>
@@ -136,7 +137,7 @@ public:
     [[gnu::always_inline]] void prefetch(const Key& k) const noexcept {
         __builtin_prefetch(&slots_[hashOf(k) & (slots_.size() - 1)]);
     }
-    [[nodiscard]] const std::vector<Key>& keys() const noexcept { return keys_; }
+    [[nodiscard]] const scene::ScratchVector<Key>& keys() const noexcept { return keys_; }
 
 private:
     uint32_t push(const Key& k) {
@@ -144,7 +145,7 @@ private:
         return uint32_t(keys_.size() - 1);
     }
     void grow() {
-        std::vector<uint32_t> old(slots_.size() * 2, kEmpty);
+        scene::ScratchVector<uint32_t> old(slots_.size() * 2, kEmpty);
         old.swap(slots_);
         const size_t mask = slots_.size() - 1;
         for (const uint32_t id : old) {
@@ -155,9 +156,9 @@ private:
         }
     }
     static constexpr int kRecentBits = 12;
-    std::vector<uint32_t> slots_;
+    scene::ScratchVector<uint32_t> slots_; // scratch pages, as every large temporary of a load
     std::vector<uint32_t> recent_ = std::vector<uint32_t>(size_t(1) << kRecentBits, kEmpty);
-    std::vector<Key> keys_;
+    scene::ScratchVector<Key> keys_;
     size_t used_ = 0;
 };
 
@@ -222,7 +223,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
     size_t welded = ranges[0].welded;
     Welder& all = ranges[0].welder;
     for (unsigned i = 1; i < threads; ++i) {
-        const std::vector<Key>& local = ranges[i].welder.keys();
+        const scene::ScratchVector<Key>& local = ranges[i].welder.keys();
         scene::UnwrittenVector<uint32_t> global(local.size());
         // Looked up on every core (the table is only read), then numbered in order: a key not found
         // is a new vertex (a range's keys are distinct), and only a range that others follow needs
@@ -249,7 +250,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
         });
         ranges[i].welder = Welder(0); // its memory back before the next range
     }
-    const std::vector<Key>& keys = all.keys();
+    const scene::ScratchVector<Key>& keys = all.keys();
     // One spare vertex of capacity: Embree reads 4 bytes past the last (scene::reserveSpareVertex).
     mesh.positions.reserve(keys.size() + 1);
     mesh.positions.resize(keys.size());

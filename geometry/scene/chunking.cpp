@@ -172,13 +172,17 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
     Splitter splitter{maxTriangles, maxPartTriangles, {}, {}};
     splitter.split(items, 0, triCount, false, spawnLevels());
 
-    std::vector<uint32_t> indices(mesh.indices.size());
+    // Reordered in place from a scratch copy: a new std::vector would be zeroed on one thread first,
+    // faulting in all its pages there, where the copy takes pages a load has freed.
+    UnwrittenVector<uint32_t> before(mesh.indices.size());
+    forEachRange(triCount, threads, [&](unsigned, size_t b, size_t e) {
+        std::copy(mesh.indices.begin() + 3 * b, mesh.indices.begin() + 3 * e, before.begin() + 3 * b);
+    });
     forEachRange(triCount, threads, [&](unsigned, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i)
-            for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.indices[3 * size_t(items[i].id) + k];
+            for (int k = 0; k < 3; ++k) mesh.indices[3 * i + k] = before[3 * size_t(items[i].id) + k];
     });
     Items().swap(items);
-    mesh.indices = std::move(indices);
 
     // Parts come in order of begin and tile the chunks, which come in the same order. A chunk of one
     // part keeps none (the part would be the chunk again).

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -27,21 +28,21 @@ inline std::atomic<unsigned>& rangeThreadCap() noexcept {
 }
 
 /// Calls `body(range, begin, end)` for `threads` contiguous ranges of [0, n) (range 0 on this thread,
-/// the others on their own). `bounds`, when given, is a non-decreasing cost prefix over [0, n]
+/// the others on their own). `bounds`, when not empty, is a non-decreasing cost prefix over [0, n]
 /// (size n + 1) that the ranges split evenly instead of the item count. The first exception thrown
 /// by any range is rethrown here once all have finished.
 template <class Body>
-void forEachRange(size_t n, unsigned threads, Body&& body, const std::vector<uint32_t>* bounds = nullptr) {
+void forEachRange(size_t n, unsigned threads, Body&& body, std::span<const uint32_t> bounds = {}) {
     threads = std::max(threads, 1u);
     std::vector<size_t> cut(threads + 1, n);
     cut[0] = 0;
     for (unsigned t = 1; t < threads; ++t) {
-        if (!bounds) {
+        if (bounds.empty()) {
             cut[t] = n * t / threads;
             continue;
         }
-        const uint64_t goal = uint64_t(bounds->back()) * t / threads; // the cost before range t
-        cut[t] = size_t(std::lower_bound(bounds->begin(), bounds->end(), goal) - bounds->begin());
+        const uint64_t goal = uint64_t(bounds.back()) * t / threads; // the cost before range t
+        cut[t] = size_t(std::lower_bound(bounds.begin(), bounds.end(), goal) - bounds.begin());
         cut[t] = std::clamp(cut[t], cut[t - 1], n);
     }
     std::vector<std::exception_ptr> failed(threads);

@@ -1,6 +1,8 @@
 // Vectors whose elements start unwritten: for the loader's large temporaries that a parallel pass
-// fills whole right after they are made.
+// fills whole right after they are made. Their large blocks are scratch pages (scratch_pages.h).
 #pragma once
+
+#include "geometry/scene/scratch_pages.h"
 
 #include <memory>
 #include <type_traits>
@@ -9,11 +11,11 @@
 
 namespace geometry::scene {
 
-/// std::allocator, except that making an element with no value default-initialises it: a trivial
+/// ScratchAllocator, except that making an element with no value default-initialises it: a trivial
 /// element is left unwritten. std::vector's sized constructor and resize() would otherwise zero
 /// every byte on one thread, taking every fresh page's fault there, before a parallel pass writes
 /// them all again; left unwritten, the threads of that pass fault their own pages in.
-template <class T> struct DefaultInitAllocator : std::allocator<T> {
+template <class T> struct DefaultInitAllocator : ScratchAllocator<T> {
     using value_type = T;
     template <class U> struct rebind { using other = DefaultInitAllocator<U>; };
     DefaultInitAllocator() noexcept = default;

@@ -1,0 +1,106 @@
+#include "geometry/scene/scratch_pages.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace scratch = geometry::scene::scratch;
+using geometry::scene::ScratchScope;
+
+namespace {
+
+constexpr size_t kMiB = size_t(1) << 20;
+
+/// Pages of [p, p + bytes) that are resident (mincore): a kept page moved in is, a fresh one is not
+/// until written.
+size_t residentPages(const void* p, size_t bytes) {
+    const size_t page = size_t(sysconf(_SC_PAGESIZE));
+    std::vector<unsigned char> in((bytes + page - 1) / page);
+    EXPECT_EQ(mincore(const_cast<void*>(p), bytes, in.data()), 0);
+    return size_t(std::count_if(in.begin(), in.end(), [](unsigned char c) { return (c & 1) != 0; }));
+}
+
+size_t bytesEqualTo(const void* p, size_t bytes, unsigned char value) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    return size_t(std::count(b, b + bytes, value));
+}
+
+} // namespace
+
+TEST(ScratchPages, AFreedBlocksPagesMakeTheNextBlockWithTheirContents) {
+    const ScratchScope scope;
+    void* a = scratch::allocate(4 * kMiB);
+    std::memset(a, 0xab, 4 * kMiB);
+    scratch::release(a, 4 * kMiB);
+    EXPECT_EQ(scratch::keptBytes(), 4 * kMiB);
+    void* b = scratch::allocate(4 * kMiB);
+    EXPECT_EQ(scratch::keptBytes(), 0u);
+    // Moved, not copied into fresh pages: resident before any write, and still holding a's bytes.
+    EXPECT_EQ(residentPages(b, 4 * kMiB), 4 * kMiB / size_t(sysconf(_SC_PAGESIZE)));
+    EXPECT_EQ(bytesEqualTo(b, 4 * kMiB, 0xab), 4 * kMiB);
+    scratch::release(b, 4 * kMiB);
+}
+
+TEST(ScratchPages, ALargerBlockTakesEveryKeptPageThenFreshOnes) {
+    const ScratchScope scope;
+    void* a = scratch::allocate(1 * kMiB);
+    void* b = scratch::allocate(2 * kMiB);
+    std::memset(a, 0xaa, 1 * kMiB);
+    std::memset(b, 0xbb, 2 * kMiB);
+    scratch::release(a, 1 * kMiB);
+    scratch::release(b, 2 * kMiB);
+    void* c = scratch::allocate(5 * kMiB);
+    EXPECT_EQ(scratch::keptBytes(), 0u);
+    EXPECT_EQ(bytesEqualTo(c, 5 * kMiB, 0xaa), 1 * kMiB);
+    EXPECT_EQ(bytesEqualTo(c, 5 * kMiB, 0xbb), 2 * kMiB);
+    EXPECT_EQ(bytesEqualTo(c, 5 * kMiB, 0x00), 2 * kMiB); // fresh pages read as zero
+    scratch::release(c, 5 * kMiB);
+}
+
+TEST(ScratchPages, ASmallerBlockLeavesTheRestKept) {
+    const ScratchScope scope;
+    scratch::release(scratch::allocate(4 * kMiB), 4 * kMiB);
+    void* b = scratch::allocate(1 * kMiB + 1); // whole pages: 1 MiB and one page
+    const size_t page = size_t(sysconf(_SC_PAGESIZE));
+    EXPECT_EQ(scratch::keptBytes(), 3 * kMiB - page);
+    scratch::release(b, 1 * kMiB + 1);
+    EXPECT_EQ(scratch::keptBytes(), 4 * kMiB);
+}
+
+TEST(ScratchPages, PagesAreKeptOnlyWhileAScopeIsOpen) {
+    scratch::release(scratch::allocate(2 * kMiB), 2 * kMiB);
+    EXPECT_EQ(scratch::keptBytes(), 0u); // no scope: unmapped at once
+    {
+        const ScratchScope outer;
+        {
+            const ScratchScope inner;
+            scratch::release(scratch::allocate(2 * kMiB), 2 * kMiB);
+        }
+        EXPECT_EQ(scratch::keptBytes(), 2 * kMiB); // the outer scope still holds them
+        scratch::releaseKept();
+        EXPECT_EQ(scratch::keptBytes(), 0u);
+        scratch::release(scratch::allocate(2 * kMiB), 2 * kMiB);
+    }
+    EXPECT_EQ(scratch::keptBytes(), 0u); // the last scope gave them back
+}
+
+TEST(ScratchPages, LargeVectorsUseThemAndSmallOnesTheHeap) {
+    if (!geometry::scene::kScratchPages) GTEST_SKIP() << "the address sanitizer's build keeps the heap's blocks";
+    const ScratchScope scope;
+    { geometry::scene::ScratchVector<uint32_t> small(1000, 7u); }
+    EXPECT_EQ(scratch::keptBytes(), 0u);
+    {
+        geometry::scene::ScratchVector<uint32_t> large(kMiB, 7u); // 4 MiB
+        EXPECT_EQ(std::count(large.begin(), large.end(), 7u), std::ptrdiff_t(kMiB));
+    }
+    EXPECT_EQ(scratch::keptBytes(), 4 * kMiB);
+    geometry::scene::ScratchVector<uint32_t> again(kMiB, 1u); // the kept pages, written anew
+    EXPECT_EQ(scratch::keptBytes(), 0u);
+    EXPECT_EQ(std::count(again.begin(), again.end(), 1u), std::ptrdiff_t(kMiB));
+}
