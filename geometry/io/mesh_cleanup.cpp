@@ -26,6 +26,7 @@
 #include <numeric>
 #include <span>
 #include <tuple>
+#include <utility>
 
 namespace geometry::io {
 
@@ -57,9 +58,29 @@ namespace {
 
 constexpr uint32_t kNone = ~0u;
 using Tri = std::array<uint32_t, 3>;
-/// The faces being cleaned: scratch pages (a load's passes reuse each other's pages), each face
-/// written before it is read.
-using Tris = scene::UnwrittenVector<Tri>;
+/// The faces being cleaned: the mesh's own index array, three corners a face, taken over and handed
+/// back as the mesh's indices. A copy of it (and a new array for the result) would be two more arrays
+/// of the model's size to fault in and fill.
+class Faces {
+public:
+    explicit Faces(std::vector<uint32_t>&& flat) noexcept : flat_(std::move(flat)) {
+        flat_.resize(flat_.size() / 3 * 3); // a trailing part of a face is none (Mesh::triangleCount)
+    }
+    [[nodiscard]] size_t size() const noexcept { return flat_.size() / 3; }
+    [[nodiscard]] std::span<uint32_t, 3> operator[](size_t f) noexcept {
+        return std::span<uint32_t, 3>(flat_.data() + 3 * f, 3);
+    }
+    [[nodiscard]] Tri tri(size_t f) const noexcept { return {flat_[3 * f], flat_[3 * f + 1], flat_[3 * f + 2]}; }
+    /// Every corner, face after face.
+    [[nodiscard]] std::span<uint32_t> corners() noexcept { return flat_; }
+    [[nodiscard]] std::span<const uint32_t> corners() const noexcept { return flat_; }
+    /// Keeps the first `faces` faces.
+    void truncate(size_t faces) { flat_.resize(3 * std::min(faces, size())); }
+    [[nodiscard]] std::vector<uint32_t> release() && noexcept { return std::move(flat_); }
+
+private:
+    std::vector<uint32_t> flat_;
+};
 
 uint64_t mix(uint64_t x) { // splitmix64 finaliser: cheap, good enough spread for probing
     x ^= x >> 30;
@@ -78,32 +99,31 @@ size_t tableSize(size_t n) {
 /// Faces per thread below which a pass over the faces stays on one thread.
 constexpr size_t kFacesPerThreadMin = size_t(1) << 17;
 
-Tris triangles(const scene::Mesh& mesh) {
-    Tris tris(mesh.triangleCount());
-    scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kFacesPerThreadMin),
-                        [&](unsigned, size_t b, size_t e) {
-                            for (size_t t = b; t < e; ++t)
-                                tris[t] = {mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]};
-                        });
-    return tris;
-}
-
-/// Drops the faces marked in `drop`, keeping the others in order; returns how many went.
-size_t keepUnmarked(Tris& tris, const scene::ScratchVector<char>& drop) {
+/// Keeps the faces f for which keep(f) holds (asked in order, before any face moves), in order;
+/// returns how many went.
+template <class Keep> size_t keepFaces(Faces& tris, const Keep& keep) {
     size_t out = 0;
-    for (size_t f = 0; f < tris.size(); ++f)
-        if (!drop[f]) tris[out++] = tris[f];
+    for (size_t f = 0; f < tris.size(); ++f) {
+        if (!keep(f)) continue;
+        if (out != f) std::ranges::copy(tris[f], tris[out].begin());
+        ++out;
+    }
     const size_t dropped = tris.size() - out;
-    tris.resize(out);
+    tris.truncate(out);
     return dropped;
 }
 
+/// Drops the faces marked in `drop`, keeping the others in order; returns how many went.
+size_t keepUnmarked(Faces& tris, const scene::ScratchVector<char>& drop) {
+    return keepFaces(tris, [&](size_t f) { return !drop[f]; });
+}
+
 /// Every corner v becomes to[v], on every core.
-void renumber(Tris& tris, const scene::ScratchVector<uint32_t>& to) {
-    scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kFacesPerThreadMin),
+void renumber(Faces& tris, const scene::ScratchVector<uint32_t>& to) {
+    const std::span<uint32_t> corners = tris.corners();
+    scene::forEachRange(corners.size(), scene::rangeThreads(tris.size(), kFacesPerThreadMin),
                         [&](unsigned, size_t b, size_t e) {
-                            for (size_t f = b; f < e; ++f)
-                                for (uint32_t& v : tris[f]) v = to[v];
+                            for (size_t c = b; c < e; ++c) corners[c] = to[corners[c]];
                         });
 }
 
@@ -168,20 +188,21 @@ template <class T> void fitCapacity(std::vector<T>& v, size_t spare) {
 
 /// Drops faces with an index out of range or touching a NaN/Inf vertex. Returns the
 /// finite-vertex mask.
-scene::ScratchVector<char> dropNonFinite(const scene::Mesh& mesh, Tris& tris, CleanupReport& r) {
+scene::ScratchVector<char> dropNonFinite(const scene::Mesh& mesh, Faces& tris, CleanupReport& r) {
     scene::ScratchVector<char> ok(mesh.positions.size());
     for (size_t i = 0; i < ok.size(); ++i) ok[i] = scene::finite(mesh.positions[i]);
     r.nonFiniteVertices = static_cast<size_t>(std::count(ok.begin(), ok.end(), 0));
     const size_t n = ok.size();
-    std::erase_if(tris, [&](const Tri& t) {
+    keepFaces(tris, [&](size_t f) {
+        const Tri t = tris.tri(f);
         for (uint32_t v : t)
             if (v >= n) {
                 ++r.degenerateFaces;
-                return true;
+                return false;
             } // not a face at all
         const bool bad = !ok[t[0]] || !ok[t[1]] || !ok[t[2]];
         r.nonFiniteFaces += bad;
-        return bad;
+        return !bad;
     });
     return ok;
 }
@@ -365,13 +386,13 @@ scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, c
 }
 
 /// Removes faces with a repeated index or an area below the merge resolution.
-void dropDegenerate(std::span<const glm::vec3> pos, Tris& tris, double tol, CleanupReport& r) {
+void dropDegenerate(std::span<const glm::vec3> pos, Faces& tris, double tol, CleanupReport& r) {
     const double minCross2 = tol * tol * tol * tol; // |cross| = 2·area ≤ tol²
     scene::ScratchVector<char> bad(tris.size());
     scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kFacesPerThreadMin),
                         [&](unsigned, size_t b, size_t e) {
                             for (size_t f = b; f < e; ++f) {
-                                const Tri& t = tris[f];
+                                const Tri t = tris.tri(f);
                                 bool out = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
                                 if (!out) {
                                     const glm::dvec3 p0(pos[t[0]]), p1(pos[t[1]]), p2(pos[t[2]]);
@@ -388,12 +409,12 @@ void dropDegenerate(std::span<const glm::vec3> pos, Tris& tris, double tol, Clea
 /// Duplicates share their smallest vertex, so faces are bucketed by it (counting sort: cache
 /// friendly, unlike a hash table over all faces) and compared within a bucket only; buckets are
 /// sorted on their own threads by vertex range (each face is in one bucket).
-void dropDuplicateFaces(size_t vertexCount, Tris& tris, CleanupReport& r) {
+void dropDuplicateFaces(size_t vertexCount, Faces& tris, CleanupReport& r) {
     const unsigned threads = scene::rangeThreads(tris.size(), kFacesPerThreadMin);
     scene::UnwrittenVector<Tri> keys(tris.size());
     scene::forEachRange(tris.size(), threads, [&](unsigned, size_t b, size_t e) {
         for (size_t f = b; f < e; ++f) { // three compare-exchanges: std::sort's set-up costs more than its work
-            auto [x, y, z] = tris[f];
+            auto [x, y, z] = tris.tri(f);
             if (y < x) std::swap(x, y);
             if (z < y) std::swap(y, z);
             if (y < x) std::swap(x, y);
@@ -429,11 +450,11 @@ void dropDuplicateFaces(size_t vertexCount, Tris& tris, CleanupReport& r) {
 struct VertexFaces {
     scene::ScratchVector<uint32_t> offset;
     scene::UnwrittenVector<uint32_t> faces;
-    VertexFaces(size_t vertexCount, const Tris& tris) {
+    VertexFaces(size_t vertexCount, const Faces& tris) {
         bucketFaces(
             vertexCount, tris.size(),
             [&](size_t f, const auto& emit) {
-                for (uint32_t v : tris[f]) emit(v);
+                for (uint32_t v : tris.tri(f)) emit(v);
             },
             offset, faces);
     }
@@ -446,7 +467,7 @@ int cornerOf(const Tri& t, uint32_t v) { return t[0] == v ? 0 : (t[1] == v ? 1 :
 
 /// Makes winding consistent across edge-adjacent faces, per connected component, keeping the
 /// majority orientation of each component (so a few flipped faces are the ones turned).
-void fixOrientation(size_t vertexCount, Tris& tris, CleanupReport& r) {
+void fixOrientation(size_t vertexCount, Faces& tris, CleanupReport& r) {
     const VertexFaces vf(vertexCount, tris);
     scene::ScratchVector<char> seen(tris.size(), 0), flip(tris.size(), 0);
     scene::ScratchVector<uint32_t> component, queue;
@@ -459,7 +480,7 @@ void fixOrientation(size_t vertexCount, Tris& tris, CleanupReport& r) {
             const uint32_t f = queue.back();
             queue.pop_back();
             component.push_back(f);
-            const Tri& t = tris[f];
+            const Tri t = tris.tri(f);
             for (int e = 0; e < 3; ++e) {
                 // Directed edge a→b of f as it will be drawn (after its own flip).
                 uint32_t a = t[e], b = t[(e + 1) % 3];
@@ -467,7 +488,7 @@ void fixOrientation(size_t vertexCount, Tris& tris, CleanupReport& r) {
                 const auto [begin, end] = vf.of(a);
                 for (const uint32_t* g = begin; g != end; ++g) {
                     if (*g == f || seen[*g]) continue;
-                    const Tri& u = tris[*g];
+                    const Tri u = tris.tri(*g);
                     const int ca = cornerOf(u, a);
                     if (u[(ca + 1) % 3] == b) {
                         flip[*g] = 1;
@@ -606,8 +627,8 @@ constexpr uint32_t kAheadVertices = 4;
 /// `provisional` + its output's index in `out`, marked (bit 31) so that a later vertex's search
 /// does not take it for its own id. Ranges are independent: each writes its own corners only.
 void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, const FaceNormals& faceN,
-                          const scene::ScratchVector<glm::vec3>& pos, float cosCrease, uint32_t provisional, Tris& tris,
-                          SplitVertices& out) {
+                          const scene::ScratchVector<glm::vec3>& pos, float cosCrease, uint32_t provisional,
+                          Faces& tris, SplitVertices& out) {
     // Crease splits add vertices: room for half as many again, so that growth by doubling rarely
     // comes on top of this stage's temporaries.
     out.positions.reserve((last - first) + (last - first) / 2);
@@ -619,7 +640,7 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
         if (v + kAheadVertices < last)
             for (auto [f, end] = vf.of(v + kAheadVertices); f != end; ++f) {
                 __builtin_prefetch(&faceN[*f]);
-                __builtin_prefetch(&tris[*f]);
+                __builtin_prefetch(tris[*f].data());
             }
         cornerNormals(v, vf, faceN, cosCrease, cornerN, unit);
         const uint32_t* begin = vf.of(v).first;
@@ -640,8 +661,7 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
             }
             // Another range may be writing another corner of this face: corners are read and
             // written as atomics (plain moves on common hardware).
-            Tri& t = tris[begin[i]];
-            for (uint32_t& c : t) {
+            for (uint32_t& c : tris[begin[i]]) {
                 std::atomic_ref<uint32_t> corner(c);
                 if (corner.load(std::memory_order_relaxed) == v) {
                     corner.store((provisional + local) | 0x80000000u, std::memory_order_relaxed);
@@ -656,10 +676,10 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
 constexpr size_t kNormalsPerThreadMin = size_t(1) << 16;
 
 /// Crease-angle normals: corners of one vertex whose averaged normals differ become separate
-/// vertices, so sharp CAD edges stay sharp. Vertex ranges run on their own threads, each into its own
-/// arrays, joined in vertex order once the face normals and the vertex → face table are gone (the
-/// load's memory peak at scale), so the result is the same for any thread count.
-void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Tris& tris, double creaseDeg) {
+/// vertices, so sharp CAD edges stay sharp. The faces become mesh.indices. Vertex ranges run on their own threads, each
+/// into its own arrays, joined in vertex order once the face normals and the vertex → face table are gone (the load's
+/// memory peak at scale), so the result is the same for any thread count.
+void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Faces& tris, double creaseDeg) {
     const float cosCrease = static_cast<float>(std::cos(glm::radians(std::clamp(creaseDeg, 0.0, 180.0))));
     // Provisional indices are corner counts (an upper bound on the outputs before a vertex), marked
     // by bit 31: past 2³¹ corners one range is all there can be.
@@ -674,7 +694,7 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Tri
         scene::forEachRange(tris.size(), scene::rangeThreads(tris.size(), kNormalsPerThreadMin),
                             [&](unsigned, size_t b, size_t e) {
                                 for (size_t f = b; f < e; ++f) {
-                                    const Tri& t = tris[f];
+                                    const Tri t = tris.tri(f);
                                     faceN[f] = glm::cross(pos[t[1]] - pos[t[0]], pos[t[2]] - pos[t[0]]);
                                 }
                             });
@@ -705,17 +725,18 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Tri
         mesh.normals.insert(mesh.normals.end(), o.normals.begin(), o.normals.end());
         o = {};
     }
-    mesh.indices.resize(3 * tris.size());
+    // Every corner now holds a provisional index: renumbered in place, the faces become the indices.
+    const std::span<uint32_t> corners = tris.corners();
     scene::forEachRange(
-        tris.size(), scene::rangeThreads(tris.size(), kNormalsPerThreadMin), [&](unsigned, size_t b, size_t e) {
-            for (size_t f = b; f < e; ++f)
-                for (int k = 0; k < 3; ++k) {
-                    const uint32_t p = tris[f][k] & 0x7fffffffu;
-                    const size_t r = size_t(std::upper_bound(provisional.begin() + 1, provisional.end() - 1, p) -
-                                            (provisional.begin() + 1));
-                    mesh.indices[3 * f + k] = p - provisional[r] + base[r];
-                }
+        corners.size(), scene::rangeThreads(tris.size(), kNormalsPerThreadMin), [&](unsigned, size_t b, size_t e) {
+            for (size_t c = b; c < e; ++c) {
+                const uint32_t p = corners[c] & 0x7fffffffu;
+                const size_t r = size_t(std::upper_bound(provisional.begin() + 1, provisional.end() - 1, p) -
+                                        (provisional.begin() + 1));
+                corners[c] = p - provisional[r] + base[r];
+            }
         });
+    mesh.indices = std::move(tris).release();
 }
 
 } // namespace
@@ -741,8 +762,7 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
     CleanupReport r;
     r.inputVertices = mesh.positions.size();
     r.inputFaces = mesh.triangleCount();
-    Tris tris = triangles(mesh);
-    std::vector<uint32_t>().swap(mesh.indices); // tris hold them now: peak memory is what counts at scale
+    Faces tris(std::move(mesh.indices)); // computeNormals hands them back
     scene::ScratchVector<glm::vec3> pos;
     {
         // Each temporary lives in this block only, so that none is held through computeNormals
@@ -768,8 +788,7 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
 
         // Compact: keep referenced vertices, in their original order.
         scene::ScratchVector<uint32_t> newIndex(mesh.positions.size(), kNone);
-        for (const Tri& t : tris)
-            for (uint32_t v : t) newIndex[v] = 0;
+        for (const uint32_t v : std::as_const(tris).corners()) newIndex[v] = 0;
         size_t kept = 0;
         for (const uint32_t v : newIndex) kept += v != kNone;
         pos.reserve(kept);
@@ -791,12 +810,12 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
     }
     stage(0.4f, "cleaning: normals");
     computeNormals(mesh, pos, tris, options.creaseAngleDeg);
-    Tris().swap(tris);
     scene::ScratchVector<glm::vec3>().swap(pos);
-    // The slack left for crease splits would stay resident for the model's life. Positions keep one
-    // spare vertex (Embree's last load, scene::reserveSpareVertex).
+    // The slack left for crease splits (and by dropped faces) would stay resident for the model's
+    // life. Positions keep one spare vertex (Embree's last load, scene::reserveSpareVertex).
     fitCapacity(mesh.positions, 1);
     fitCapacity(mesh.normals, 0);
+    fitCapacity(mesh.indices, 0);
     mesh.chunks.clear(); // indices changed: chunk again (loadModel does)
     mesh.parts.clear();
     r.outputVertices = mesh.positions.size();
