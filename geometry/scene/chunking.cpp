@@ -1,5 +1,6 @@
 #include "geometry/scene/chunking.h"
 
+#include "geometry/scene/block_select.h"
 #include "geometry/scene/compact_vertices.h"
 #include "geometry/scene/parallel_ranges.h"
 #include "geometry/scene/unwritten_vector.h"
@@ -89,12 +90,11 @@ struct Splitter {
         const glm::vec3 e = centroidBox(items, begin, end).extent();
         const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
         const uint32_t mid = begin + (end - begin) / 2;
-        const auto first = items.begin() + begin, nth = items.begin() + mid, last = items.begin() + end;
-        // One comparator per axis: indexing a glm vector by a variable is a switch in every comparison.
-        if (axis == 0) std::nth_element(first, nth, last, [](const Item& a, const Item& b) { return a.c.x < b.c.x; });
-        else if (axis == 1)
-            std::nth_element(first, nth, last, [](const Item& a, const Item& b) { return a.c.y < b.c.y; });
-        else std::nth_element(first, nth, last, [](const Item& a, const Item& b) { return a.c.z < b.c.z; });
+        Item *const first = items.data() + begin, *const nth = items.data() + mid, *const last = items.data() + end;
+        // One key per axis: indexing a glm vector by a variable is a switch in every comparison.
+        if (axis == 0) blockSelect(first, nth, last, [](const Item& i) { return i.c.x; });
+        else if (axis == 1) blockSelect(first, nth, last, [](const Item& i) { return i.c.y; });
+        else blockSelect(first, nth, last, [](const Item& i) { return i.c.z; });
         if (spawn <= 0 || end - begin < kParallelTriangles) {
             split(items, begin, mid, inChunk, 0);
             split(items, mid, end, inChunk, 0);
