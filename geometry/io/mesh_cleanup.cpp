@@ -3,8 +3,8 @@
 //
 // Index
 //   [SECTION] Cleanup report ............. CleanupReport::operator+=
-//   [SECTION] Small helpers .............. mix, tableSize, triangles, keepUnmarked, renumber, bucketFaces,
-//                                          fitCapacity
+//   [SECTION] Small helpers .............. Faces, mix, tableSize, keepFaces, keepUnmarked, renumber,
+//                                          bucketFaces, fitCapacity
 //   [SECTION] Bad faces and duplicates ... dropNonFinite, MergeGrid, mergeCandidates, mergeDuplicates,
 //                                          dropDegenerate, dropDuplicateFaces
 //   [SECTION] Orientation ................ VertexFaces, cornerOf, fixOrientation
@@ -278,7 +278,7 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
             if (s >= lo && s < hi && seen[s] < 2) ++seen[s];
         }
     });
-    scene::ScratchVector<scene::ScratchVector<uint32_t>> kept(threads);
+    std::vector<scene::ScratchVector<uint32_t>> kept(threads);
     scene::forEachRange(n, threads, [&](unsigned t, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             if (i + kAhead < e) __builtin_prefetch(&seen[slot[i + kAhead] & mask]);
@@ -676,9 +676,10 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
 constexpr size_t kNormalsPerThreadMin = size_t(1) << 16;
 
 /// Crease-angle normals: corners of one vertex whose averaged normals differ become separate
-/// vertices, so sharp CAD edges stay sharp. The faces become mesh.indices. Vertex ranges run on their own threads, each
-/// into its own arrays, joined in vertex order once the face normals and the vertex → face table are gone (the load's
-/// memory peak at scale), so the result is the same for any thread count.
+/// vertices, so sharp CAD edges stay sharp. The faces become mesh.indices. Vertex ranges run on their
+/// own threads, each into its own arrays, joined in vertex order once the face normals and the vertex
+/// → face table are gone (the load's memory peak at scale), so the result is the same for any thread
+/// count.
 void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Faces& tris, double creaseDeg) {
     const float cosCrease = static_cast<float>(std::cos(glm::radians(std::clamp(creaseDeg, 0.0, 180.0))));
     // Provisional indices are corner counts (an upper bound on the outputs before a vertex), marked
@@ -809,8 +810,7 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
         fixOrientation(pos.size(), tris, r);
     }
     stage(0.4f, "cleaning: normals");
-    computeNormals(mesh, pos, tris, options.creaseAngleDeg);
-    scene::ScratchVector<glm::vec3>().swap(pos);
+    computeNormals(mesh, pos, tris, options.creaseAngleDeg); // frees pos
     // The slack left for crease splits (and by dropped faces) would stay resident for the model's
     // life. Positions keep one spare vertex (Embree's last load, scene::reserveSpareVertex).
     fitCapacity(mesh.positions, 1);

@@ -52,9 +52,12 @@ template <class T, class Left> T* blockPartition(T* first, T* last, const Left& 
     return std::partition(l, r, left);
 }
 
-template <class T, class Key> float medianOf3(const T* a, const T* b, const T* c, const Key& key) {
-    const float x = key(*a), y = key(*b), z = key(*c);
+inline float median3(float x, float y, float z) noexcept {
     return std::max(std::min(x, y), std::min(std::max(x, y), z));
+}
+
+template <class T, class Key> float medianOf3(const T* a, const T* b, const T* c, const Key& key) {
+    return median3(key(*a), key(*b), key(*c));
 }
 
 } // namespace detail
@@ -79,7 +82,7 @@ template <class T, class Key> void blockSelect(T* first, T* nth, T* last, const 
             const float a = detail::medianOf3(first, first + s, first + 2 * s, key);
             const float b = detail::medianOf3(mid - s, mid, mid + s, key);
             const float c = detail::medianOf3(last - 1 - 2 * s, last - 1 - s, last - 1, key);
-            return std::max(std::min(a, b), std::min(std::max(a, b), c));
+            return detail::median3(a, b, c);
         }();
         if (bounded && !(lower < p)) {
             T* const cut = detail::blockPartition(first, last, [&](const T& x) { return !(p < key(x)); });
