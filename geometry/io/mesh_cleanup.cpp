@@ -278,21 +278,24 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
             if (s >= lo && s < hi && seen[s] < 2) ++seen[s];
         }
     });
-    std::vector<scene::ScratchVector<uint32_t>> kept(threads);
+    struct alignas(scene::kRangeStateAlign) Kept {
+        scene::ScratchVector<uint32_t> v;
+    };
+    std::vector<Kept> kept(threads);
     scene::forEachRange(n, threads, [&](unsigned t, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             if (i + kAhead < e) __builtin_prefetch(&seen[slot[i + kAhead] & mask]);
             if (slot[i] == kNotFinite) continue;
-            if ((slot[i] & kNear) || seen[slot[i] & mask] >= 2) kept[t].push_back(static_cast<uint32_t>(i));
+            if ((slot[i] & kNear) || seen[slot[i] & mask] >= 2) kept[t].v.push_back(static_cast<uint32_t>(i));
         }
     });
     decltype(slot)().swap(slot);
     scene::ScratchVector<uint8_t>().swap(seen);
     for (size_t t = 1; t < kept.size(); ++t) {
-        kept[0].insert(kept[0].end(), kept[t].begin(), kept[t].end());
-        scene::ScratchVector<uint32_t>().swap(kept[t]);
+        kept[0].v.insert(kept[0].v.end(), kept[t].v.begin(), kept[t].v.end());
+        scene::ScratchVector<uint32_t>().swap(kept[t].v);
     }
-    return std::move(kept[0]);
+    return std::move(kept[0].v);
 }
 
 /// Candidates ahead whose cell's slot the merge prefetches.
@@ -554,7 +557,7 @@ glm::vec3 unitOf(const glm::vec3& n) {
 }
 
 /// One range of vertices' output: positions and normals in the order of their vertices.
-struct SplitVertices {
+struct alignas(scene::kRangeStateAlign) SplitVertices {
     scene::ScratchVector<glm::vec3> positions, normals;
 };
 

@@ -162,8 +162,8 @@ private:
     size_t used_ = 0;
 };
 
-/// Facets [first, last) welded on their own: indices local to the range's welder.
-struct RangeWeld {
+/// Facets [first, last) welded on their own: indices local to the range's welder. One thread's.
+struct alignas(scene::kRangeStateAlign) RangeWeld {
     size_t first = 0, last = 0;
     Welder welder{0};
     size_t welded = 0;
