@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -29,6 +30,13 @@ size_t residentPages(const void* p, size_t bytes) {
 size_t bytesEqualTo(const void* p, size_t bytes, unsigned char value) {
     const auto* b = static_cast<const unsigned char*>(p);
     return size_t(std::count(b, b + bytes, value));
+}
+
+/// A block of `bytes` from scratch::allocate with every byte written (only pages in memory are kept).
+void* writtenBlock(size_t bytes, unsigned char value = 0x5a) {
+    void* p = scratch::allocate(bytes);
+    std::memset(p, value, bytes);
+    return p;
 }
 
 } // namespace
@@ -65,7 +73,7 @@ TEST(ScratchPages, ALargerBlockTakesEveryKeptPageThenFreshOnes) {
 
 TEST(ScratchPages, ASmallerBlockLeavesTheRestKept) {
     const ScratchScope scope;
-    scratch::release(scratch::allocate(4 * kMiB), 4 * kMiB);
+    scratch::release(writtenBlock(4 * kMiB), 4 * kMiB);
     void* b = scratch::allocate(1 * kMiB + 1); // whole pages: 1 MiB and one page
     const size_t page = size_t(sysconf(_SC_PAGESIZE));
     EXPECT_EQ(scratch::keptBytes(), 3 * kMiB - page);
@@ -74,18 +82,18 @@ TEST(ScratchPages, ASmallerBlockLeavesTheRestKept) {
 }
 
 TEST(ScratchPages, PagesAreKeptOnlyWhileAScopeIsOpen) {
-    scratch::release(scratch::allocate(2 * kMiB), 2 * kMiB);
+    scratch::release(writtenBlock(2 * kMiB), 2 * kMiB);
     EXPECT_EQ(scratch::keptBytes(), 0u); // no scope: unmapped at once
     {
         const ScratchScope outer;
         {
             const ScratchScope inner;
-            scratch::release(scratch::allocate(2 * kMiB), 2 * kMiB);
+            scratch::release(writtenBlock(2 * kMiB), 2 * kMiB);
         }
         EXPECT_EQ(scratch::keptBytes(), 2 * kMiB); // the outer scope still holds them
         scratch::releaseKept();
         EXPECT_EQ(scratch::keptBytes(), 0u);
-        scratch::release(scratch::allocate(2 * kMiB), 2 * kMiB);
+        scratch::release(writtenBlock(2 * kMiB), 2 * kMiB);
     }
     EXPECT_EQ(scratch::keptBytes(), 0u); // the last scope gave them back
 }
@@ -103,4 +111,37 @@ TEST(ScratchPages, LargeVectorsUseThemAndSmallOnesTheHeap) {
     geometry::scene::ScratchVector<uint32_t> again(kMiB, 1u); // the kept pages, written anew
     EXPECT_EQ(scratch::keptBytes(), 0u);
     EXPECT_EQ(std::count(again.begin(), again.end(), 1u), std::ptrdiff_t(kMiB));
+}
+
+TEST(ScratchPages, PagesNeverWrittenAreNotKept) {
+    const ScratchScope scope;
+    void* a = scratch::allocate(4 * kMiB);
+    std::memset(a, 0x11, 1 * kMiB); // the rest was never written: not in memory
+    scratch::release(a, 4 * kMiB);
+    EXPECT_EQ(scratch::keptBytes(), 1 * kMiB);
+    void* b = scratch::allocate(1 * kMiB);
+    EXPECT_EQ(bytesEqualTo(b, 1 * kMiB, 0x11), 1 * kMiB);
+    scratch::release(b, 1 * kMiB);
+}
+
+TEST(ScratchPages, AHeapArrayTakesKeptPagesInPlaceOfItsOwn) {
+    const ScratchScope scope;
+    const size_t page = size_t(sysconf(_SC_PAGESIZE));
+    EXPECT_EQ(scratch::backWithKept(nullptr, 4 * kMiB), 0u);
+    scratch::release(writtenBlock(4 * kMiB, 0xab), 4 * kMiB);
+    // 8 MiB of heap, not written yet; one byte past its start leaves its first page partly covered.
+    auto* heap = static_cast<unsigned char*>(std::malloc(8 * kMiB + page));
+    ASSERT_NE(heap, nullptr);
+    unsigned char* const array = heap + (page - reinterpret_cast<uintptr_t>(heap) % page) + 1;
+    EXPECT_EQ(scratch::backWithKept(array, 8 * kMiB - 1), 4 * kMiB); // whole pages from array + page - 1 on
+    EXPECT_EQ(scratch::keptBytes(), 0u);
+    EXPECT_EQ(scratch::backWithKept(array, 8 * kMiB - 1), 0u); // nothing left to take
+    // Moved, not faulted in: in memory before any write, with the kept pages' bytes, from the first
+    // whole page on.
+    unsigned char* const firstWhole = array + page - 1;
+    EXPECT_EQ(residentPages(firstWhole, 4 * kMiB), 4 * kMiB / page);
+    EXPECT_EQ(bytesEqualTo(firstWhole, 4 * kMiB, 0xab), 4 * kMiB);
+    std::memset(array, 0x77, 8 * kMiB - 1); // all of it still the heap's to use and free
+    EXPECT_EQ(bytesEqualTo(array, 8 * kMiB - 1, 0x77), 8 * kMiB - 1);
+    std::free(heap);
 }

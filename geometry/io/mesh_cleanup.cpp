@@ -180,6 +180,7 @@ template <class T> void fitCapacity(std::vector<T>& v, size_t spare) {
     if (v.capacity() <= want + v.size() / 16) return;
     std::vector<T> tight;
     tight.reserve(want);
+    scene::scratch::backWithKept(tight.data(), want * sizeof(T));
     tight.assign(v.begin(), v.end());
     v.swap(tight);
 }
@@ -713,17 +714,18 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Fac
             vf.offset);
     }
     scene::ScratchVector<glm::vec3>().swap(pos);
-    // The mesh's arrays come from the heap: pages kept from the face normals and the vertex → face
-    // table would stay resident beside them, above the load's peak.
-    scene::scratch::releaseKept();
     // Join: exact sizes, one spare vertex of capacity for positions (Embree's last load,
-    // scene::reserveSpareVertex).
+    // scene::reserveSpareVertex). The mesh's arrays come from the heap: they take the pages kept from
+    // the face normals and the vertex → face table, which would otherwise stay resident beside them,
+    // above the load's peak, while these faulted in fresh ones.
     std::vector<uint32_t> base(threads + 1, 0); // the ranges' first real index
     for (unsigned r = 0; r < threads; ++r) base[r + 1] = base[r] + uint32_t(out[r].positions.size());
     mesh.positions.clear();
     mesh.normals.clear();
     mesh.positions.reserve(base.back() + 1);
     mesh.normals.reserve(base.back());
+    scene::scratch::backWithKept(mesh.positions.data(), mesh.positions.capacity() * sizeof(glm::vec3));
+    scene::scratch::backWithKept(mesh.normals.data(), mesh.normals.capacity() * sizeof(glm::vec3));
     for (SplitVertices& o : out) {
         mesh.positions.insert(mesh.positions.end(), o.positions.begin(), o.positions.end());
         mesh.normals.insert(mesh.normals.end(), o.normals.begin(), o.normals.end());

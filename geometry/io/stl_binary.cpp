@@ -253,6 +253,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
     const scene::ScratchVector<Key>& keys = all.keys();
     // One spare vertex of capacity: Embree reads 4 bytes past the last (scene::reserveSpareVertex).
     mesh.positions.reserve(keys.size() + 1);
+    scene::scratch::backWithKept(mesh.positions.data(), mesh.positions.capacity() * sizeof(glm::vec3)); // the welders'
     mesh.positions.resize(keys.size());
     if (!keys.empty()) std::memcpy(mesh.positions.data(), keys.data(), keys.size() * sizeof(Key)); // none: 0 facets
     counts.inputVertices = 3 * n;
