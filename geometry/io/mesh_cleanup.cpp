@@ -333,35 +333,58 @@ scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, c
         const auto [word, bit] = bitOf(h);
         return (word & bit) != 0;
     };
+    // Each candidate's cell, its hash and which neighbours it reaches, worked out on every core: the
+    // loop below, which must run in order, only looks them up (the 4 M piperack STL's merge stage:
+    // 0.108 -> 0.092 s). The same expressions as before, so the same cells.
+    struct Cell {
+        int64_t c[3];
+        uint64_t h;
+    };
+    scene::UnwrittenVector<Cell> cells(candidates.size());
+    scene::UnwrittenVector<uint8_t> reaches(candidates.size()); // bit a: cell −1 on axis a; bit 3 + a: +1
+    scene::forEachRange(candidates.size(), scene::rangeThreads(candidates.size(), kMergePerThreadMin),
+                        [&](unsigned, size_t b, size_t e) {
+                            for (size_t k = b; k < e; ++k) {
+                                const glm::vec3& p = pos[candidates[k]];
+                                Cell& cell = cells[k];
+                                uint8_t bits = 0;
+                                for (int a = 0; a < 3; ++a) {
+                                    cell.c[a] = grid.cell(p, a);
+                                    const double f = grid.exact ? 0.5 : p[a] / grid.size - std::floor(p[a] / grid.size);
+                                    bits |= uint8_t((f < reach ? 1 : 0) << a | (f > 1 - reach ? 1 : 0) << (3 + a));
+                                }
+                                cell.h = MergeGrid::hash(cell.c[0], cell.c[1], cell.c[2]);
+                                reaches[k] = bits;
+                            }
+                        });
     // Slot holding the list head of cell (x, y, z) of hash h, or the empty slot where it would go.
     auto find = [&](uint64_t h, int64_t x, int64_t y, int64_t z) -> size_t {
         for (size_t s = h & (cap - 1);; s = (s + 1) & (cap - 1)) {
             const uint32_t head = heads[s];
             if (head == kNone) return s;
-            const glm::vec3& q = pos[candidates[head]];
-            if (grid.cell(q, 0) == x && grid.cell(q, 1) == y && grid.cell(q, 2) == z) return s;
+            const Cell& q = cells[head];
+            if (q.c[0] == x && q.c[1] == y && q.c[2] == z) return s;
         }
     };
     for (uint32_t k = 0; k < candidates.size(); ++k) {
         // The slot where a candidate a few on goes in (or finds its cell): in the loop itself, as GCC
         // drops a call whose only effect is a prefetch.
-        if (k + kMergeAhead < candidates.size())
-            __builtin_prefetch(&heads[grid.hash(pos[candidates[k + kMergeAhead]]) & (cap - 1)]);
+        if (k + kMergeAhead < candidates.size()) __builtin_prefetch(&heads[cells[k + kMergeAhead].h & (cap - 1)]);
         const uint32_t i = candidates[k];
         const glm::vec3& p = pos[i];
-        const int64_t c[3] = {grid.cell(p, 0), grid.cell(p, 1), grid.cell(p, 2)};
+        const Cell& own = cells[k];
+        const int64_t* const c = own.c;
         int lo[3], hi[3];
         for (int a = 0; a < 3; ++a) {
-            const double f = grid.exact ? 0.5 : p[a] / grid.size - std::floor(p[a] / grid.size);
-            lo[a] = f < reach ? -1 : 0;
-            hi[a] = f > 1 - reach ? 1 : 0;
+            lo[a] = reaches[k] >> a & 1 ? -1 : 0;
+            hi[a] = reaches[k] >> (3 + a) & 1 ? 1 : 0;
         }
         uint32_t found = kNone;
         for (int dx = lo[0]; dx <= hi[0] && found == kNone; ++dx)
             for (int dy = lo[1]; dy <= hi[1] && found == kNone; ++dy)
                 for (int dz = lo[2]; dz <= hi[2] && found == kNone; ++dz) {
                     const int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
-                    const uint64_t h = MergeGrid::hash(x, y, z);
+                    const uint64_t h = (dx | dy | dz) == 0 ? own.h : MergeGrid::hash(x, y, z);
                     if (!maybeOccupied(h)) continue;
                     for (uint32_t q = heads[find(h, x, y, z)]; q != kNone; q = next[q]) {
                         const glm::dvec3 d = glm::dvec3(pos[candidates[q]]) - glm::dvec3(p);
@@ -376,10 +399,9 @@ scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, c
             ++r.mergedVertices;
             continue;
         }
-        const uint64_t h = MergeGrid::hash(c[0], c[1], c[2]);
-        const auto [word, bit] = bitOf(h);
+        const auto [word, bit] = bitOf(own.h);
         word |= bit;
-        const size_t s = find(h, c[0], c[1], c[2]);
+        const size_t s = find(own.h, c[0], c[1], c[2]);
         if (heads[s] == kNone) heads[s] = k;
         else {
             next[k] = next[heads[s]];
