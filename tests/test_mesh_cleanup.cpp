@@ -347,6 +347,43 @@ Mesh orderedGrid(uint32_t w, uint32_t h) {
     return makeMesh(std::move(p), std::move(idx));
 }
 
+TEST(MeshCleanup, BadFacesCountedAlikeOnOneThreadAndOnSeveral) {
+    // Faces touching a non-finite vertex or naming none are judged on every core, each range counting
+    // its own: the counts and the faces kept must be those of one thread, wherever the bad ones lie.
+    Mesh one = orderedGrid(500, 400);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (const uint32_t v : {1000u, 100'000u, 150'300u}) one.positions[v].y = nan;
+    const size_t faces = one.triangleCount();
+    for (const size_t f : {size_t(5), faces / 2 + 1, faces - 2}) one.indices[3 * f + 1] = 0xffffff00u;
+    size_t outOfRange = 0, nonFinite = 0;
+    for (size_t f = 0; f < faces; ++f) {
+        bool out = false, bad = false;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = one.indices[3 * f + k];
+            out = out || v >= one.positions.size();
+            bad = bad || (v < one.positions.size() && std::isnan(one.positions[v].y));
+        }
+        outOfRange += out;
+        nonFinite += bad && !out;
+    }
+    ASSERT_EQ(outOfRange, 3u);
+    ASSERT_GE(nonFinite, 12u); // up to six faces a vertex
+    Mesh several = one;
+    const unsigned cores = rangeThreadCap().load();
+    rangeThreadCap() = 1;
+    const CleanupReport a = cleanMesh(one);
+    rangeThreadCap() = 3;
+    const CleanupReport b = cleanMesh(several);
+    rangeThreadCap() = cores;
+    EXPECT_EQ(a.nonFiniteVertices, 3u);
+    EXPECT_EQ(a.nonFiniteFaces, nonFinite);
+    EXPECT_EQ(b.nonFiniteFaces, nonFinite);
+    EXPECT_EQ(a.degenerateFaces, b.degenerateFaces);
+    EXPECT_GE(b.degenerateFaces, outOfRange);
+    EXPECT_EQ(one.indices, several.indices);
+    expectValid(several);
+}
+
 TEST(MeshCleanup, SameResultOnOneThreadAndOnSeveral) {
     // The linear passes run over vertex and face ranges on as many threads as there are cores; what
     // they write must not depend on it. 400 k faces: enough for every pass to split three ways (a face

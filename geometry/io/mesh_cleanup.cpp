@@ -3,7 +3,7 @@
 //
 // Index
 //   [SECTION] Cleanup report ............. CleanupReport::operator+=
-//   [SECTION] Small helpers .............. Faces, mix, tableSize, keepFaces, keepUnmarked, renumber,
+//   [SECTION] Small helpers .............. Faces, mix, tableSize, keepUnmarked, renumber,
 //                                          bucketFaces, fitCapacity
 //   [SECTION] Bad faces and duplicates ... dropNonFinite, MergeGrid, mergeCandidates, mergeDuplicates,
 //                                          dropDegenerate, dropDuplicateFaces
@@ -99,23 +99,20 @@ size_t tableSize(size_t n) {
 /// Faces per thread below which a pass over the faces stays on one thread.
 constexpr size_t kFacesPerThreadMin = size_t(1) << 17;
 
-/// Keeps the faces f for which keep(f) holds (asked in order, before any face moves), in order;
-/// returns how many went.
-template <class Keep> size_t keepFaces(Faces& tris, const Keep& keep) {
-    size_t out = 0;
-    for (size_t f = 0; f < tris.size(); ++f) {
-        if (!keep(f)) continue;
-        if (out != f) std::ranges::copy(tris[f], tris[out].begin());
+/// Drops the faces marked in `drop`, keeping the others in order; returns how many went. The faces
+/// before the first mark stay where they are: most files have nothing to drop.
+size_t keepUnmarked(Faces& tris, const scene::ScratchVector<char>& drop) {
+    const size_t first = size_t(std::find(drop.begin(), drop.end(), char(1)) - drop.begin());
+    if (first == drop.size()) return 0;
+    size_t out = first;
+    for (size_t f = first + 1; f < tris.size(); ++f) {
+        if (drop[f]) continue;
+        std::ranges::copy(tris[f], tris[out].begin());
         ++out;
     }
     const size_t dropped = tris.size() - out;
     tris.truncate(out);
     return dropped;
-}
-
-/// Drops the faces marked in `drop`, keeping the others in order; returns how many went.
-size_t keepUnmarked(Faces& tris, const scene::ScratchVector<char>& drop) {
-    return keepFaces(tris, [&](size_t f) { return !drop[f]; });
 }
 
 /// Every corner v becomes to[v], on every core.
@@ -188,23 +185,37 @@ template <class T> void fitCapacity(std::vector<T>& v, size_t spare) {
 // ---- [SECTION] Bad faces and duplicates -----------------------------------------------------
 
 /// Drops faces with an index out of range or touching a NaN/Inf vertex. Returns the
-/// finite-vertex mask.
+/// finite-vertex mask. Faces are judged on every core, each range counting its own.
 scene::ScratchVector<char> dropNonFinite(const scene::Mesh& mesh, Faces& tris, CleanupReport& r) {
-    scene::ScratchVector<char> ok(mesh.positions.size());
-    for (size_t i = 0; i < ok.size(); ++i) ok[i] = scene::finite(mesh.positions[i]);
-    r.nonFiniteVertices = static_cast<size_t>(std::count(ok.begin(), ok.end(), 0));
-    const size_t n = ok.size();
-    keepFaces(tris, [&](size_t f) {
-        const Tri t = tris.tri(f);
-        for (uint32_t v : t)
-            if (v >= n) {
-                ++r.degenerateFaces;
-                return false;
-            } // not a face at all
-        const bool bad = !ok[t[0]] || !ok[t[1]] || !ok[t[2]];
-        r.nonFiniteFaces += bad;
-        return !bad;
+    const size_t n = mesh.positions.size();
+    scene::ScratchVector<char> ok(n);
+    scene::forEachRange(n, scene::rangeThreads(n, kFacesPerThreadMin), [&](unsigned, size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) ok[i] = scene::finite(mesh.positions[i]);
     });
+    r.nonFiniteVertices = static_cast<size_t>(std::count(ok.begin(), ok.end(), 0));
+    const unsigned threads = scene::rangeThreads(tris.size(), kFacesPerThreadMin);
+    std::vector<std::pair<size_t, size_t>> counts(threads); // faces out of range, faces touching non-finite
+    scene::ScratchVector<char> drop(tris.size());
+    scene::forEachRange(tris.size(), threads, [&](unsigned t, size_t b, size_t e) {
+        size_t outOfRange = 0, nonFinite = 0;
+        for (size_t f = b; f < e; ++f) {
+            const Tri tri = tris.tri(f);
+            if (tri[0] >= n || tri[1] >= n || tri[2] >= n) { // not a face at all
+                ++outOfRange;
+                drop[f] = 1;
+                continue;
+            }
+            const bool bad = !ok[tri[0]] || !ok[tri[1]] || !ok[tri[2]];
+            nonFinite += bad;
+            drop[f] = bad;
+        }
+        counts[t] = {outOfRange, nonFinite};
+    });
+    for (const auto& [outOfRange, nonFinite] : counts) {
+        r.degenerateFaces += outOfRange;
+        r.nonFiniteFaces += nonFinite;
+    }
+    keepUnmarked(tris, drop);
     return ok;
 }
 
