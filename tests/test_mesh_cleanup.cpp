@@ -297,6 +297,36 @@ Mesh clusteredSoup(size_t triangles, double tol, uint32_t seed) {
 
 } // namespace
 
+TEST(MeshCleanup, BitEqualCornersStayOneVertexThroughAChainOfMerges) {
+    // Along x, in tolerances (cells of the merge are four wide): k at 4.0, i at 3.1 (merges into k), r
+    // at 2.2 (1.8 from k, so a vertex of its own), then j at i's position, −0 for +0 in y. Searching
+    // for j on its own, the merge meets r (its own cell) before k (the next): j and i, one position,
+    // would be two vertices, a crack. Bit-equal corners are one vertex first, so j follows i to k.
+    constexpr float t = 1e-3f;
+    const std::vector<glm::vec3> corners = {
+        {4.0f * t, 0.f, 0.f}, {3.1f * t, 0.f, 0.f}, {2.2f * t, 0.f, 0.f}, {3.1f * t, -0.f, 0.f}};
+    std::vector<glm::vec3> p;
+    std::vector<uint32_t> idx;
+    for (uint32_t v = 0; v < corners.size(); ++v) p.push_back(corners[v]);
+    for (uint32_t v = 0; v < corners.size(); ++v) { // a face of its own for each, far from the others
+        const float y = 10.f + 5.f * float(v);
+        p.emplace_back(0.f, y, 0.f);
+        p.emplace_back(0.f, y, 1.f);
+        idx.insert(idx.end(), {v, uint32_t(p.size() - 2), uint32_t(p.size() - 1)});
+    }
+    Mesh m = makeMesh(p, idx);
+    CleanupOptions o;
+    o.mergeTolerance = t;
+    const CleanupReport r = cleanMesh(m, o);
+    EXPECT_EQ(r.mergedVertices, 2u); // i into k, j with i
+    ASSERT_EQ(m.triangleCount(), 4u);
+    // Faces keep their order (nothing dropped): face f's first corner is corners[f]'s vertex.
+    const auto firstCorner = [&](size_t f) { return m.positions[m.indices[3 * f]]; };
+    EXPECT_EQ(firstCorner(1), firstCorner(0));
+    EXPECT_EQ(firstCorner(3), firstCorner(0));
+    EXPECT_EQ(firstCorner(2), corners[2]);
+}
+
 TEST(MeshCleanup, MergedVerticesAreFartherApartThanTheTolerance) {
     // What the greedy merge promises: every kept vertex is more than `tol` from every other kept
     // vertex (checked against all pairs), and every input corner of a kept face has a kept vertex
