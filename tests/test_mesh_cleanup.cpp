@@ -332,31 +332,38 @@ TEST(MeshCleanup, MergedVerticesAreFartherApartThanTheTolerance) {
     // vertex (checked against all pairs), and every input corner of a kept face has a kept vertex
     // within `tol`.
     constexpr double tol = 1e-3;
-    Mesh m = clusteredSoup(1500, tol, 7);
-    const std::vector<glm::vec3> input = m.positions;
-    CleanupOptions o;
-    o.mergeTolerance = tol;
-    o.creaseAngleDeg = 180; // one output vertex per merged vertex
-    const CleanupReport r = cleanMesh(m, o);
-    ASSERT_GT(r.mergedVertices, 1000u);
-    ASSERT_GT(r.outputVertices, 300u);
-    std::vector<glm::vec3> kept = m.positions;
-    std::sort(kept.begin(), kept.end(),
-              [](const glm::vec3& a, const glm::vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
-    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
-    size_t tooClose = 0;
-    for (size_t i = 0; i < kept.size(); ++i)
-        for (size_t j = i + 1; j < kept.size() && double(kept[j].x) - double(kept[i].x) <= tol; ++j)
-            tooClose += glm::distance(glm::dvec3(kept[i]), glm::dvec3(kept[j])) <= tol;
-    EXPECT_EQ(tooClose, 0u);
-    size_t farFromAll = 0;
-    for (const glm::vec3& p : input) {
-        bool near = false;
-        for (const glm::vec3& q : kept) near = near || glm::distance(glm::dvec3(p), glm::dvec3(q)) <= tol;
-        farFromAll += !near;
+    for (const bool copies : {false, true}) {
+        SCOPED_TRACE(copies ? "with bit-equal copies" : "soup");
+        Mesh m = clusteredSoup(1500, tol, 7);
+        if (copies) // every fourth face's first corner a copy of an earlier face's, as indexed files repeat them
+            for (size_t f = 4; f < m.triangleCount(); f += 4)
+                m.positions[m.indices[3 * f]] = m.positions[m.indices[3 * f - 2]];
+        const std::vector<glm::vec3> input = m.positions;
+        CleanupOptions o;
+        o.mergeTolerance = tol;
+        o.creaseAngleDeg = 180; // one output vertex per merged vertex
+        const CleanupReport r = cleanMesh(m, o);
+        ASSERT_GT(r.mergedVertices, 1000u);
+        ASSERT_GT(r.outputVertices, 300u);
+        std::vector<glm::vec3> kept = m.positions;
+        std::sort(kept.begin(), kept.end(), [](const glm::vec3& a, const glm::vec3& b) {
+            return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+        });
+        kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+        size_t tooClose = 0;
+        for (size_t i = 0; i < kept.size(); ++i)
+            for (size_t j = i + 1; j < kept.size() && double(kept[j].x) - double(kept[i].x) <= tol; ++j)
+                tooClose += glm::distance(glm::dvec3(kept[i]), glm::dvec3(kept[j])) <= tol;
+        EXPECT_EQ(tooClose, 0u);
+        size_t farFromAll = 0;
+        for (const glm::vec3& p : input) {
+            bool near = false;
+            for (const glm::vec3& q : kept) near = near || glm::distance(glm::dvec3(p), glm::dvec3(q)) <= tol;
+            farFromAll += !near;
+        }
+        // A corner's kept vertex goes when all its faces were dropped (degenerate or duplicate).
+        EXPECT_LE(farFromAll, 3 * (r.degenerateFaces + r.duplicateFaces));
     }
-    // A corner's kept vertex goes when all its faces were dropped (degenerate or duplicate).
-    EXPECT_LE(farFromAll, 3 * (r.degenerateFaces + r.duplicateFaces));
 }
 
 /// A wavy height field of w × h quads, its vertices numbered row by row and its faces in the same order

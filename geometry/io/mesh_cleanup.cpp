@@ -248,10 +248,12 @@ constexpr size_t kMergePerThreadMin = size_t(1) << 16;
 /// other within `tol`, and none has it: it can be left out of the merge without changing any
 /// result, and the set kept holds every neighbour of its members. Occupancy is counted in a byte
 /// table by hash (a collision only keeps a vertex in), in parallel: the final counts, and so the set,
-/// do not depend on the order of the increments.
+/// do not depend on the order of the increments. With `among` (ascending vertex ids, all finite), only
+/// those are looked at and counted: the others must be alone in their cells.
 scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, const scene::ScratchVector<char>& ok,
-                                               double tol) {
-    const size_t n = pos.size();
+                                               double tol, std::span<const uint32_t> among = {}) {
+    const size_t n = among.empty() ? pos.size() : among.size();
+    const auto vertex = [&](size_t i) { return among.empty() ? uint32_t(i) : among[i]; };
     const bool exact = !(tol > 0);
     const double inv = exact ? 1.0 : 1.0 / (64 * tol), reach = 1.0 / 64;
     // The coarse cell's hash; `near` tells whether p lies within `tol` of one of its faces.
@@ -277,7 +279,8 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
     scene::forEachRange(n, threads, [&](unsigned, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             bool near = false;
-            slot[i] = ok[i] ? uint32_t(coarse(pos[i], near) & mask) | (near ? kNear : 0u) : kNotFinite;
+            const uint32_t v = vertex(i);
+            slot[i] = ok[v] ? uint32_t(coarse(pos[v], near) & mask) | (near ? kNear : 0u) : kNotFinite;
         }
     });
     const size_t slice = (size_t(mask) + 1 + threads - 1) / threads;
@@ -298,7 +301,7 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
         for (size_t i = b; i < e; ++i) {
             if (i + kAhead < e) __builtin_prefetch(&seen[slot[i + kAhead] & mask]);
             if (slot[i] == kNotFinite) continue;
-            if ((slot[i] & kNear) || seen[slot[i] & mask] >= 2) kept[t].v.push_back(static_cast<uint32_t>(i));
+            if ((slot[i] & kNear) || seen[slot[i] & mask] >= 2) kept[t].v.push_back(vertex(i));
         }
     });
     decltype(slot)().swap(slot);
@@ -365,6 +368,9 @@ scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, c
     // file's candidates (the 4 M piperack as GLB: 1.8 M of 2.8 M vertices), all on one thread below.
     // Each later copy takes its first copy's result.
     const std::vector<std::pair<uint32_t, uint32_t>> copies = dropBitEqualCopies(pos, candidates);
+    // A position that was a candidate for its copies alone is now alone in its cell: counted again
+    // among the distinct candidates (every other vertex is alone in its cell), most go.
+    if (!copies.empty()) candidates = mergeCandidates(pos, ok, tol, candidates);
     // Cells four tolerances wide: most points are far enough from every cell face that only
     // their own cell needs looking at.
     const MergeGrid grid{!(tol > 0), tol > 0 ? 4 * tol : 1.0};
