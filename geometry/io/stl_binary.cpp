@@ -1,13 +1,10 @@
 #include "geometry/io/stl_binary.h"
 
+#include "geometry/io/mapped_file.h"
+
 #include "geometry/scene/parallel_ranges.h"
 #include "geometry/scene/scratch_pages.h"
 #include "geometry/scene/unwritten_vector.h"
-
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -27,36 +24,6 @@ constexpr size_t kFacetsPerThreadMin = 1 << 16;    // below this a thread costs 
 constexpr std::ptrdiff_t kReleaseBytes = 16 << 20; // read pages dropped every 16 MiB
 constexpr size_t kAheadFacets = 16;                // facets whose slots are prefetched ahead (8 to 32 alike)
 constexpr size_t kAheadLookups = 16;               // keys whose slots a range's lookups prefetch
-
-/// The file's bytes, mapped read-only for the reader's lifetime.
-class MappedFile {
-public:
-    MappedFile(const std::string& path, uint64_t size) : size_(size) {
-        const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-        if (fd < 0) throw std::runtime_error(path + ": cannot open file for reading: " + std::strerror(errno));
-        void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
-        const int mapError = errno;
-        ::close(fd);
-        if (p == MAP_FAILED) throw std::runtime_error(path + ": cannot map the file: " + std::strerror(mapError));
-        data_ = static_cast<const char*>(p);
-        ::madvise(p, size, MADV_SEQUENTIAL);
-    }
-    MappedFile(const MappedFile&) = delete;
-    MappedFile& operator=(const MappedFile&) = delete;
-    ~MappedFile() { ::munmap(const_cast<char*>(data_), size_); }
-    [[nodiscard]] const char* data() const noexcept { return data_; }
-    /// Drops the whole pages within [from, to) from memory: read once, they would otherwise count
-    /// as resident until the file is unmapped (the size of the file on top of the load's peak).
-    static void release(const char* from, const char* to) noexcept {
-        const auto page = uintptr_t(::sysconf(_SC_PAGESIZE));
-        const uintptr_t lo = (uintptr_t(from) + page - 1) / page * page, hi = uintptr_t(to) / page * page;
-        if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
-    }
-
-private:
-    const char* data_ = nullptr;
-    uint64_t size_ = 0;
-};
 
 /// A corner's coordinates as bits, −0 as +0 (equal as numbers, so the same vertex).
 struct Key {
@@ -198,6 +165,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
                           const Progress& progress) {
     const size_t n = (size - kHeaderBytes) / kFacetBytes;
     const MappedFile file(path, size);
+    const char* const bytes = reinterpret_cast<const char*>(file.data());
     if (threads == 0) threads = scene::rangeThreads(n, kFacetsPerThreadMin); // automatic: the loader's thread rule
     threads = unsigned(std::clamp<size_t>(threads, 1, std::max<size_t>(n, 1)));
     // Threads for a later pass over m items: the same rule, never more than the weld used.
@@ -215,8 +183,8 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
     {
         std::vector<std::jthread> workers;
         for (unsigned i = 1; i < threads; ++i)
-            workers.emplace_back([&, i] { weldRange(file.data(), ranges[i], mesh.indices); });
-        weldRange(file.data(), ranges[0], mesh.indices, progress); // this thread: progress may be reported
+            workers.emplace_back([&, i] { weldRange(bytes, ranges[i], mesh.indices); });
+        weldRange(bytes, ranges[0], mesh.indices, progress); // this thread: progress may be reported
     }
     // The ranges in order, each range's corners welded against what came before: the result is
     // what one thread reading the file front to back would give.

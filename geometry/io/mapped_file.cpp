@@ -1,0 +1,38 @@
+#include "geometry/io/mapped_file.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace geometry::io {
+
+MappedFile::MappedFile(const std::string& path, uint64_t size, bool writable) : size_(size_t(size)) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw std::runtime_error(path + ": cannot open file for reading: " + std::strerror(errno));
+    if (size_ == 0) {
+        ::close(fd);
+        return;
+    }
+    void* p = ::mmap(nullptr, size_, PROT_READ | (writable ? PROT_WRITE : 0), MAP_PRIVATE, fd, 0);
+    const int mapError = errno;
+    ::close(fd);
+    if (p == MAP_FAILED) throw std::runtime_error(path + ": cannot map the file: " + std::strerror(mapError));
+    data_ = static_cast<unsigned char*>(p);
+    ::madvise(p, size_, MADV_SEQUENTIAL);
+}
+
+MappedFile::~MappedFile() {
+    if (data_ != nullptr) ::munmap(data_, size_);
+}
+
+void MappedFile::release(const void* from, const void* to) noexcept {
+    const auto page = uintptr_t(::sysconf(_SC_PAGESIZE));
+    const uintptr_t lo = (uintptr_t(from) + page - 1) / page * page, hi = uintptr_t(to) / page * page;
+    if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
+}
+
+} // namespace geometry::io
