@@ -17,8 +17,10 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <string>
@@ -196,6 +198,52 @@ TEST_F(GltfTest, GlbWithBinChunk) {
     EXPECT_EQ(model.format, "glb");
     ASSERT_EQ(model.meshes.size(), 1u);
     EXPECT_EQ(model.meshes[0].triangleCount(), 1u);
+}
+
+TEST_F(GltfTest, GlbBinChunkReadInPlaceGivesWhatTinygltfsCopyGives) {
+    // The loader reads a GLB's BIN chunk where it lies in the file, telling tinygltf that buffer 0
+    // holds 4 bytes, through a JSON rewritten in place of the file's own (compact: it fits; pretty:
+    // it fits with room to spare). Where the rewrite would not fit (numbers written shorter than
+    // the rewrite writes them), tinygltf copies the chunk as before. All three load alike, and the
+    // file itself is never written.
+    Bin bin;
+    bin.add(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0.5f, 2, 0, 0});
+    bin.add(std::vector<uint16_t>{0, 1, 2, 1, 3, 2, 1, 4, 3});
+    json doc = triangleDoc(bin.bytes, "");
+    doc["bufferViews"] = json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 60}},
+                                      {{"buffer", 0}, {"byteOffset", 60}, {"byteLength", 18}}});
+    doc["accessors"][0]["count"] = 5;
+    doc["accessors"][1]["count"] = 9;
+    std::string longer = doc.dump();
+    longer.insert(longer.size() - 1, ",\"extras\":[1E5,2E5,3E5,4E5,5E5,6E5,7E5,8E5]"); // 100000.0 when rewritten
+    std::vector<geometry::scene::Mesh> meshes;
+    for (const std::string& text : {doc.dump(), doc.dump(4), longer}) {
+        const Bytes glb = makeGlb(text, bin.bytes);
+        const std::string path = writeBytes("in_place" + std::to_string(meshes.size()) + ".glb", glb);
+        const LoadedModel model = geometry::io::loadGltf(path);
+        ASSERT_EQ(model.meshes.size(), 1u);
+        meshes.push_back(model.meshes[0]);
+        std::ifstream in(path, std::ios::binary);
+        EXPECT_EQ(Bytes(std::istreambuf_iterator<char>(in), {}), glb) << "the file was written";
+    }
+    EXPECT_EQ(meshes[0].triangleCount(), 3u);
+    geometry::scene::Aabb box;
+    for (const glm::vec3& p : meshes[0].positions) box.add(p);
+    EXPECT_TRUE(near(box.lo, {0, 0, 0}));
+    EXPECT_TRUE(near(box.hi, {2, 1, 0.5f}));
+    for (size_t i = 1; i < meshes.size(); ++i) {
+        EXPECT_EQ(meshes[i].positions, meshes[0].positions) << i;
+        EXPECT_EQ(meshes[i].normals, meshes[0].normals) << i;
+        EXPECT_EQ(meshes[i].indices, meshes[0].indices) << i;
+    }
+}
+
+TEST_F(GltfTest, GlbBufferLongerThanItsBinChunkRefused) {
+    const Bytes bin = triangleBin().bytes; // 42 bytes, padded to 44 in the chunk
+    json doc = triangleDoc(bin, "");
+    doc["buffers"][0]["byteLength"] = 48;
+    const std::string message = expectFailure(writeBytes("long_buffer.glb", makeGlb(doc.dump(), bin)));
+    EXPECT_NE(message.find("byteLength"), std::string::npos) << message;
 }
 
 TEST_F(GltfTest, PrimitivesReadTheVerticesTheyUseDenselyOrSparsely) {

@@ -317,11 +317,16 @@ Accessors::Span Accessors::viewBytes(int viewIndex) {
     if (facts_.fallbackBuffers.contains(size_t(view.buffer)))
         throw GltfError(name + " reads buffer " + std::to_string(view.buffer) + ", an " + kMeshopt +
                         " fallback that only compressed views may use");
-    const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
+    const std::span<const unsigned char> data = bufferData(size_t(view.buffer));
     if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
         throw GltfError(name + " (offset " + str(view.byteOffset) + ", length " + str(view.byteLength) +
                         ") exceeds buffer " + std::to_string(view.buffer) + " (" + str(data.size()) + " bytes)");
     return {data.data() + view.byteOffset, view.byteLength, view.byteStride};
+}
+
+std::span<const unsigned char> Accessors::bufferData(size_t b) const {
+    if (b == 0 && facts_.lentBin) return *facts_.lentBin;
+    return model_.buffers[b].data;
 }
 
 const std::vector<unsigned char>& Accessors::decode(size_t viewIndex, const MeshoptView& compressed) {
@@ -330,7 +335,7 @@ const std::vector<unsigned char>& Accessors::decode(size_t viewIndex, const Mesh
     // Rechecked against the bytes tinygltf loaded: readMeshoptViews saw only declared lengths.
     if (compressed.buffer >= model_.buffers.size())
         throw GltfError(name + " references missing buffer " + str(compressed.buffer));
-    const std::vector<unsigned char>& source = model_.buffers[compressed.buffer].data;
+    const std::span<const unsigned char> source = bufferData(compressed.buffer);
     if (compressed.byteOffset > source.size() || compressed.byteLength > source.size() - compressed.byteOffset)
         throw GltfError(name + ": compressed data (offset " + str(compressed.byteOffset) + ", length " +
                         str(compressed.byteLength) + ") exceeds buffer " + str(compressed.buffer) + " (" +

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -70,6 +71,9 @@ struct JsonFacts {
     MeshoptViews meshopt;
     std::set<size_t> fallbackBuffers; // replaceFallbackBuffers
     std::set<size_t> lentViews;       // lendIndexViews
+    // Buffer 0's bytes in the mapped GLB, where tinygltf holds only a placeholder (gltf_loader's
+    // lendBinChunk): they must outlive the Accessors.
+    std::optional<std::span<const unsigned char>> lentBin;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -119,6 +123,8 @@ private:
         size_t stride; // the bufferView's byteStride; 0: tightly packed
     };
     Span viewBytes(int viewIndex);
+    /// Buffer b's bytes: tinygltf's, or the lent BIN chunk's.
+    std::span<const unsigned char> bufferData(size_t b) const;
     const std::vector<unsigned char>& decode(size_t viewIndex, const MeshoptView& compressed);
     void addSparse(AccessorView& v, const tinygltf::Accessor& acc, const std::string& name);
 

@@ -5,8 +5,9 @@
 //
 // Index
 //   [SECTION] Errors .................... oneLine, firstLine
-//   [SECTION] Files ..................... readRegularFile, fsReadWholeFile, looksLikeJson, nestingWithinLimit,
-//                                         checkDracoPrimitive, precheck, withJson, parse
+//   [SECTION] Files ..................... regularFileSize, readRegularFile, fsReadWholeFile, looksLikeJson,
+//                                         nestingWithinLimit, readU32, checkDracoPrimitive, lendBinChunk,
+//                                         precheck, withJson, parse
 //   [SECTION] Node hierarchy ............ localMatrix, NodeWalker, rootNodes, collectInstances
 //   [SECTION] Primitives ................ toTriangleList, baseColor, readNormals, decodePrimitive
 //   [SECTION] Cleaning and instancing ... decodeCost, checkDecodeBudget, cleanUsedMeshes, emitInstances
@@ -14,6 +15,7 @@
 #include "geometry/io/gltf_loader.h"
 
 #include "geometry/io/gltf_accessor.h"
+#include "geometry/io/mapped_file.h"
 #include "geometry/scene/chunking.h"
 
 #include <tiny_gltf.h>
@@ -38,12 +40,14 @@
 #include <new>
 #include <optional>
 #include <set>
+#include <span>
 #include <stdexcept>
 
 namespace geometry::io {
 namespace {
 
 namespace fs = std::filesystem;
+using Bytes = std::span<const unsigned char>;
 using gltf::Accessors;
 using gltf::AccessorView;
 using gltf::componentName;
@@ -107,26 +111,34 @@ std::string firstLine(std::string_view text) {
 // ---------------------------------------------------------------------------------------------
 // [SECTION] Files
 
-/// Reads a regular file whole. Devices, FIFOs and directories are refused, so a buffer URI
-/// naming /dev/zero or a pipe cannot hang the loader or grow without bound.
-bool readRegularFile(const std::string& path, std::vector<unsigned char>& out, std::string& problem) {
+/// The size of a regular file of at most 4 GiB, or nullopt with `problem` set. Devices, FIFOs and
+/// directories are refused, so a buffer URI naming /dev/zero or a pipe cannot hang the loader or
+/// grow without bound.
+std::optional<uint64_t> regularFileSize(const std::string& path, std::string& problem) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
         problem = fs::exists(path, ec) ? "not a regular file" : "file not found";
-        return false;
+        return std::nullopt;
     }
     const uintmax_t size = fs::file_size(path, ec);
     if (ec) {
         problem = "cannot determine the file size";
-        return false;
+        return std::nullopt;
     }
     if (size > kMaxFileBytes) {
         problem = "file larger than 4 GiB";
-        return false;
+        return std::nullopt;
     }
+    return uint64_t(size);
+}
+
+/// Reads a regular file whole (regularFileSize's limits).
+bool readRegularFile(const std::string& path, std::vector<unsigned char>& out, std::string& problem) {
+    const std::optional<uint64_t> size = regularFileSize(path, problem);
+    if (!size) return false;
     std::ifstream in(path, std::ios::binary);
-    out.resize(static_cast<size_t>(size));
-    if (!in || !in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(size))) {
+    out.resize(static_cast<size_t>(*size));
+    if (!in || !in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(*size))) {
         problem = "cannot read the file";
         return false;
     }
@@ -161,7 +173,7 @@ bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, i
 
 /// JSON glTF starts with '{' after an optional BOM and whitespace; anything else is not glTF,
 /// and saying so beats relaying a JSON parser's column number.
-bool looksLikeJson(const std::vector<unsigned char>& bytes) {
+bool looksLikeJson(Bytes bytes) {
     size_t i = 0;
     if (bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF) i = 3;
     while (i < bytes.size() && std::isspace(bytes[i])) ++i;
@@ -191,9 +203,17 @@ bool nestingWithinLimit(std::string_view json) {
     return true;
 }
 
+/// The little-endian 32-bit number at `at` (0 past the end): GLB header fields.
+uint32_t readU32(Bytes bytes, uint64_t at) {
+    uint32_t v = 0;
+    if (at + 4 <= bytes.size())
+        for (int i = 3; i >= 0; --i) v = v << 8 | bytes[size_t(at) + size_t(i)];
+    return v;
+}
+
 /// The JSON text: the whole file, or a GLB's first chunk (clamped to the file; tinygltf rejects
 /// inconsistent GLB headers itself).
-std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary) {
+std::string_view jsonText(Bytes bytes, bool binary) {
     const auto* chars = reinterpret_cast<const char*>(bytes.data());
     if (!binary) return {chars, bytes.size()};
     if (bytes.size() < 20) return {};
@@ -216,7 +236,7 @@ bool supportedRequiredExtension(const std::string& name) {
 
 /// The file as the pre-check sees it, with the buffers it has read so far.
 struct Source {
-    const std::vector<unsigned char>& bytes;
+    Bytes bytes;
     bool binary;
     std::string baseDir;
     std::map<size_t, std::vector<unsigned char>> buffers;
@@ -390,16 +410,36 @@ void checkDracoPrimitive(Source& source, const nlohmann::json& doc, const nlohma
 /// What the pre-check learnt that reading the model needs, and the JSON tinygltf must parse
 /// instead of the file's own (empty: the file's).
 struct Prechecked {
-    std::string json;
+    nlohmann::json doc;                 // as tinygltf must see it, where `rewrite`
+    bool rewrite = false;               // tinygltf must parse `doc`, not the file's own JSON
+    std::optional<uint64_t> lentLength; // buffer 0 (the BIN chunk) is lent: its declared byteLength
     gltf::JsonFacts facts;
 };
+
+/// Buffers no larger than this are left to tinygltf to copy.
+constexpr uint64_t kLentBinPlaceholder = 4;
+
+/// A GLB's BIN chunk is read in place, from the mapped file (Accessors), instead of copied whole by
+/// tinygltf (82 MB for the 4 M piperack): tinygltf is told buffer 0 holds its first 4 bytes. Not
+/// with Draco, which tinygltf decodes from its copy, nor for a buffer 0 that is not the BIN chunk or
+/// whose byteLength tinygltf would refuse. Returns the byteLength declared.
+std::optional<uint64_t> lendBinChunk(nlohmann::json& doc, const std::set<size_t>& fallbackBuffers) {
+    if (!member(doc, "buffers").is_array() || doc["buffers"].empty() || fallbackBuffers.contains(0)) return {};
+    nlohmann::json& buffer = doc["buffers"][0];
+    if (!buffer.is_object() || buffer.contains("uri")) return {};
+    const nlohmann::json& length = member(buffer, "byteLength");
+    if (!length.is_number_unsigned() || length.get<uint64_t>() <= kLentBinPlaceholder) return {};
+    const uint64_t declared = length.get<uint64_t>();
+    buffer["byteLength"] = kLentBinPlaceholder;
+    return declared;
+}
 
 /// What tinygltf would report badly or not at all: glTF 1.0 (a different schema: tinygltf
 /// complains about some missing field), required extensions we cannot honour (tinygltf ignores
 /// extensionsRequired), Draco references (see checkDracoPrimitive) and EXT_meshopt_compression
 /// (tinygltf ignores it, and refuses its fallback buffers: rewritten). Malformed JSON is left to
 /// tinygltf, whose message names the position.
-Prechecked precheck(const std::vector<unsigned char>& bytes, bool binary, const std::string& baseDir) {
+Prechecked precheck(Bytes bytes, bool binary, const std::string& baseDir) {
     nlohmann::json doc = nlohmann::json::parse(jsonText(bytes, binary), nullptr, false);
     if (!doc.is_object()) return {};
     const nlohmann::json& version = member(member(doc, "asset"), "version");
@@ -417,17 +457,20 @@ Prechecked precheck(const std::vector<unsigned char>& bytes, bool binary, const 
     // Draco is checked against the document tinygltf will see.
     const nlohmann::json& meshes = member(doc, "meshes");
     Source source{bytes, binary, baseDir, {}, {}};
+    bool draco = false;
     for (size_t m = 0; meshes.is_array() && m < meshes.size(); ++m) {
         const nlohmann::json& prims = member(meshes[m], "primitives");
         if (!prims.is_array()) continue;
         for (size_t p = 0; p < prims.size(); ++p) {
             const nlohmann::json& ext = member(member(prims[p], "extensions"), "KHR_draco_mesh_compression");
-            if (ext.is_object())
-                checkDracoPrimitive(source, doc, prims[p], ext, "mesh " + str(m) + " primitive " + str(p));
+            if (!ext.is_object()) continue;
+            checkDracoPrimitive(source, doc, prims[p], ext, "mesh " + str(m) + " primitive " + str(p));
+            draco = true;
         }
     }
-    if (!facts.fallbackBuffers.empty() || !facts.lentViews.empty())
-        out.json = doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    if (binary && !draco) out.lentLength = lendBinChunk(doc, facts.fallbackBuffers);
+    out.rewrite = !facts.fallbackBuffers.empty() || !facts.lentViews.empty() || out.lentLength;
+    out.doc = std::move(doc);
     return out;
 }
 
@@ -438,7 +481,7 @@ void putU32(std::vector<unsigned char>& out, size_t v) {
 /// The file with its JSON replaced: the whole text, or a GLB's JSON chunk, the rest of the
 /// container kept byte for byte and its lengths updated. Empty where the GLB header disagrees
 /// with the file: tinygltf refuses such a file whatever its JSON.
-std::vector<unsigned char> withJson(const std::vector<unsigned char>& bytes, bool binary, std::string json) {
+std::vector<unsigned char> withJson(Bytes bytes, bool binary, std::string json) {
     if (!binary) return {json.begin(), json.end()};
     uint32_t length = 0, jsonLength = 0;
     if (bytes.size() < 20) return {};
@@ -466,7 +509,8 @@ struct Parsed {
     gltf::JsonFacts facts;
 };
 
-Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
+Parsed parse(const std::string& path, MappedFile& file) {
+    const Bytes bytes = file.bytes();
     Parsed parsed;
     // The GLB magic decides, not the extension: misnamed files are common.
     parsed.binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -479,15 +523,34 @@ Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
         throw GltfError("JSON nested deeper than " + std::to_string(kMaxJsonNesting) + " levels");
     const std::string baseDir = fs::path(path).parent_path().string();
     Prechecked prechecked = precheck(bytes, parsed.binary, baseDir);
+    const auto dump = [&] { return prechecked.doc.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace); };
+    std::string json = prechecked.rewrite ? dump() : std::string();
+    // A GLB's new JSON goes in place of its own where it fits, padded with spaces (the file is mapped
+    // privately: only this process's copy changes), so that the BIN chunk stays where it is.
+    const std::string_view own = jsonText(bytes, parsed.binary);
+    const bool inPlace = parsed.binary && !json.empty() && own.size() >= json.size() &&
+                         own.data() == reinterpret_cast<const char*>(bytes.data()) + 20 &&
+                         uint64_t(own.size()) == readU32(bytes, 12);
+    if (!inPlace && prechecked.lentLength) { // the BIN chunk is copied after all: tinygltf reads it
+        prechecked.doc["buffers"][0]["byteLength"] = *prechecked.lentLength;
+        prechecked.lentLength.reset();
+        prechecked.rewrite = !prechecked.facts.fallbackBuffers.empty() || !prechecked.facts.lentViews.empty();
+        json = prechecked.rewrite ? dump() : std::string();
+    }
     std::vector<unsigned char> rewritten;
-    if (!prechecked.json.empty()) rewritten = withJson(bytes, parsed.binary, std::move(prechecked.json));
+    if (inPlace) {
+        json.resize(own.size(), ' ');
+        std::memcpy(file.writableData() + 20, json.data(), json.size());
+    } else if (!json.empty()) {
+        rewritten = withJson(bytes, parsed.binary, std::move(json));
+    }
     // What tinygltf sees must be what the facts describe: nothing replaced or lent without a rewrite.
-    if (rewritten.empty()) {
+    if (!inPlace && rewritten.empty()) {
         prechecked.facts.fallbackBuffers.clear();
         prechecked.facts.lentViews.clear();
     }
     parsed.facts = std::move(prechecked.facts);
-    const std::vector<unsigned char>& input = rewritten.empty() ? bytes : rewritten;
+    const Bytes input = rewritten.empty() ? bytes : Bytes(rewritten);
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(ignoreImage, nullptr);
@@ -511,6 +574,16 @@ Parsed parse(const std::string& path, const std::vector<unsigned char>& bytes) {
     }
     for (const std::string* text : {&err, &warn})
         if (const std::string line = oneLine(*text); !line.empty()) parsed.notes.push_back(line);
+    if (prechecked.lentLength) {
+        // tinygltf found the BIN chunk sound (its header, length and place in the file) and copied 4
+        // bytes: the rest of its check of buffer 0, then the bytes it would have copied.
+        const uint64_t binStart = 20 + uint64_t(readU32(bytes, 12)) + 8, binSize = readU32(bytes, binStart - 8);
+        if (*prechecked.lentLength > binSize)
+            throw GltfError("tinygltf could not load the file: Invalid `byteLength'. Must be equal or less than "
+                            "binary size: `byteLength' = " +
+                            str(*prechecked.lentLength) + ", binary size = " + str(binSize));
+        parsed.facts.lentBin = Bytes(bytes.data() + binStart, size_t(*prechecked.lentLength));
+    }
     return parsed;
 }
 
@@ -910,15 +983,14 @@ void emitInstances(const std::vector<Instance>& instances, CleanedMeshes& cleane
 
 LoadedModel loadChecked(const std::string& path, const CleanupOptions& options, const Progress& progress) {
     notify(progress, 0.f, "reading");
-    Parsed parsed;
-    size_t fileBytes = 0;
-    {
-        std::vector<unsigned char> bytes;
-        std::string problem;
-        if (!readRegularFile(path, bytes, problem)) throw GltfError(problem);
-        fileBytes = bytes.size();
-        parsed = parse(path, bytes);
-    } // the raw file is no longer needed: tinygltf copied the buffers
+    std::string problem;
+    const std::optional<uint64_t> fileSize = regularFileSize(path, problem);
+    if (!fileSize) throw GltfError(problem);
+    const size_t fileBytes = size_t(*fileSize);
+    // Mapped, not read: accessors read the BIN chunk in place (lendBinChunk). Writable, privately, for
+    // a JSON rewritten in place (parse).
+    MappedFile file(path, *fileSize, true);
+    Parsed parsed = parse(path, file);
     const tinygltf::Model& model = parsed.model;
     std::vector<std::string> notes = std::move(parsed.notes);
     const std::vector<Instance> instances = collectInstances(model, notes);
