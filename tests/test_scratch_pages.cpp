@@ -145,3 +145,28 @@ TEST(ScratchPages, AHeapArrayTakesKeptPagesInPlaceOfItsOwn) {
     EXPECT_EQ(bytesEqualTo(array, 8 * kMiB - 1, 0x77), 8 * kMiB - 1);
     std::free(heap);
 }
+
+TEST(ScratchPages, PrepareBacksWithKeptPagesThenFaultsInTheRest) {
+    const size_t page = size_t(sysconf(_SC_PAGESIZE));
+#if defined(MADV_POPULATE_WRITE)
+    void* probe = mmap(nullptr, page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    ASSERT_NE(probe, MAP_FAILED);
+    const bool populates = madvise(probe, page, MADV_POPULATE_WRITE) == 0;
+    munmap(probe, page);
+    if (!populates) GTEST_SKIP() << "the kernel cannot populate pages (MADV_POPULATE_WRITE: Linux 5.14)";
+#else
+    GTEST_SKIP() << "MADV_POPULATE_WRITE unknown here";
+#endif
+    const ScratchScope scope;
+    scratch::release(writtenBlock(2 * kMiB, 0xab), 2 * kMiB);
+    // 8 MiB of heap, not written yet, page-aligned: 2 MiB of kept pages, then 6 MiB faulted in on every core.
+    auto* heap = static_cast<unsigned char*>(std::malloc(8 * kMiB + page));
+    ASSERT_NE(heap, nullptr);
+    unsigned char* const array = heap + (page - reinterpret_cast<uintptr_t>(heap) % page);
+    scratch::prepare(array, 8 * kMiB);
+    EXPECT_EQ(scratch::keptBytes(), 0u);
+    EXPECT_EQ(residentPages(array, 8 * kMiB), 8 * kMiB / page); // all in memory before any write
+    EXPECT_EQ(bytesEqualTo(array, 2 * kMiB, 0xab), 2 * kMiB);
+    EXPECT_EQ(bytesEqualTo(array + 2 * kMiB, 6 * kMiB, 0), 6 * kMiB); // fresh pages read as zero
+    std::free(heap);
+}

@@ -1,5 +1,7 @@
 #include "geometry/scene/scratch_pages.h"
 
+#include "geometry/scene/parallel_ranges.h"
+
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -20,6 +22,9 @@ std::mutex mutex;
 std::vector<Block> kept; // freed blocks' pages, taken from the back (the most recently used)
 size_t keptTotal = 0;
 int scopes = 0;
+
+/// Pages per thread below which faultIn stays on one thread (1 MiB).
+constexpr size_t kFaultInPagesPerThreadMin = 256;
 
 size_t pageSize() noexcept {
     static const size_t page = size_t(std::max(4096l, sysconf(_SC_PAGESIZE)));
@@ -72,6 +77,35 @@ size_t backWithKept(void* p, size_t bytes) noexcept {
     if (p == nullptr || to < from) return 0;
     const uintptr_t lo = from / page * page + (from % page != 0 ? page : 0), hi = to / page * page;
     return hi > lo ? moveKeptTo(reinterpret_cast<std::byte*>(lo), hi - lo) : 0;
+}
+
+void faultIn(void* p, size_t bytes) noexcept {
+#if defined(MADV_POPULATE_WRITE)
+    const uintptr_t page = pageSize(), from = uintptr_t(p), to = from + bytes;
+    if (p == nullptr || to < from) return;
+    const uintptr_t lo = (from + page - 1) / page * page, hi = to / page * page;
+    if (hi <= lo) return;
+    const size_t pages = (hi - lo) / page;
+    try {
+        forEachRange(pages, rangeThreads(pages, kFaultInPagesPerThreadMin), [&](unsigned, size_t b, size_t e) {
+            ::madvise(reinterpret_cast<void*>(lo + b * page), (e - b) * page, MADV_POPULATE_WRITE);
+        });
+    } catch (...) { // no thread to be had: the writes fault the pages in instead
+    }
+#else
+    (void)p;
+    (void)bytes;
+#endif
+}
+
+void prepare(void* p, size_t bytes) noexcept {
+    // Kept pages fill the array's front; populating pages already there only walks their entries.
+    const size_t backed = backWithKept(p, bytes);
+    const uintptr_t page = pageSize(), from = uintptr_t(p);
+    const uintptr_t lo = (from + page - 1) / page * page;
+    const uintptr_t done = lo + backed;
+    if (backed == 0) faultIn(p, bytes);
+    else if (done < from + bytes) faultIn(reinterpret_cast<void*>(done), from + bytes - done);
 }
 
 void release(void* block, size_t bytes) noexcept {
