@@ -4,10 +4,12 @@
 //   [SECTION] Names and JSON ............ str, componentName, typeName, member, indexInto
 //   [SECTION] EXT_meshopt_compression ... readMeshoptViews, replaceFallbackBuffers
 //   [SECTION] Sparse indices ............ lendIndexViews, readUnsigned, AccessorView::substitute
-//   [SECTION] Accessors ................. Accessors (view, viewBytes, decode, addSparse)
+//   [SECTION] Accessors ................. Accessors (view, viewBytes, releaseLentPages, bufferData, decode,
+//                                         addSparse)
 //   [SECTION] Reading ................... isPositionType, isNormalType, readVec3, readIndices
 #include "geometry/io/gltf_accessor.h"
 
+#include "geometry/io/mapped_file.h"
 #include "geometry/io/mesh_limits.h"
 
 #include <meshoptimizer.h>
@@ -322,6 +324,10 @@ Accessors::Span Accessors::viewBytes(int viewIndex) {
         throw GltfError(name + " (offset " + str(view.byteOffset) + ", length " + str(view.byteLength) +
                         ") exceeds buffer " + std::to_string(view.buffer) + " (" + str(data.size()) + " bytes)");
     return {data.data() + view.byteOffset, view.byteLength, view.byteStride};
+}
+
+void Accessors::releaseLentPages() const noexcept {
+    if (facts_.lentBin) MappedFile::release(facts_.lentBin->data(), facts_.lentBin->data() + facts_.lentBin->size());
 }
 
 std::span<const unsigned char> Accessors::bufferData(size_t b) const {

@@ -113,6 +113,10 @@ public:
 
     /// Throws GltfError naming the accessor.
     const AccessorView& view(int index);
+    /// Drops the lent BIN chunk's pages from this process's memory (the file's pages stay cached):
+    /// once a primitive is decoded, cleaning it must not carry the file on top of its peak. Read
+    /// again, they come back from the page cache.
+    void releaseLentPages() const noexcept;
     /// Bytes decoded from EXT_meshopt_compression so far.
     [[nodiscard]] size_t decodedBytes() const { return decodedBytes_; }
 

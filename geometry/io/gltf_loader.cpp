@@ -929,6 +929,7 @@ CleanedMeshes cleanUsedMeshes(const tinygltf::Model& model, Accessors& accessors
         for (size_t p = 0; p < model.meshes[size_t(meshIndex)].primitives.size(); ++p) {
             notify(progress, float(done++) / float(total), "cleaning");
             std::optional<scene::Mesh> mesh = decodePrimitive(model, accessors, size_t(meshIndex), p, notes);
+            accessors.releaseLentPages(); // the file's pages are not part of cleanup's peak
             if (!mesh) continue;
             hadTriangles = hadTriangles || !mesh->indices.empty();
             CleanupReport report = cleanMesh(*mesh, options);
