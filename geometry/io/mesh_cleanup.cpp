@@ -317,10 +317,11 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
 constexpr uint32_t kMergeAhead = 8;
 
 /// Removes from `candidates` (vertex ids, ascending) each whose position is bit-equal to an earlier
-/// one's (−0 as +0); returns them as (copy, first copy) pairs, in order. A table of candidate indices,
-/// compared through their positions.
-std::vector<std::pair<uint32_t, uint32_t>> dropBitEqualCopies(std::span<const glm::vec3> pos,
-                                                              scene::ScratchVector<uint32_t>& candidates) {
+/// one's (−0 as +0), pointing its `rep` at that first copy (no list: a mesh may hold as many copies
+/// as vertices); returns how many went. A table of candidate indices, compared through their
+/// positions.
+size_t dropBitEqualCopies(std::span<const glm::vec3> pos, scene::ScratchVector<uint32_t>& candidates,
+                          scene::ScratchVector<uint32_t>& rep) {
     const auto bits = [&](uint32_t v) {
         std::array<uint32_t, 3> b;
         for (int a = 0; a < 3; ++a) {
@@ -334,7 +335,6 @@ std::vector<std::pair<uint32_t, uint32_t>> dropBitEqualCopies(std::span<const gl
     };
     const size_t cap = tableSize(candidates.size());
     scene::ScratchVector<uint32_t> slots(cap, kNone); // vertex ids
-    std::vector<std::pair<uint32_t, uint32_t>> copies;
     size_t kept = 0;
     for (size_t k = 0; k < candidates.size(); ++k) {
         if (k + kMergeAhead < candidates.size())
@@ -347,9 +347,10 @@ std::vector<std::pair<uint32_t, uint32_t>> dropBitEqualCopies(std::span<const gl
             slots[s] = v;
             candidates[kept++] = v;
         } else {
-            copies.emplace_back(v, slots[s]);
+            rep[v] = slots[s];
         }
     }
+    const size_t copies = candidates.size() - kept;
     candidates.resize(kept);
     return copies;
 }
@@ -367,10 +368,10 @@ scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, c
     // read: a glTF, OBJ or PLY file repeats a position for each normal it has there, most of such a
     // file's candidates (the 4 M piperack as GLB: 1.8 M of 2.8 M vertices), all on one thread below.
     // Each later copy takes its first copy's result.
-    const std::vector<std::pair<uint32_t, uint32_t>> copies = dropBitEqualCopies(pos, candidates);
+    const size_t copies = dropBitEqualCopies(pos, candidates, rep);
     // A position that was a candidate for its copies alone is now alone in its cell: counted again
     // among the distinct candidates (every other vertex is alone in its cell), most go.
-    if (!copies.empty()) candidates = mergeCandidates(pos, ok, tol, candidates);
+    if (copies > 0) candidates = mergeCandidates(pos, ok, tol, candidates);
     // Cells four tolerances wide: most points are far enough from every cell face that only
     // their own cell needs looking at.
     const MergeGrid grid{!(tol > 0), tol > 0 ? 4 * tol : 1.0};
@@ -468,8 +469,15 @@ scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, c
             next[heads[s]] = k;
         }
     }
-    for (const auto& [copy, first] : copies) rep[copy] = rep[first];
-    r.mergedVertices += copies.size();
+    if (copies > 0) {
+        // A copy's rep is its first copy, whose own rep is now final (a vertex that maps to itself):
+        // one step on. Only copies are written, and no copy is read.
+        scene::forEachRange(n, scene::rangeThreads(n, kMergePerThreadMin), [&](unsigned, size_t b, size_t e) {
+            for (size_t v = b; v < e; ++v)
+                if (const uint32_t to = rep[rep[v]]; to != rep[v]) rep[v] = to;
+        });
+        r.mergedVertices += copies;
+    }
     return rep;
 }
 
