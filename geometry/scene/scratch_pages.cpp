@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <mutex>
+#include <utility>
 
 namespace geometry::scene {
 
@@ -35,6 +36,15 @@ size_t pageSize() noexcept {
 size_t wholePages(size_t bytes) noexcept {
     const size_t page = pageSize();
     return bytes > SIZE_MAX - page ? 0 : (bytes + page - 1) / page * page;
+}
+
+/// The whole pages inside [p, p + bytes), as [lo, hi) (empty: lo == hi). The rest of a partly
+/// covered page may be someone else's (a heap chunk's header).
+std::pair<uintptr_t, uintptr_t> pagesWithin(const void* p, size_t bytes) noexcept {
+    const uintptr_t page = pageSize(), from = uintptr_t(p), to = from + bytes;
+    if (p == nullptr || to < from) return {0, 0};
+    const uintptr_t lo = (from + page - 1) / page * page, hi = to / page * page;
+    return hi > lo ? std::pair(lo, hi) : std::pair(lo, lo);
 }
 
 /// Moves kept pages over the front of the page-aligned [to, to + size), the most recently kept first;
@@ -72,20 +82,16 @@ void* allocate(size_t bytes) {
 }
 
 size_t backWithKept(void* p, size_t bytes) noexcept {
-    // Whole pages only: the rest of a partly covered page may be the heap's (a chunk's header).
-    const uintptr_t page = pageSize(), from = uintptr_t(p), to = from + bytes;
-    if (p == nullptr || to < from) return 0;
-    const uintptr_t lo = from / page * page + (from % page != 0 ? page : 0), hi = to / page * page;
+    const auto [lo, hi] = pagesWithin(p, bytes);
     return hi > lo ? moveKeptTo(reinterpret_cast<std::byte*>(lo), hi - lo) : 0;
 }
 
 void faultIn(void* p, size_t bytes) noexcept {
 #if defined(MADV_POPULATE_WRITE)
-    const uintptr_t page = pageSize(), from = uintptr_t(p), to = from + bytes;
-    if (p == nullptr || to < from) return;
-    const uintptr_t lo = (from + page - 1) / page * page, hi = to / page * page;
-    if (hi <= lo) return;
-    const size_t pages = (hi - lo) / page;
+    const std::pair<uintptr_t, uintptr_t> whole = pagesWithin(p, bytes);
+    const uintptr_t lo = whole.first, page = pageSize();
+    const size_t pages = (whole.second - lo) / page;
+    if (pages == 0) return;
     try {
         forEachRange(pages, rangeThreads(pages, kFaultInPagesPerThreadMin), [&](unsigned, size_t b, size_t e) {
             ::madvise(reinterpret_cast<void*>(lo + b * page), (e - b) * page, MADV_POPULATE_WRITE);
@@ -99,13 +105,10 @@ void faultIn(void* p, size_t bytes) noexcept {
 }
 
 void prepare(void* p, size_t bytes) noexcept {
-    // Kept pages fill the array's front; populating pages already there only walks their entries.
-    const size_t backed = backWithKept(p, bytes);
-    const uintptr_t page = pageSize(), from = uintptr_t(p);
-    const uintptr_t lo = (from + page - 1) / page * page;
-    const uintptr_t done = lo + backed;
-    if (backed == 0) faultIn(p, bytes);
-    else if (done < from + bytes) faultIn(reinterpret_cast<void*>(done), from + bytes - done);
+    // Kept pages fill the whole pages' front; the rest is faulted in.
+    const auto [lo, hi] = pagesWithin(p, bytes);
+    const uintptr_t done = lo + backWithKept(p, bytes);
+    if (hi > done) faultIn(reinterpret_cast<void*>(done), hi - done);
 }
 
 void release(void* block, size_t bytes) noexcept {
