@@ -3,6 +3,7 @@
 #include "geometry/scene/block_select.h"
 #include "geometry/scene/compact_vertices.h"
 #include "geometry/scene/parallel_ranges.h"
+#include "geometry/scene/scratch_pages.h"
 #include "geometry/scene/unwritten_vector.h"
 
 #include <algorithm>
@@ -183,6 +184,11 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
             for (int k = 0; k < 3; ++k) mesh.indices[3 * i + k] = before[3 * size_t(items[i].id) + k];
     });
     Items().swap(items);
+    decltype(before)().swap(before);
+    // A load's last scratch temporaries are gone: the pages they kept would stay resident under the
+    // lists and boxes made below, which come from the heap (50 M piperack STL: 13 MiB above the
+    // load's peak until 2026-12-07).
+    scratch::releaseKept();
 
     // Parts come in order of begin and tile the chunks, which come in the same order. A chunk of one
     // part keeps none (the part would be the chunk again).
