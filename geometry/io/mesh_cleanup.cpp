@@ -322,27 +322,20 @@ constexpr uint32_t kMergeAhead = 8;
 /// positions.
 size_t dropBitEqualCopies(std::span<const glm::vec3> pos, scene::ScratchVector<uint32_t>& candidates,
                           scene::ScratchVector<uint32_t>& rep) {
-    const auto bits = [&](uint32_t v) {
-        std::array<uint32_t, 3> b;
-        for (int a = 0; a < 3; ++a) {
-            const float x = pos[v][a] == 0.f ? 0.f : pos[v][a];
-            std::memcpy(&b[a], &x, sizeof x);
-        }
-        return b;
-    };
-    const auto hashOf = [](const std::array<uint32_t, 3>& b) {
-        return mix(uint64_t(b[0]) * 0x9E3779B97F4A7C15ull ^ uint64_t(b[1]) * 0xC2B2AE3D27D4EB4Full ^ b[2]);
+    const MergeGrid bits{true, 1.0}; // a zero tolerance's grid: cells are the coordinates' bits
+    const auto same = [&](uint32_t a, uint32_t b) {
+        return bits.cell(pos[a], 0) == bits.cell(pos[b], 0) && bits.cell(pos[a], 1) == bits.cell(pos[b], 1) &&
+               bits.cell(pos[a], 2) == bits.cell(pos[b], 2);
     };
     const size_t cap = tableSize(candidates.size());
     scene::ScratchVector<uint32_t> slots(cap, kNone); // vertex ids
     size_t kept = 0;
     for (size_t k = 0; k < candidates.size(); ++k) {
         if (k + kMergeAhead < candidates.size())
-            __builtin_prefetch(&slots[hashOf(bits(candidates[k + kMergeAhead])) & (cap - 1)]);
+            __builtin_prefetch(&slots[bits.hash(pos[candidates[k + kMergeAhead]]) & (cap - 1)]);
         const uint32_t v = candidates[k];
-        const std::array<uint32_t, 3> b = bits(v);
-        size_t s = hashOf(b) & (cap - 1);
-        while (slots[s] != kNone && bits(slots[s]) != b) s = (s + 1) & (cap - 1);
+        size_t s = bits.hash(pos[v]) & (cap - 1);
+        while (slots[s] != kNone && !same(slots[s], v)) s = (s + 1) & (cap - 1);
         if (slots[s] == kNone) {
             slots[s] = v;
             candidates[kept++] = v;
