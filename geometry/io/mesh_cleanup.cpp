@@ -177,7 +177,7 @@ template <class T> void fitCapacity(std::vector<T>& v, size_t spare) {
     if (v.capacity() <= want + v.size() / 16) return;
     std::vector<T> tight;
     tight.reserve(want);
-    scene::scratch::prepare(tight.data(), want * sizeof(T));
+    scene::scratch::prepareCapacity(tight);
     tight.assign(v.begin(), v.end());
     v.swap(tight);
 }
@@ -809,8 +809,8 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Fac
     mesh.normals.clear();
     mesh.positions.reserve(base.back() + 1);
     mesh.normals.reserve(base.back());
-    scene::scratch::prepare(mesh.positions.data(), mesh.positions.capacity() * sizeof(glm::vec3));
-    scene::scratch::prepare(mesh.normals.data(), mesh.normals.capacity() * sizeof(glm::vec3));
+    scene::scratch::prepareCapacity(mesh.positions);
+    scene::scratch::prepareCapacity(mesh.normals);
     for (SplitVertices& o : out) {
         mesh.positions.insert(mesh.positions.end(), o.positions.begin(), o.positions.end());
         mesh.normals.insert(mesh.normals.end(), o.normals.begin(), o.normals.end());

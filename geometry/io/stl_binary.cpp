@@ -175,7 +175,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
 
     scene::Mesh mesh;
     mesh.indices.reserve(3 * n);
-    scene::scratch::prepare(mesh.indices.data(), 3 * n * sizeof(uint32_t));
+    scene::scratch::prepareCapacity(mesh.indices);
     mesh.indices.resize(3 * n);
     std::vector<RangeWeld> ranges(threads);
     for (unsigned i = 0; i < threads; ++i) {
@@ -223,7 +223,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
     const scene::ScratchVector<Key>& keys = all.keys();
     // One spare vertex of capacity: Embree reads 4 bytes past the last (scene::reserveSpareVertex).
     mesh.positions.reserve(keys.size() + 1);
-    scene::scratch::prepare(mesh.positions.data(), mesh.positions.capacity() * sizeof(glm::vec3)); // the welders' pages
+    scene::scratch::prepareCapacity(mesh.positions); // the welders' pages
     mesh.positions.resize(keys.size());
     if (!keys.empty()) std::memcpy(mesh.positions.data(), keys.data(), keys.size() * sizeof(Key)); // none: 0 facets
     counts.inputVertices = 3 * n;

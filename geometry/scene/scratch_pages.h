@@ -53,6 +53,10 @@ void faultIn(void* p, size_t bytes) noexcept;
 /// backWithKept, then faultIn for what kept pages did not cover: a load's own array of `bytes`,
 /// about to be written in full.
 void prepare(void* p, size_t bytes) noexcept;
+/// prepare for the whole reserved capacity of `v` (reserve first; nothing written yet).
+template <class T, class A> void prepareCapacity(std::vector<T, A>& v) noexcept {
+    prepare(v.data(), v.capacity() * sizeof(T));
+}
 /// Gives every kept page back to the system: before a load makes arrays of its own that are not
 /// scratch and not backed (they would add to the kept pages, not take them).
 void releaseKept() noexcept;
