@@ -426,14 +426,20 @@ protected:
         const long before = linesMentioning("app.out", "dashboard.png");
         if (button) click("screenshot");
         else xdo({"key", "F12"});
-        waitForMap("the screenshot (" + name + ")", [&](const WidgetMap& m) {
-            return m.status.rfind("saved ", 0) == 0 && linesMentioning("app.out", "dashboard.png") > before;
-        });
         // Each screenshot goes to a new numbered folder (shots/001, 002, …): the last path printed names it.
-        const std::string out = readText(tmp_ / "app.out");
-        const size_t end = out.rfind("dashboard.png"), start = out.rfind('\n', end);
-        const size_t from = start == std::string::npos ? 0 : start + 1;
-        const fs::path folder = out.substr(from, end - from); // "…/shots/002/"
+        const auto lastFolder = [&] {
+            const std::string out = readText(tmp_ / "app.out");
+            const size_t end = out.rfind("dashboard.png"), start = out.rfind('\n', end);
+            const size_t from = start == std::string::npos ? 0 : start + 1;
+            return end == std::string::npos ? std::string() : out.substr(from, end - from); // "…/shots/002/"
+        };
+        // The map is written once a frame: it must show this save's status, not the one before it (a
+        // second screenshot's wait once passed on the first's "saved …/001/" still in the map).
+        waitForMap("the screenshot (" + name + ")", [&](const WidgetMap& m) {
+            return linesMentioning("app.out", "dashboard.png") > before && m.status.rfind("saved ", 0) == 0 &&
+                   m.status.find(lastFolder()) != std::string::npos;
+        });
+        const fs::path folder = lastFolder();
         Shots s;
         s.dir = tmp_ / name;
         fs::create_directories(s.dir);
