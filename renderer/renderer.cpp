@@ -715,25 +715,36 @@ void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const 
 
 // ---- [SECTION] Reading back -----------------------------------------------------------------
 
+namespace {
+
+/// GL's rows run bottom-up; the analysis reads top row first. Swapped in place: a second image-sized
+/// array would come on top of the truth's peak at plant scale.
+template <class T> void flipRows(std::vector<T>& image, int w, int h) {
+    for (int y = 0; y < h / 2; ++y)
+        std::swap_ranges(image.begin() + std::ptrdiff_t(size_t(y) * w),
+                         image.begin() + std::ptrdiff_t(size_t(y + 1) * w),
+                         image.begin() + std::ptrdiff_t(size_t(h - 1 - y) * w));
+}
+
+} // namespace
+
 std::vector<float> Renderer::readShadowMask() const {
     const int w = eyeBuffers().width(), h = eyeBuffers().height();
-    std::vector<float> raw(size_t(w) * h), out(raw.size());
+    std::vector<float> out(size_t(w) * h);
     glBindTexture(GL_TEXTURE_2D, eyeBuffers().texture(EyeBuffers::Mask));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, raw.data());
-    for (int y = 0; y < h; ++y)
-        std::memcpy(&out[size_t(y) * w], &raw[size_t(h - 1 - y) * w], size_t(w) * sizeof(float));
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, out.data());
+    flipRows(out, w, h);
     return out;
 }
 
 std::vector<glm::vec4> Renderer::readFloat4(EyeBuffers::Attachment a) const {
     const int w = eyeBuffers().width(), h = eyeBuffers().height();
-    std::vector<glm::vec4> raw(size_t(w) * h), out(raw.size());
+    std::vector<glm::vec4> out(size_t(w) * h);
     glBindTexture(GL_TEXTURE_2D, eyeBuffers().texture(a));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, raw.data());
-    for (int y = 0; y < h; ++y)
-        std::memcpy(&out[size_t(y) * w], &raw[size_t(h - 1 - y) * w], size_t(w) * sizeof(glm::vec4));
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, out.data());
+    flipRows(out, w, h);
     return out;
 }
 
@@ -752,14 +763,11 @@ std::vector<float> Renderer::readShadowMap(int split, int resolution) const {
         resolution > stats_.shadowResolution)
         return {};
     const size_t side = size_t(resolution);
-    std::vector<float> bottomUp(side * side);
+    std::vector<float> out(side * side);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureSubImage(sampledDepth_, 0, 0, 0, split, resolution, resolution, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
-                         GLsizei(bottomUp.size() * sizeof(float)), bottomUp.data());
-    std::vector<float> out(bottomUp.size());
-    for (size_t row = 0; row < side; ++row)
-        std::copy_n(bottomUp.begin() + std::ptrdiff_t((side - 1 - row) * side), side,
-                    out.begin() + std::ptrdiff_t(row * side));
+                         GLsizei(out.size() * sizeof(float)), out.data());
+    flipRows(out, resolution, resolution);
     return out;
 }
 

@@ -747,8 +747,10 @@ std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, i
         return glm::vec3(glm::dvec3(p) / p.w);
     };
     const size_t N = size_t(samplesPerAxis), W = size_t(width) * N, H = size_t(height) * N;
-    // Pixel rows per band: ~1M samples in memory at a time, whatever the image size.
-    const size_t bandRows = std::max<size_t>(1, (size_t(1) << 20) / (W * N));
+    // Pixel rows per band: ~256 k samples (about 6 MiB of points, normals and verdicts) in memory at a
+    // time, whatever the image size. The truth runs beside the model's BVH: at plant scale its peak
+    // is the process's (docs/performance.md "Scale").
+    const size_t bandRows = std::max<size_t>(1, (size_t(1) << 18) / (W * N));
     std::vector<float> lit(size_t(width) * size_t(height), 0.f), hit(lit.size(), 0.f);
     std::vector<glm::vec3> points, normals;
     for (size_t y0 = 0; y0 < size_t(height); y0 += bandRows) {
@@ -766,9 +768,9 @@ std::vector<float> GroundTruth::coverage(const glm::mat4& viewProj, int width, i
                 return PrimaryRay{nearP, farP - nearP, 0.f, 1.f};
             },
             points, normals);
-        // Samples on a surface facing away from the light are dark without a shadow ray; samples the
-        // light does not reach are left out as misses are.
-        std::vector<glm::vec3> facing = normals;
+        // Samples on a surface facing away from the light are dark without a shadow ray (their normal
+        // becomes 0, in place); samples the light does not reach are left out as misses are.
+        std::vector<glm::vec3>& facing = normals;
         for (size_t k = 0; k < facing.size(); ++k) {
             if (!light.reaches(points[k])) points[k] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
             if (!(glm::dot(facing[k], light.toLight(points[k])) > 0.f)) facing[k] = glm::vec3(0.f);

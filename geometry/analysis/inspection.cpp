@@ -56,17 +56,24 @@ Inspection makeInspection(FrameReadback frame, const shadow::ShadowPlan& plan, c
     in.shadow = std::move(frame.shadow);
     in.aux = std::move(frame.aux);
     const size_t n = in.aux.size();
+    // Each read-back array goes once split: at plant scale this runs beside the truth's BVH, at the
+    // process's peak (docs/performance.md "Scale"), and each is 16 bytes a pixel.
     in.m.resize(n);
     in.positions.resize(n);
-    in.normals.resize(n);
-    in.receiver.resize(n);
     for (size_t i = 0; i < n; ++i) {
         if (i % kPixelsPerStopCheck == 0) throwIfStopped(stop);
         in.positions[i] = glm::vec3(frame.positions[i]);
         in.m[i] = frame.positions[i].w;
+    }
+    std::vector<glm::vec4>().swap(frame.positions);
+    in.normals.resize(n);
+    in.receiver.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        if (i % kPixelsPerStopCheck == 0) throwIfStopped(stop);
         in.normals[i] = glm::vec3(frame.normals[i]);
         in.receiver[i] = in.aux[i].z >= 0.f && frame.normals[i].w > 0.f;
     }
+    std::vector<glm::vec4>().swap(frame.normals);
     if (plan.light.positional()) {
         // Where the light does not reach (outside a spot's cone, beyond the range) it has no shadow
         // to judge: the scene's light decides, not the settings.

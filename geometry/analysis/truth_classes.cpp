@@ -103,15 +103,14 @@ public:
     explicit Classifier(const TruthClassInput& in)
         : in_(in), n_(in.s.size()), w_(in.width), h_(int(n_ / size_t(w_))),
           edgeC_(in.edgeCoverage.empty() ? in.coverage : in.edgeCoverage) {
-        // Per pixel, the mean rendered s (for the displacement search: a pixel's rendered state).
+        // Per pixel, the mean rendered s (for the displacement search: a pixel's rendered state). The
+        // verdicts themselves are worked out again where a pixel is tallied: kept, at 24 bytes a pixel,
+        // they came on top of the truth's peak at plant scale.
         meanS_.assign(n_, std::numeric_limits<float>::quiet_NaN());
-        verdicts_.resize(n_);
         for (int y = 0; y < h_; ++y)
             for (int x = 0; x < w_; ++x) {
                 const size_t i = index(x, y);
-                if (!counted(i)) continue;
-                verdicts_[i] = verdict(x, y);
-                meanS_[i] = float(verdicts_[i].s);
+                if (counted(i)) meanS_[i] = float(verdict(x, y).s);
             }
     }
 
@@ -241,7 +240,7 @@ private:
     /// Adds a decidable pixel to `t`: near an edge or interior, umbra, contact; returns its class.
     TruthClass tallyDecidable(Tally& t, int x, int y) const {
         const size_t i = index(x, y);
-        const PixelVerdict& v = verdicts_[i];
+        const PixelVerdict v = verdict(x, y);
         const double cov = in_.coverage[i];
         ++t.penumbra;
         t.absSum += std::abs(v.s - cov);
@@ -289,7 +288,6 @@ private:
     int w_, h_;
     std::span<const float> edgeC_;
     std::vector<float> meanS_;
-    std::vector<PixelVerdict> verdicts_;
 };
 
 std::vector<TruthClasses> classify(const TruthClassInput& in, std::span<const int> group, int groups,
