@@ -121,6 +121,21 @@ TEST_F(StlBinaryTest, AnyThreadCountGivesTheSameMesh) {
     }
 }
 
+// Large enough that the last range's lookups and numbering run in two parts (each part's new
+// vertices numbered after the parts before it).
+TEST_F(StlBinaryTest, TwoThreadsGiveOnesMeshWhenTheLastRangeIsSplitInParts) {
+    const std::vector<Triangle> tris = shuffledGrid(400, 3);
+    const std::string path = write("big.stl", binaryStl(tris));
+    CleanupReport one, two;
+    const geometry::scene::Mesh a = geometry::io::detail::readBinaryStl(path, 84 + 50 * tris.size(), one, 1);
+    const geometry::scene::Mesh b = geometry::io::detail::readBinaryStl(path, 84 + 50 * tris.size(), two, 2);
+    ASSERT_EQ(a.positions.size(), 401u * 401u);
+    EXPECT_EQ(b.indices, a.indices);
+    ASSERT_EQ(b.positions.size(), a.positions.size());
+    EXPECT_EQ(0, std::memcmp(b.positions.data(), a.positions.data(), a.positions.size() * sizeof(glm::vec3)));
+    EXPECT_EQ(two.mergedVertices, one.mergedVertices);
+}
+
 TEST_F(StlBinaryTest, LoadsAsItsAsciiTwinDoes) {
     const std::vector<Triangle> tris = shuffledGrid(40, 9);
     const geometry::io::LoadedModel bin = geometry::io::loadModel(write("b.stl", binaryStl(tris)));

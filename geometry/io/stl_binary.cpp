@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -96,8 +97,6 @@ public:
             if (id == kEmpty || keys_[id] == k) return id;
         }
     }
-    /// A new vertex for `k`, left out of the table: for keys that no later search will look for.
-    uint32_t append(const Key& k) { return push(k); }
     /// Starts loading the slot where `k`'s search begins: the table is far larger than the caches.
     /// Forced inline: GCC 12 takes a function whose only effect is a prefetch for one without effects
     /// and drops its calls (until 2026-12 the weld prefetched nothing).
@@ -105,6 +104,8 @@ public:
         __builtin_prefetch(&slots_[hashOf(k) & (slots_.size() - 1)]);
     }
     [[nodiscard]] const scene::ScratchVector<Key>& keys() const noexcept { return keys_; }
+    /// Gives back the table (no search after this); the keys stay.
+    void releaseTable() noexcept { scene::ScratchVector<uint32_t>().swap(slots_); }
 
 private:
     uint32_t push(const Key& k) {
@@ -189,43 +190,81 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
         weldRange(bytes, ranges[0], mesh.indices, progress); // this thread: progress may be reported
     }
     // The ranges in order, each range's corners welded against what came before: the result is
-    // what one thread reading the file front to back would give.
+    // what one thread reading the file front to back would give. Every range but the last adds its
+    // new keys to the first range's table, for the ranges after it to find.
     size_t welded = ranges[0].welded;
     Welder& all = ranges[0].welder;
-    for (unsigned i = 1; i < threads; ++i) {
-        const scene::ScratchVector<Key>& local = ranges[i].welder.keys();
-        scene::UnwrittenVector<uint32_t> global(local.size());
-        // Looked up on every core (the table is only read), then numbered in order: a key not found
-        // is a new vertex (a range's keys are distinct), and only a range that others follow needs
-        // its new keys in the table.
-        scene::forEachRange(local.size(), threadsFor(local.size()), [&](unsigned, size_t b, size_t e) {
+    // Each key of `local` looked up in `all` on every core (the table is only read): its vertex, or
+    // kEmpty for a new one (a range's keys are distinct). `fresh` gets each part's count of new keys.
+    const auto lookUp = [&](const scene::ScratchVector<Key>& local, scene::UnwrittenVector<uint32_t>& global,
+                            std::vector<size_t>& fresh) {
+        const unsigned parts = threadsFor(local.size());
+        fresh.assign(parts + 1, 0);
+        scene::forEachRange(local.size(), parts, [&](unsigned part, size_t b, size_t e) {
+            size_t count = 0;
             for (size_t v = b; v < e; ++v) {
                 if (v + kAheadLookups < e) all.prefetch(local[v + kAheadLookups]);
                 global[v] = all.find(local[v]);
+                count += global[v] == kEmpty;
             }
+            fresh[part + 1] = count;
         });
-        const bool lastRange = i + 1 == threads;
+    };
+    const auto renumber = [&](const RangeWeld& r, const scene::UnwrittenVector<uint32_t>& global) {
+        scene::forEachRange(r.last - r.first, threadsFor(r.last - r.first), [&](unsigned, size_t b, size_t e) {
+            for (size_t j = 3 * (r.first + b); j < 3 * (r.first + e); ++j) mesh.indices[j] = global[mesh.indices[j]];
+        });
+    };
+    std::vector<size_t> fresh;
+    for (unsigned i = 1; i + 1 < threads; ++i) {
+        const scene::ScratchVector<Key>& local = ranges[i].welder.keys();
+        scene::UnwrittenVector<uint32_t> global(local.size());
+        lookUp(local, global, fresh);
         for (size_t v = 0; v < local.size(); ++v) {
             if (global[v] != kEmpty) {
                 ++welded;
                 continue;
             }
             bool seen = false; // cannot be: the key was not found
-            global[v] = lastRange ? all.append(local[v]) : all.add(local[v], seen);
+            global[v] = all.add(local[v], seen);
         }
         welded += ranges[i].welded;
-        const RangeWeld& r = ranges[i];
-        scene::forEachRange(r.last - r.first, threadsFor(r.last - r.first), [&](unsigned, size_t b, size_t e) {
-            for (size_t j = 3 * (r.first + b); j < 3 * (r.first + e); ++j) mesh.indices[j] = global[mesh.indices[j]];
-        });
+        renumber(ranges[i], global);
         ranges[i].welder = Welder(0); // its memory back before the next range
     }
+    // The last range's new keys are numbered after the table's, in the range's order, and go
+    // straight to the mesh's positions from every core: appended to the table one by one, then
+    // copied, they were two serial passes over the model's vertices (at 50 M triangles, 12 M new keys).
     const scene::ScratchVector<Key>& keys = all.keys();
+    scene::ScratchVector<Key> noKeys;
+    const scene::ScratchVector<Key>& last = threads > 1 ? ranges[threads - 1].welder.keys() : noKeys;
+    scene::UnwrittenVector<uint32_t> global(last.size());
+    fresh.assign(2, 0);
+    if (threads > 1) lookUp(last, global, fresh);
+    all.releaseTable(); // its pages, and the last range's, for the positions
+    if (threads > 1) ranges[threads - 1].welder.releaseTable();
+    std::partial_sum(fresh.begin(), fresh.end(), fresh.begin()); // each part's first new key
+    const size_t vertices = keys.size() + fresh.back();
     // One spare vertex of capacity: Embree reads 4 bytes past the last (scene::reserveSpareVertex).
-    mesh.positions.reserve(keys.size() + 1);
+    mesh.positions.reserve(vertices + 1);
     scene::scratch::prepareCapacity(mesh.positions); // the welders' pages
-    mesh.positions.resize(keys.size());
-    if (!keys.empty()) std::memcpy(mesh.positions.data(), keys.data(), keys.size() * sizeof(Key)); // none: 0 facets
+    mesh.positions.resize(vertices);
+    static_assert(sizeof(Key) == sizeof(glm::vec3));
+    scene::forEachRange(keys.size(), threadsFor(keys.size()), [&](unsigned, size_t b, size_t e) {
+        if (e > b) std::memcpy(mesh.positions.data() + b, keys.data() + b, (e - b) * sizeof(Key));
+    });
+    if (threads > 1) {
+        scene::forEachRange(last.size(), unsigned(fresh.size() - 1), [&](unsigned part, size_t b, size_t e) {
+            size_t id = keys.size() + fresh[part];
+            for (size_t v = b; v < e; ++v) {
+                if (global[v] != kEmpty) continue;
+                std::memcpy(&mesh.positions[id], &last[v], sizeof(Key));
+                global[v] = uint32_t(id++);
+            }
+        });
+        welded += last.size() - fresh.back() + ranges[threads - 1].welded;
+        renumber(ranges[threads - 1], global);
+    }
     counts.inputVertices = 3 * n;
     counts.mergedVertices = welded;
     return mesh;
