@@ -366,6 +366,27 @@ TEST(MeshCleanup, MergedVerticesAreFartherApartThanTheTolerance) {
     }
 }
 
+TEST(MeshCleanup, DistinctReadPositionsCleanAsAnyOthers) {
+    // A reader that welded bit-equal corners (binary STL) says so, and the merge skips looking for
+    // copies: the result must be what the search would have given.
+    Mesh a = clusteredSoup(3000, 1e-3, 5);
+    std::vector<glm::vec3> sorted = a.positions;
+    std::sort(sorted.begin(), sorted.end(),
+              [](const glm::vec3& p, const glm::vec3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); });
+    ASSERT_EQ(std::unique(sorted.begin(), sorted.end()), sorted.end()) << "the soup's positions must be distinct";
+    Mesh b = a;
+    CleanupOptions o;
+    o.mergeTolerance = 1e-3;
+    const CleanupReport ra = cleanMesh(a, o, {}, ReadPositions::MayRepeat);
+    const CleanupReport rb = cleanMesh(b, o, {}, ReadPositions::Distinct);
+    ASSERT_GT(ra.mergedVertices, 1000u);
+    EXPECT_EQ(ra.mergedVertices, rb.mergedVertices);
+    EXPECT_EQ(ra.outputVertices, rb.outputVertices);
+    EXPECT_EQ(a.indices, b.indices);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.normals, b.normals);
+}
+
 /// A wavy height field of w × h quads, its vertices numbered row by row and its faces in the same order
 /// (as a loaded model's are, about: passes that skip blocks of faces far from a thread's vertices do so
 /// here), every 97th quad's first face given twice.

@@ -350,9 +350,9 @@ size_t dropBitEqualCopies(std::span<const glm::vec3> pos, scene::ScratchVector<u
 
 /// Maps every vertex to the first vertex within `tol` of it (spatial hash over the candidates of
 /// mergeCandidates, in index order); non-finite vertices map to themselves and are dropped later
-/// as unused.
+/// as unused. With `read` Distinct no candidate is looked for among bit-equal copies.
 scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, const scene::ScratchVector<char>& ok,
-                                               double tol, CleanupReport& r) {
+                                               double tol, ReadPositions read, CleanupReport& r) {
     const size_t n = pos.size();
     scene::ScratchVector<uint32_t> rep(n);
     std::iota(rep.begin(), rep.end(), 0u);
@@ -360,8 +360,9 @@ scene::ScratchVector<uint32_t> mergeDuplicates(std::span<const glm::vec3> pos, c
     // Bit-equal candidates are one vertex before the ordered merge, as a binary STL's corners are when
     // read: a glTF, OBJ or PLY file repeats a position for each normal it has there, most of such a
     // file's candidates (the 4 M piperack as GLB: 1.8 M of 2.8 M vertices), all on one thread below.
-    // Each later copy takes its first copy's result.
-    const size_t copies = dropBitEqualCopies(pos, candidates, rep);
+    // Each later copy takes its first copy's result. A binary STL's weld leaves none (its 50 M
+    // piperack: 0.21 s on one thread over 4.1 M candidates, to find none).
+    const size_t copies = read == ReadPositions::Distinct ? 0 : dropBitEqualCopies(pos, candidates, rep);
     // A position that was a candidate for its copies alone is now alone in its cell: counted again
     // among the distinct candidates (every other vertex is alone in its cell), most go.
     if (copies > 0) candidates = mergeCandidates(pos, ok, tol, candidates);
@@ -845,7 +846,8 @@ std::string nothingLeftMessage(const CleanupReport& r) {
     return message;
 }
 
-CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const Progress& progress) {
+CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const Progress& progress,
+                        ReadPositions read) {
     // Shares of cleanup's time on a 4 M-triangle STL (2 cores): the merge ~20 %, faces ~20 %, normals ~60 %.
     const auto stage = [&](float done, std::string_view name) {
         if (progress) progress(done, name);
@@ -871,7 +873,7 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
         r.mergeTolerance = tol;
 
         stage(0.05f, "cleaning: merging vertices");
-        const scene::ScratchVector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, r);
+        const scene::ScratchVector<uint32_t> rep = mergeDuplicates(mesh.positions, ok, tol, read, r);
         renumber(tris, rep);
         stage(0.2f, "cleaning: degenerate and duplicate faces");
         dropDegenerate(mesh.positions, tris, tol, r);

@@ -99,8 +99,10 @@ LoadedModel readModel(const std::string& path, const CleanupOptions& options, co
 
     LoadedModel model;
     model.format = ext;
-    model.report = cleanMesh(mesh, options, progress);
-    if (reading.inputVertices > 0) { // the reader welded bit-equal corners (binary STL): count them too
+    // A reader that welded bit-equal corners (binary STL) counts them: its positions are distinct.
+    const bool welded = reading.inputVertices > 0;
+    model.report = cleanMesh(mesh, options, progress, welded ? ReadPositions::Distinct : ReadPositions::MayRepeat);
+    if (welded) { // the weld's corners count too
         model.report.inputVertices = reading.inputVertices;
         model.report.mergedVertices += reading.mergedVertices;
     }

@@ -70,11 +70,18 @@ struct LoadedModel {
 /// True for extensions loadModel() reads.
 [[nodiscard]] bool isModelFile(std::string_view path) noexcept;
 
+/// What a reader hands cleanMesh: positions that may repeat bit for bit (a glTF, OBJ or PLY file
+/// repeats a position for each normal it has there), or Distinct ones, no two bit-equal (−0 as +0),
+/// as the binary STL reader's weld leaves them.
+enum class ReadPositions { MayRepeat, Distinct };
+
 /// Cleans one triangle mesh in place (docs/design.md §2.1: drop NaN/Inf vertices and their faces, degenerate
 /// faces, merge duplicates, remove duplicate faces and isolated vertices, crease-angle normals,
 /// optional orientation fix) and returns what it did. Does not chunk.
 /// `progress` hears "cleaning: STAGE" at each stage's start, the fraction of the whole cleanup done.
-CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {}, const Progress& progress = {});
+/// `read` Distinct skips looking for bit-equal copies first (the merge would still find them).
+CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options = {}, const Progress& progress = {},
+                        ReadPositions read = ReadPositions::MayRepeat);
 
 /// "no triangles left after cleanup", with the reason when it is the merge tolerance: a model so
 /// small that its faces lie within the tolerance (in model units) merges away.
