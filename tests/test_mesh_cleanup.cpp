@@ -115,6 +115,29 @@ TEST(MeshCleanup, DuplicateFacesAnyWindingRemoved) {
     EXPECT_EQ(m.indices[2], 2u);
 }
 
+TEST(MeshCleanup, DuplicateFacesFoundAroundAVertexOfManyFaces) {
+    // Every face of a fan has the hub as its smallest vertex: one bucket of 40 faces, compared by
+    // sorting rather than pair by pair. Every third face comes again later, wound the other way.
+    constexpr uint32_t rim = 30;
+    std::vector<glm::vec3> p{{0, 0, 0}};
+    for (uint32_t i = 0; i < rim; ++i)
+        p.emplace_back(std::cos(0.2f * float(i)), std::sin(0.2f * float(i)), 0.01f * float(i));
+    std::vector<uint32_t> idx;
+    for (uint32_t i = 1; i < rim; ++i) idx.insert(idx.end(), {0, i, i + 1});
+    std::vector<uint32_t> first = idx; // the faces that must stay, in order
+    size_t copies = 0;
+    for (uint32_t i = 1; i < rim; i += 3, ++copies) idx.insert(idx.end(), {i + 1, 0, i});
+    for (uint32_t i = 1; i < rim; i += 3) idx.insert(idx.end(), {i, i + 1, 0}); // and once more, rotated
+    copies *= 2;
+    Mesh m = makeMesh(std::move(p), std::move(idx));
+    CleanupOptions o;
+    o.creaseAngleDeg = 180; // one output vertex per input vertex: indices compare directly
+    const CleanupReport r = cleanMesh(m, o);
+    EXPECT_EQ(r.duplicateFaces, copies);
+    EXPECT_EQ(r.outputFaces, rim - 1);
+    EXPECT_EQ(m.indices, first);
+}
+
 TEST(MeshCleanup, IsolatedVerticesRemoved) {
     Mesh m = makeMesh({{5, 5, 5}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {9, 9, 9}}, {1, 2, 3});
     const CleanupReport r = cleanMesh(m);

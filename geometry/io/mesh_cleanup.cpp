@@ -495,39 +495,58 @@ void dropDegenerate(std::span<const glm::vec3> pos, Faces& tris, double tol, Cle
     r.degenerateFaces += keepUnmarked(tris, bad);
 }
 
+/// A face's vertices in ascending order: faces on the same three vertices, whatever their winding,
+/// have the same key. Three compare-exchanges: std::sort's set-up costs more than its work.
+Tri sortedKey(Tri t) noexcept {
+    if (t[1] < t[0]) std::swap(t[0], t[1]);
+    if (t[2] < t[1]) std::swap(t[1], t[2]);
+    if (t[1] < t[0]) std::swap(t[0], t[1]);
+    return t;
+}
+
+/// Faces a bucket holds up to which each is compared with every earlier one instead of sorting them.
+constexpr size_t kPairwiseBucket = 8;
+
 /// Keeps the first of every set of faces on the same three vertices, whatever their winding.
 /// Duplicates share their smallest vertex, so faces are bucketed by it (counting sort: cache
 /// friendly, unlike a hash table over all faces) and compared within a bucket only; buckets are
-/// sorted on their own threads by vertex range (each face is in one bucket).
+/// looked at on their own threads by vertex range (each face is in one bucket). Keys are worked out
+/// from the faces where they are compared: an array of them was the model's size again (12 bytes a
+/// face) to write and read.
 void dropDuplicateFaces(size_t vertexCount, Faces& tris, CleanupReport& r) {
     const unsigned threads = scene::rangeThreads(tris.size(), kFacesPerThreadMin);
-    scene::UnwrittenVector<Tri> keys(tris.size());
-    scene::forEachRange(tris.size(), threads, [&](unsigned, size_t b, size_t e) {
-        for (size_t f = b; f < e; ++f) { // three compare-exchanges: std::sort's set-up costs more than its work
-            auto [x, y, z] = tris.tri(f);
-            if (y < x) std::swap(x, y);
-            if (z < y) std::swap(y, z);
-            if (y < x) std::swap(x, y);
-            keys[f] = {x, y, z};
-        }
-    });
     scene::ScratchVector<uint32_t> start;
     scene::UnwrittenVector<uint32_t> order;
     bucketFaces(
-        vertexCount, keys.size(), [&](size_t f, const auto& emit) { emit(keys[f][0]); }, start, order);
+        vertexCount, tris.size(), [&](size_t f, const auto& emit) { emit(sortedKey(tris.tri(f))[0]); }, start, order);
     scene::ScratchVector<char> dup(tris.size(), 0);
     scene::forEachRange(
         vertexCount, threads,
         [&](unsigned, size_t first, size_t last) {
+            std::vector<std::pair<Tri, uint32_t>> large; // a bucket above kPairwiseBucket: keys and faces, sorted
             for (size_t v = first; v < last; ++v) {
-                const auto begin = order.begin() + start[v], end = order.begin() + start[v + 1];
-                if (end - begin < 2) continue;
+                const uint32_t* begin = order.data() + start[v];
+                const size_t count = start[v + 1] - start[v];
+                if (count < 2) continue;
+                // Faces come in face order: a face equal to an earlier one is the duplicate.
+                if (count <= kPairwiseBucket) {
+                    std::array<Tri, kPairwiseBucket> key;
+                    for (size_t i = 0; i < count; ++i) {
+                        key[i] = sortedKey(tris.tri(begin[i]));
+                        for (size_t j = 0; j < i; ++j)
+                            if (key[j] == key[i]) {
+                                dup[begin[i]] = 1;
+                                break;
+                            }
+                    }
+                    continue;
+                }
                 // Equal keys end up adjacent, the earliest face first (it is the one kept).
-                std::sort(begin, end, [&](uint32_t a, uint32_t b) {
-                    return std::tie(keys[a][1], keys[a][2], a) < std::tie(keys[b][1], keys[b][2], b);
-                });
-                for (auto it = begin + 1; it != end; ++it)
-                    if (keys[*it] == keys[*(it - 1)]) dup[*it] = 1;
+                large.clear();
+                for (size_t i = 0; i < count; ++i) large.emplace_back(sortedKey(tris.tri(begin[i])), begin[i]);
+                std::sort(large.begin(), large.end());
+                for (size_t i = 1; i < large.size(); ++i)
+                    if (large[i].first == large[i - 1].first) dup[large[i].second] = 1;
             }
         },
         start);
