@@ -75,6 +75,22 @@ TEST(MeshCleanup, MergeRespectsTolerance) {
     EXPECT_EQ(cleanMesh(far).mergedVertices, 1u);
 }
 
+TEST(MeshCleanup, TwoCloseVerticesLeftAfterCopiesMerge) {
+    // A, B 2e-6 apart and A's bit-equal copy share a coarse cell (64 tolerances wide) and lie well
+    // inside it: only their count makes them merge candidates. Once the copy is folded, A and B are
+    // counted again on their own, in the smallest counter table there is; B must still merge into A.
+    CleanupOptions o;
+    o.mergeTolerance = 1e-5;
+    o.creaseAngleDeg = 180;
+    const glm::vec3 a(0.5f, 0.5f, 0.5f), b(0.500002f, 0.5f, 0.5f), d(0.5f, 1.5f, 0.5f), e(1.5f, 1.5f, 0.5f);
+    Mesh m = makeMesh({a, b, d, a, e}, {0, 1, 2, 3, 2, 4});
+    const CleanupReport r = cleanMesh(m, o);
+    EXPECT_EQ(r.mergedVertices, 2u);  // the copy, and B
+    EXPECT_EQ(r.degenerateFaces, 1u); // A B D, with B merged into A
+    EXPECT_EQ(r.outputFaces, 1u);
+    EXPECT_EQ(r.outputVertices, 3u); // A, D, E
+}
+
 TEST(MeshCleanup, NonFiniteVertexRemovesItsFaces) {
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     Mesh m = makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {nan, 0, 0}, {1, inf, 0}}, {0, 1, 2, 1, 3, 2, 0, 4, 1});

@@ -268,12 +268,17 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
         return MergeGrid::hash(c[0], c[1], c[2]);
     };
     const unsigned threads = scene::rangeThreads(n, kMergePerThreadMin);
-    scene::ScratchVector<uint8_t> seen(tableSize(4 * n), 0); // ≥ 8 counters a vertex: few collisions
-    const uint32_t mask = uint32_t(std::min<size_t>(seen.size(), size_t(1) << 30) - 1);
+    // ≥ 8 counters a vertex: few collisions. Each counts to 2 (more is the same), so two bits hold
+    // it, 32 to a word: a quarter of a byte table's size, which at plant scale is far larger than the
+    // caches (the 50 M piperack STL: 64 instead of 256 MiB).
+    const size_t counters = std::min<size_t>(tableSize(4 * n), size_t(1) << 30);
+    scene::ScratchVector<uint64_t> seen((counters + 31) / 32, 0);
+    const uint32_t mask = uint32_t(counters - 1);
+    const auto count = [&](uint32_t s) { return unsigned(seen[s >> 5] >> (2 * (s & 31)) & 3); };
     constexpr uint32_t kNear = 0x80000000u, kNotFinite = kNone;
     // Each vertex's counter (bit 31: near a cell face), then the counts: each thread owns a slice of
-    // the counters and reads every vertex's, so no increment needs to be atomic. Counters are
-    // prefetched a few vertices ahead: the table is far larger than the caches.
+    // the counters (whole words) and reads every vertex's, so no increment needs to be atomic.
+    // Counters are prefetched a few vertices ahead: the table is larger than the caches.
     constexpr size_t kAhead = 16;
     scene::UnwrittenVector<uint32_t> slot(n);
     scene::forEachRange(n, threads, [&](unsigned, size_t b, size_t e) {
@@ -283,14 +288,14 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
             slot[i] = ok[v] ? uint32_t(coarse(pos[v], near) & mask) | (near ? kNear : 0u) : kNotFinite;
         }
     });
-    const size_t slice = (size_t(mask) + 1 + threads - 1) / threads;
+    const size_t slice = (seen.size() + threads - 1) / threads * 32;
     scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
         const size_t lo = slice * t, hi = lo + slice;
         for (size_t i = 0; i < n; ++i) {
-            if (i + kAhead < n) __builtin_prefetch(&seen[slot[i + kAhead] & mask], 1);
+            if (i + kAhead < n) __builtin_prefetch(&seen[(slot[i + kAhead] & mask) >> 5], 1);
             if (slot[i] == kNotFinite) continue;
-            const size_t s = slot[i] & mask;
-            if (s >= lo && s < hi && seen[s] < 2) ++seen[s];
+            const uint32_t s = slot[i] & mask;
+            if (s >= lo && s < hi && count(s) < 2) seen[s >> 5] += uint64_t(1) << (2 * (s & 31));
         }
     });
     struct alignas(scene::kRangeStateAlign) Kept {
@@ -299,13 +304,13 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
     std::vector<Kept> kept(threads);
     scene::forEachRange(n, threads, [&](unsigned t, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
-            if (i + kAhead < e) __builtin_prefetch(&seen[slot[i + kAhead] & mask]);
+            if (i + kAhead < e) __builtin_prefetch(&seen[(slot[i + kAhead] & mask) >> 5]);
             if (slot[i] == kNotFinite) continue;
-            if ((slot[i] & kNear) || seen[slot[i] & mask] >= 2) kept[t].v.push_back(vertex(i));
+            if ((slot[i] & kNear) || count(slot[i] & mask) >= 2) kept[t].v.push_back(vertex(i));
         }
     });
     decltype(slot)().swap(slot);
-    scene::ScratchVector<uint8_t>().swap(seen);
+    decltype(seen)().swap(seen);
     for (size_t t = 1; t < kept.size(); ++t) {
         kept[0].v.insert(kept[0].v.end(), kept[t].v.begin(), kept[t].v.end());
         scene::ScratchVector<uint32_t>().swap(kept[t].v);
