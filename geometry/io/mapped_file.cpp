@@ -1,5 +1,7 @@
 #include "geometry/io/mapped_file.h"
 
+#include "geometry/scene/scratch_pages.h"
+
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -30,8 +32,9 @@ MappedFile::~MappedFile() {
 }
 
 void MappedFile::release(const void* from, const void* to) noexcept {
-    const auto page = uintptr_t(::sysconf(_SC_PAGESIZE));
-    const uintptr_t lo = (uintptr_t(from) + page - 1) / page * page, hi = uintptr_t(to) / page * page;
+    if (to <= from) return;
+    const auto [lo, hi] =
+        scene::scratch::pagesWithin(from, size_t(static_cast<const char*>(to) - static_cast<const char*>(from)));
     if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
 }
 

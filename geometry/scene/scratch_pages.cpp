@@ -38,15 +38,6 @@ size_t wholePages(size_t bytes) noexcept {
     return bytes > SIZE_MAX - page ? 0 : (bytes + page - 1) / page * page;
 }
 
-/// The whole pages inside [p, p + bytes), as [lo, hi) (empty: lo == hi). The rest of a partly
-/// covered page may be someone else's (a heap chunk's header).
-std::pair<uintptr_t, uintptr_t> pagesWithin(const void* p, size_t bytes) noexcept {
-    const uintptr_t page = pageSize(), from = uintptr_t(p), to = from + bytes;
-    if (p == nullptr || to < from) return {0, 0};
-    const uintptr_t lo = (from + page - 1) / page * page, hi = to / page * page;
-    return hi > lo ? std::pair(lo, hi) : std::pair(lo, lo);
-}
-
 /// Moves kept pages over the front of the page-aligned [to, to + size), the most recently kept first;
 /// returns the bytes moved. Moving a page table entry costs far less than a fault and a clear. A
 /// piece that cannot move leaves the rest as it was. Holds the lock: two callers never take the same
@@ -70,6 +61,13 @@ size_t moveKeptTo(std::byte* to, size_t size) noexcept {
 } // namespace
 
 namespace scratch {
+
+std::pair<uintptr_t, uintptr_t> pagesWithin(const void* p, size_t bytes) noexcept {
+    const uintptr_t page = pageSize(), from = uintptr_t(p), to = from + bytes;
+    if (p == nullptr || to < from) return {0, 0};
+    const uintptr_t lo = (from + page - 1) / page * page, hi = to / page * page;
+    return hi > lo ? std::pair(lo, hi) : std::pair(lo, lo);
+}
 
 void* allocate(size_t bytes) {
     const size_t size = wholePages(std::max<size_t>(bytes, 1));

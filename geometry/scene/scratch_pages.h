@@ -11,8 +11,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace geometry::scene {
@@ -34,6 +36,9 @@ inline constexpr bool kScratchPages = true;
 #endif
 
 namespace scratch {
+/// The whole pages inside [p, p + bytes), as addresses [lo, hi) (lo == hi: none). The rest of a
+/// partly covered page may be someone else's (a heap chunk's header, a mapped file's other bytes).
+[[nodiscard]] std::pair<uintptr_t, uintptr_t> pagesWithin(const void* p, size_t bytes) noexcept;
 /// A page-aligned block of at least `bytes`, mapped on its own: kept pages first (their old contents
 /// stay), then fresh zero pages. Throws std::bad_alloc when the system has no room.
 [[nodiscard]] void* allocate(size_t bytes);
