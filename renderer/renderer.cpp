@@ -19,7 +19,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -715,26 +714,13 @@ void Renderer::unwarpedViewPass(const geometry::shadow::ShadowPlan& plan, const 
 
 // ---- [SECTION] Reading back -----------------------------------------------------------------
 
-namespace {
-
-/// GL's rows run bottom-up; the analysis reads top row first. Swapped in place: a second image-sized
-/// array would come on top of the truth's peak at plant scale.
-template <class T> void flipRows(std::vector<T>& image, int w, int h) {
-    for (int y = 0; y < h / 2; ++y)
-        std::swap_ranges(image.begin() + std::ptrdiff_t(size_t(y) * w),
-                         image.begin() + std::ptrdiff_t(size_t(y + 1) * w),
-                         image.begin() + std::ptrdiff_t(size_t(h - 1 - y) * w));
-}
-
-} // namespace
-
 std::vector<float> Renderer::readShadowMask() const {
     const int w = eyeBuffers().width(), h = eyeBuffers().height();
     std::vector<float> out(size_t(w) * h);
     glBindTexture(GL_TEXTURE_2D, eyeBuffers().texture(EyeBuffers::Mask));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RED, GL_FLOAT, out.data());
-    flipRows(out, w, h);
+    flipRows(out, size_t(w), h);
     return out;
 }
 
@@ -744,7 +730,7 @@ std::vector<glm::vec4> Renderer::readFloat4(EyeBuffers::Attachment a) const {
     glBindTexture(GL_TEXTURE_2D, eyeBuffers().texture(a));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, out.data());
-    flipRows(out, w, h);
+    flipRows(out, size_t(w), h);
     return out;
 }
 
@@ -767,7 +753,7 @@ std::vector<float> Renderer::readShadowMap(int split, int resolution) const {
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureSubImage(sampledDepth_, 0, 0, 0, split, resolution, resolution, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
                          GLsizei(out.size() * sizeof(float)), out.data());
-    flipRows(out, resolution, resolution);
+    flipRows(out, side, resolution);
     return out;
 }
 

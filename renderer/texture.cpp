@@ -1,5 +1,7 @@
 #include "texture.h"
 
+#include "renderer/image.h"
+
 #include <cstring>
 
 namespace renderer {
@@ -38,14 +40,12 @@ geometry::analysis::Image readFramebuffer(GLuint framebuffer, int width, int hei
     if (width <= 0 || height <= 0) return img;
     img.width = width;
     img.height = height;
-    std::vector<uint8_t> raw(size_t(width) * height * 4);
+    img.rgba.resize(size_t(width) * height * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
     if (framebuffer == 0) glReadBuffer(GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
-    img.rgba.resize(raw.size());
-    const size_t row = size_t(width) * 4;
-    for (int y = 0; y < height; ++y) std::memcpy(&img.rgba[size_t(y) * row], &raw[size_t(height - 1 - y) * row], row);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    flipRows(img.rgba, size_t(width) * 4, height);
     for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 255; // the window has no meaningful alpha
     return img;
 }
