@@ -514,6 +514,35 @@ TEST(MeshCleanup, SameResultOnOneThreadAndOnSeveral) {
     }
 }
 
+TEST(MeshCleanup, VerticesOfMoreThan255NormalsKeepTheirPositions) {
+    // Two cones of 256 faces (the most compared pair by pair), crease angle 0: every face of a cone
+    // has a normal of its own, so each apex becomes 256 vertices, more than a byte counts, and every
+    // rim vertex two. Each corner must keep its position, the second apex's too.
+    constexpr uint32_t n = 256;
+    Mesh m;
+    for (const float x : {0.f, 5.f}) {
+        const uint32_t apex = uint32_t(m.positions.size());
+        m.positions.emplace_back(x, 0.f, 1.f);
+        for (uint32_t i = 0; i < n; ++i) {
+            const float a = 2.f * 3.14159265f * float(i) / float(n);
+            m.positions.emplace_back(x + std::cos(a), std::sin(a), 0.f);
+            m.indices.insert(m.indices.end(), {apex, apex + 1 + i, apex + 1 + (i + 1) % n});
+        }
+    }
+    const Mesh input = m;
+    CleanupOptions o;
+    o.creaseAngleDeg = 0;
+    const CleanupReport r = cleanMesh(m, o);
+    ASSERT_EQ(r.outputFaces, size_t(2 * n));
+    expectValid(m);
+    EXPECT_EQ(r.outputVertices, size_t(2 * (n + 2 * n)));
+    for (size_t c = 0; c < m.indices.size(); ++c)
+        ASSERT_EQ(m.positions[m.indices[c]], input.positions[input.indices[c]]) << "corner " << c;
+    size_t apexVertices = 0;
+    for (const glm::vec3& p : m.positions) apexVertices += p.z == 1.f;
+    EXPECT_EQ(apexVertices, size_t(2 * n));
+}
+
 TEST(MeshCleanup, CornerNormalsAverageTheFacesWithinTheCreaseAngle) {
     // Fans of n faces around an apex, its height alternating so that neighbours meet at a crease or
     // not: apex degrees either side of the 64 up to which faces within the angle are kept as a bit

@@ -667,9 +667,17 @@ glm::vec3 unitOf(const glm::vec3& n) {
     return len > 0 ? n / len : glm::vec3(0.f);
 }
 
-/// One range of vertices' output: positions and normals in the order of their vertices.
+/// One range of vertices' output, in the order of their vertices: each output vertex's normal, and
+/// how many outputs each input vertex [first, last) has. An output's position is its input vertex's,
+/// copied at the join: kept here as well, it would be 12 bytes an output vertex more at the load's
+/// peak (50 M-triangle STL: ~400 MB).
 struct alignas(scene::kRangeStateAlign) SplitVertices {
-    scene::ScratchVector<glm::vec3> positions, normals;
+    uint32_t first = 0, last = 0;
+    scene::ScratchVector<glm::vec3> normals;
+    /// Outputs of vertex first + i (at least one: every vertex left has a face); 0 for a vertex of
+    /// more than 255, whose count is the next one in `manyOutputs`.
+    scene::UnwrittenVector<uint8_t> outputs;
+    std::vector<uint32_t> manyOutputs;
 };
 
 /// Degrees up to which a corner's faces within the crease angle are kept as a bit mask.
@@ -741,12 +749,13 @@ constexpr uint32_t kAheadVertices = 4;
 /// `provisional` + its output's index in `out`, marked (bit 31) so that a later vertex's search
 /// does not take it for its own id. Ranges are independent: each writes its own corners only.
 void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, const FaceNormals& faceN,
-                          const scene::ScratchVector<glm::vec3>& pos, float cosCrease, uint32_t provisional,
-                          Faces& tris, SplitVertices& out) {
+                          float cosCrease, uint32_t provisional, Faces& tris, SplitVertices& out) {
+    out.first = first;
+    out.last = last;
+    out.outputs.resize(last - first);
     // Crease splits add vertices: room for half as many again, so that growth by doubling rarely
     // comes on top of this stage's temporaries.
-    out.positions.reserve((last - first) + (last - first) / 2);
-    out.normals.reserve(out.positions.capacity());
+    out.normals.reserve((last - first) + (last - first) / 2);
     std::vector<glm::vec3> cornerN, unit;
     for (uint32_t v = first; v < last; ++v) {
         // A vertex's faces lie apart in the face arrays (around a vertex of a tube, a ring of faces
@@ -758,19 +767,18 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
             }
         cornerNormals(v, vf, faceN, cosCrease, cornerN, unit);
         const uint32_t* begin = vf.of(v).first;
-        const uint32_t base = static_cast<uint32_t>(out.positions.size());
+        const uint32_t base = static_cast<uint32_t>(out.normals.size());
         for (size_t i = 0; i < cornerN.size(); ++i) {
             // A face too small for float cross products has no direction: any unit normal will do.
             if (!(glm::dot(cornerN[i], cornerN[i]) > 0.f)) cornerN[i] = glm::vec3(0.f, 0.f, 1.f);
             uint32_t local = kNone;
-            for (uint32_t k = base; k < out.positions.size(); ++k)
+            for (uint32_t k = base; k < out.normals.size(); ++k)
                 if (glm::dot(out.normals[k], cornerN[i]) > 0.99999f) {
                     local = k;
                     break;
                 }
             if (local == kNone) {
-                local = static_cast<uint32_t>(out.positions.size());
-                out.positions.push_back(pos[v]);
+                local = static_cast<uint32_t>(out.normals.size());
                 out.normals.push_back(cornerN[i]);
             }
             // Another range may be writing another corner of this face: corners are read and
@@ -783,6 +791,9 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
                 }
             }
         }
+        const uint32_t outputs = static_cast<uint32_t>(out.normals.size()) - base;
+        out.outputs[v - first] = outputs <= 255 ? uint8_t(outputs) : uint8_t(0);
+        if (outputs > 255) out.manyOutputs.push_back(outputs);
     }
 }
 
@@ -819,17 +830,16 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Fac
             pos.size(), threads,
             [&](unsigned r, size_t b, size_t e) {
                 provisional[r] = vf.offset[b];
-                splitCornersByNormal(uint32_t(b), uint32_t(e), vf, faceN, pos, cosCrease, provisional[r], tris, out[r]);
+                splitCornersByNormal(uint32_t(b), uint32_t(e), vf, faceN, cosCrease, provisional[r], tris, out[r]);
             },
             vf.offset);
     }
-    scene::ScratchVector<glm::vec3>().swap(pos);
     // Join: exact sizes, one spare vertex of capacity for positions (Embree's last load,
     // scene::reserveSpareVertex). The mesh's arrays come from the heap: they take the pages kept from
     // the face normals and the vertex → face table, which would otherwise stay resident beside them,
     // above the load's peak, while these faulted in fresh ones.
     std::vector<uint32_t> base(threads + 1, 0); // the ranges' first real index
-    for (unsigned r = 0; r < threads; ++r) base[r + 1] = base[r] + uint32_t(out[r].positions.size());
+    for (unsigned r = 0; r < threads; ++r) base[r + 1] = base[r] + uint32_t(out[r].normals.size());
     mesh.positions.clear();
     mesh.normals.clear();
     mesh.positions.reserve(base.back() + 1);
@@ -837,10 +847,15 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Fac
     scene::scratch::prepareCapacity(mesh.positions);
     scene::scratch::prepareCapacity(mesh.normals);
     for (SplitVertices& o : out) {
-        mesh.positions.insert(mesh.positions.end(), o.positions.begin(), o.positions.end());
+        const uint32_t* many = o.manyOutputs.data();
+        for (uint32_t v = o.first; v < o.last; ++v) {
+            const uint32_t outputs = o.outputs[v - o.first] != 0 ? o.outputs[v - o.first] : *many++;
+            for (uint32_t k = 0; k < outputs; ++k) mesh.positions.push_back(pos[v]);
+        }
         mesh.normals.insert(mesh.normals.end(), o.normals.begin(), o.normals.end());
         o = {};
     }
+    scene::ScratchVector<glm::vec3>().swap(pos);
     // Every corner now holds a provisional index: renumbered in place, the faces become the indices.
     const std::span<uint32_t> corners = tris.corners();
     scene::forEachRange(
