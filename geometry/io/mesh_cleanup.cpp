@@ -691,12 +691,13 @@ void maskedCornerNormals(const uint32_t* begin, size_t deg, const FaceNormals& f
                          const std::vector<glm::vec3>& unit, float cosCrease, std::vector<glm::vec3>& cornerN) {
     std::array<uint64_t, kMaskedCornerDegree> within;              // bit k of within[i]: face k counts for corner i
     for (size_t i = 0; i < deg; ++i) within[i] = uint64_t(1) << i; // a corner's own face always counts
+    // Without a branch: at a crease the test goes either way, and a branch would guess wrong often.
     for (size_t i = 0; i < deg; ++i)
-        for (size_t k = i + 1; k < deg; ++k)
-            if (glm::dot(unit[i], unit[k]) >= cosCrease) { // dot(a, b) == dot(b, a) exactly
-                within[i] |= uint64_t(1) << k;
-                within[k] |= uint64_t(1) << i;
-            }
+        for (size_t k = i + 1; k < deg; ++k) {
+            const uint64_t near = glm::dot(unit[i], unit[k]) >= cosCrease; // dot(a, b) == dot(b, a) exactly
+            within[i] |= near << k;
+            within[k] |= near << i;
+        }
     uint64_t summed = 0; // corners whose sum had a length: their normal is the set's, not their own face's
     for (size_t i = 0; i < deg; ++i) {
         size_t same = 0;
@@ -782,14 +783,14 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
                 out.normals.push_back(cornerN[i]);
             }
             // Another range may be writing another corner of this face: corners are read and
-            // written as atomics (plain moves on common hardware).
-            for (uint32_t& c : tris[begin[i]]) {
-                std::atomic_ref<uint32_t> corner(c);
-                if (corner.load(std::memory_order_relaxed) == v) {
-                    corner.store((provisional + local) | 0x80000000u, std::memory_order_relaxed);
-                    break;
-                }
-            }
+            // written as atomics (plain moves on common hardware). Which corner is v's is found
+            // without a branch: it is any of the three alike, so a branch would guess wrong about
+            // every other time. A face meets v once (degenerate faces are gone): the corner is the
+            // first if neither of the others holds v.
+            const std::span<uint32_t, 3> face = tris[begin[i]];
+            const auto at = [&](int k) { return std::atomic_ref<uint32_t>(face[k]).load(std::memory_order_relaxed); };
+            const int k = int(at(1) == v) | int(at(2) == v) << 1;
+            std::atomic_ref<uint32_t>(face[k]).store((provisional + local) | 0x80000000u, std::memory_order_relaxed);
         }
         const uint32_t outputs = static_cast<uint32_t>(out.normals.size()) - base;
         out.outputs[v - first] = outputs <= 255 ? uint8_t(outputs) : uint8_t(0);
