@@ -748,7 +748,7 @@ constexpr uint32_t kAheadVertices = 4;
 /// Crease-angle normals (computeNormals' first stage) for the vertices [first, last): one output vertex
 /// per distinct corner normal, appended to `out`; each corner of `tris` at such a vertex gets
 /// `provisional` + its output's index in `out`, marked (bit 31) so that a later vertex's search
-/// does not take it for its own id. Ranges are independent: each writes its own corners only.
+/// does not take it for its own id. Blocks are independent: each writes its own corners only.
 void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, const FaceNormals& faceN,
                           float cosCrease, uint32_t provisional, Faces& tris, SplitVertices& out) {
     out.first = first;
@@ -800,20 +800,26 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
 
 /// Vertices per thread below which the crease normals stay on one thread.
 constexpr size_t kNormalsPerThreadMin = size_t(1) << 16;
+/// Blocks of vertices per thread that the crease normals share out (forEachRange's even ranges by
+/// corners left one thread idle a third of the 4 M piperack's pass), and the fewest vertices a block.
+constexpr size_t kNormalsBlocksPerThread = 16, kNormalsPerBlockMin = size_t(1) << 14;
 
 /// Crease-angle normals: corners of one vertex whose averaged normals differ become separate
-/// vertices, so sharp CAD edges stay sharp. The faces become mesh.indices. Vertex ranges run on their
-/// own threads, each into its own arrays, joined in vertex order once the face normals and the vertex
-/// → face table are gone (the load's memory peak at scale), so the result is the same for any thread
-/// count.
+/// vertices, so sharp CAD edges stay sharp. The faces become mesh.indices. Blocks of vertices go to
+/// whichever thread is free, each into its own arrays, joined in vertex order once the face normals
+/// and the vertex → face table are gone (the load's memory peak at scale), so the result is the same
+/// for any thread count.
 void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Faces& tris, double creaseDeg) {
     const float cosCrease = static_cast<float>(std::cos(glm::radians(std::clamp(creaseDeg, 0.0, 180.0))));
     // Provisional indices are corner counts (an upper bound on the outputs before a vertex), marked
     // by bit 31: past 2³¹ corners one range is all there can be.
     const unsigned threads =
         3 * tris.size() < 0x80000000ull ? scene::rangeThreads(pos.size(), kNormalsPerThreadMin) : 1u;
-    std::vector<SplitVertices> out(threads);
-    std::vector<uint32_t> provisional(threads + 1, 0); // the ranges' first provisional index
+    const size_t blocks =
+        threads == 1 ? 1
+                     : std::clamp<size_t>(pos.size() / kNormalsPerBlockMin, threads, threads * kNormalsBlocksPerThread);
+    std::vector<SplitVertices> out(blocks);
+    std::vector<uint32_t> provisional(blocks + 1, 0); // the blocks' first provisional index
     {
         // Unit normals are made per vertex from these, not kept per face: 12 bytes a triangle less
         // at the load's peak.
@@ -827,11 +833,11 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Fac
                             });
         const VertexFaces vf(pos.size(), tris);
         provisional.back() = vf.offset.back();
-        scene::forEachRange(
-            pos.size(), threads,
-            [&](unsigned r, size_t b, size_t e) {
-                provisional[r] = vf.offset[b];
-                splitCornersByNormal(uint32_t(b), uint32_t(e), vf, faceN, cosCrease, provisional[r], tris, out[r]);
+        scene::forEachBlock(
+            pos.size(), blocks, threads,
+            [&](size_t k, size_t b, size_t e) {
+                provisional[k] = vf.offset[b];
+                splitCornersByNormal(uint32_t(b), uint32_t(e), vf, faceN, cosCrease, provisional[k], tris, out[k]);
             },
             vf.offset);
     }
@@ -839,8 +845,8 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Fac
     // scene::reserveSpareVertex). The mesh's arrays come from the heap: they take the pages kept from
     // the face normals and the vertex → face table, which would otherwise stay resident beside them,
     // above the load's peak, while these faulted in fresh ones.
-    std::vector<uint32_t> base(threads + 1, 0); // the ranges' first real index
-    for (unsigned r = 0; r < threads; ++r) base[r + 1] = base[r] + uint32_t(out[r].normals.size());
+    std::vector<uint32_t> base(blocks + 1, 0); // the blocks' first real index
+    for (size_t k = 0; k < blocks; ++k) base[k + 1] = base[k] + uint32_t(out[k].normals.size());
     mesh.positions.clear();
     mesh.normals.clear();
     mesh.positions.reserve(base.back() + 1);
@@ -861,11 +867,13 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Fac
     const std::span<uint32_t> corners = tris.corners();
     scene::forEachRange(
         corners.size(), scene::rangeThreads(tris.size(), kNormalsPerThreadMin), [&](unsigned, size_t b, size_t e) {
+            size_t k = 0; // the block of the last corner: a face's and its neighbours' corners mostly share it
             for (size_t c = b; c < e; ++c) {
                 const uint32_t p = corners[c] & 0x7fffffffu;
-                const size_t r = size_t(std::upper_bound(provisional.begin() + 1, provisional.end() - 1, p) -
-                                        (provisional.begin() + 1));
-                corners[c] = p - provisional[r] + base[r];
+                if (p < provisional[k] || p >= provisional[k + 1])
+                    k = size_t(std::upper_bound(provisional.begin() + 1, provisional.end() - 1, p) -
+                               (provisional.begin() + 1));
+                corners[c] = p - provisional[k] + base[k];
             }
         });
     mesh.indices = std::move(tris).release();
