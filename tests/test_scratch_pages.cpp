@@ -170,3 +170,23 @@ TEST(ScratchPages, PrepareBacksWithKeptPagesThenFaultsInTheRest) {
     EXPECT_EQ(bytesEqualTo(array + 2 * kMiB, 6 * kMiB, 0), 6 * kMiB); // fresh pages read as zero
     std::free(heap);
 }
+
+TEST(ScratchPages, DroppedPagesLeaveMemoryAndTheRestAsItWas) {
+    const size_t page = size_t(sysconf(_SC_PAGESIZE));
+    // 8 MiB of heap, written; one byte past a page's start, so the first page is only partly covered.
+    auto* heap = static_cast<unsigned char*>(std::malloc(8 * kMiB + 2 * page));
+    ASSERT_NE(heap, nullptr);
+    unsigned char* const array = heap + (page - reinterpret_cast<uintptr_t>(heap) % page);
+    std::memset(array, 0x5a, 8 * kMiB);
+    scratch::dropPages(nullptr, 4 * kMiB); // nothing to drop
+    scratch::dropPages(array + 4 * kMiB + 1, 4 * kMiB - 1);
+    // The page holding array + 4 MiB + 1 is only partly inside: it stays, with every byte.
+    EXPECT_EQ(residentPages(array, 4 * kMiB + page), 4 * kMiB / page + 1);
+    EXPECT_EQ(bytesEqualTo(array, 4 * kMiB + page, 0x5a), 4 * kMiB + page);
+    EXPECT_EQ(residentPages(array + 4 * kMiB + page, 4 * kMiB - page), 0u);
+    // Still the heap's to use: the dropped pages read as zeros, take writes, and free.
+    EXPECT_EQ(bytesEqualTo(array + 4 * kMiB + page, 4 * kMiB - page, 0), 4 * kMiB - page);
+    std::memset(array, 0x77, 8 * kMiB);
+    EXPECT_EQ(bytesEqualTo(array, 8 * kMiB, 0x77), 8 * kMiB);
+    std::free(heap);
+}

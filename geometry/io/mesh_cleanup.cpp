@@ -809,7 +809,7 @@ constexpr size_t kNormalsBlocksPerThread = 16, kNormalsPerBlockMin = size_t(1) <
 /// whichever thread is free, each into its own arrays, joined in vertex order once the face normals
 /// and the vertex → face table are gone (the load's memory peak at scale), so the result is the same
 /// for any thread count.
-void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Faces& tris, double creaseDeg) {
+void computeNormals(scene::Mesh& mesh, std::vector<glm::vec3>& pos, Faces& tris, double creaseDeg) {
     const float cosCrease = static_cast<float>(std::cos(glm::radians(std::clamp(creaseDeg, 0.0, 180.0))));
     // Provisional indices are corner counts (an upper bound on the outputs before a vertex), marked
     // by bit 31: past 2³¹ corners one range is all there can be.
@@ -862,7 +862,7 @@ void computeNormals(scene::Mesh& mesh, scene::ScratchVector<glm::vec3>& pos, Fac
         mesh.normals.insert(mesh.normals.end(), o.normals.begin(), o.normals.end());
         o = {};
     }
-    scene::ScratchVector<glm::vec3>().swap(pos);
+    std::vector<glm::vec3>().swap(pos);
     // Every corner now holds a provisional index: renumbered in place, the faces become the indices.
     const std::span<uint32_t> corners = tris.corners();
     scene::forEachRange(
@@ -904,7 +904,6 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
     r.inputVertices = mesh.positions.size();
     r.inputFaces = mesh.triangleCount();
     Faces tris(std::move(mesh.indices)); // computeNormals hands them back
-    scene::ScratchVector<glm::vec3> pos;
     {
         // Each temporary lives in this block only, so that none is held through computeNormals
         // (the peak: face normals, vertex → faces and the output arrays at once).
@@ -927,22 +926,27 @@ CleanupReport cleanMesh(scene::Mesh& mesh, const CleanupOptions& options, const 
         dropDegenerate(mesh.positions, tris, tol, r);
         dropDuplicateFaces(mesh.positions.size(), tris, r);
 
-        // Compact: keep referenced vertices, in their original order.
+        // Compact: keep referenced vertices, in their original order, in place. A copy would free the
+        // positions' pages to the system just before the load's peak, where they would be faulted in
+        // afresh (50 M-triangle STL: 290 MB).
         scene::ScratchVector<uint32_t> newIndex(mesh.positions.size(), kNone);
         for (const uint32_t v : std::as_const(tris).corners()) newIndex[v] = 0;
         size_t kept = 0;
-        for (const uint32_t v : newIndex) kept += v != kNone;
-        pos.reserve(kept);
         for (size_t i = 0; i < newIndex.size(); ++i) {
             if (newIndex[i] == kNone) continue;
-            newIndex[i] = static_cast<uint32_t>(pos.size());
-            pos.push_back(mesh.positions[i]);
+            newIndex[i] = static_cast<uint32_t>(kept);
+            if (kept != i) mesh.positions[kept] = mesh.positions[i];
+            ++kept;
         }
+        mesh.positions.resize(kept);
         // Every finite vertex is either merged away, kept, or isolated.
-        r.isolatedVertices = r.inputVertices - r.nonFiniteVertices - r.mergedVertices - pos.size();
+        r.isolatedVertices = r.inputVertices - r.nonFiniteVertices - r.mergedVertices - kept;
         renumber(tris, newIndex);
     }
-    std::vector<glm::vec3>().swap(mesh.positions); // computeNormals writes them anew
+    // computeNormals writes the positions anew from these; the pages of those dropped (a triangle
+    // soup's merged corners) are given back now, not held through its peak.
+    std::vector<glm::vec3> pos = std::move(mesh.positions);
+    scene::scratch::dropPages(pos.data() + pos.size(), (pos.capacity() - pos.size()) * sizeof(glm::vec3));
     std::vector<glm::vec3>().swap(mesh.normals);
 
     if (options.fixOrientation) {

@@ -102,6 +102,11 @@ void faultIn(void* p, size_t bytes) noexcept {
 #endif
 }
 
+void dropPages(void* p, size_t bytes) noexcept {
+    const auto [lo, hi] = pagesWithin(p, bytes);
+    if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
+}
+
 void prepare(void* p, size_t bytes) noexcept {
     // Kept pages fill the whole pages' front; the rest is faulted in.
     const auto [lo, hi] = pagesWithin(p, bytes);

@@ -55,6 +55,10 @@ size_t backWithKept(void* p, size_t bytes) noexcept;
 /// on one thread (48 MB: 35 ms; on two cores at once: 14 ms). Without the kernel's support (Linux
 /// 5.14, MADV_POPULATE_WRITE) nothing happens and the writes fault as before.
 void faultIn(void* p, size_t bytes) noexcept;
+/// Gives the whole pages inside [p, p + bytes) back to the system, memory the caller owns and no
+/// longer needs the contents of (a heap array's capacity past its size): they read as zeros when
+/// next touched. A shrunken array's tail would otherwise stay resident.
+void dropPages(void* p, size_t bytes) noexcept;
 /// backWithKept, then faultIn for what kept pages did not cover: a load's own array of `bytes`,
 /// about to be written in full.
 void prepare(void* p, size_t bytes) noexcept;
