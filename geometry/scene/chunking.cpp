@@ -78,8 +78,9 @@ struct Splitter {
     uint32_t maxTriangles, maxPartTriangles;
     std::vector<Range> chunks, parts; // each in order of begin
 
-    /// `spawn`: levels below this one that may still hand their upper half to a new thread.
-    void split(Items& items, uint32_t begin, uint32_t end, bool inChunk, int spawn) {
+    /// `spawn`: levels below this one that may still hand their upper half to a new thread. `box`:
+    /// centroidBox(items, begin, end) where the caller has it.
+    void split(Items& items, uint32_t begin, uint32_t end, bool inChunk, int spawn, const Aabb* box = nullptr) {
         if (!inChunk && end - begin <= maxTriangles) {
             chunks.emplace_back(begin, end);
             inChunk = true;
@@ -88,7 +89,7 @@ struct Splitter {
             parts.emplace_back(begin, end);
             return;
         }
-        const glm::vec3 e = centroidBox(items, begin, end).extent();
+        const glm::vec3 e = (box != nullptr ? *box : centroidBox(items, begin, end)).extent();
         const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
         const uint32_t mid = begin + (end - begin) / 2;
         Item *const first = items.data() + begin, *const nth = items.data() + mid, *const last = items.data() + end;
@@ -163,15 +164,24 @@ void chunkMesh(Mesh& mesh, uint32_t maxTriangles, uint32_t maxPartTriangles) {
 
     const unsigned threads = rangeThreads(triCount, kParallelTriangles);
     Items items(triCount);
-    forEachRange(triCount, threads, [&](unsigned, size_t b, size_t e) {
-        for (size_t t = b; t < e; ++t)
-            items[t] = {(mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
-                         mesh.positions[mesh.indices[3 * t + 2]]) /
-                            3.f,
-                        uint32_t(t)};
+    // The first split's box is made here, on every core: on its own it was a pass over every item on
+    // one thread (the first split is one thread's).
+    std::vector<Aabb> boxes(threads);
+    forEachRange(triCount, threads, [&](unsigned r, size_t b, size_t e) {
+        Aabb box;
+        for (size_t t = b; t < e; ++t) {
+            const glm::vec3 c = (mesh.positions[mesh.indices[3 * t]] + mesh.positions[mesh.indices[3 * t + 1]] +
+                                 mesh.positions[mesh.indices[3 * t + 2]]) /
+                                3.f;
+            items[t] = {c, uint32_t(t)};
+            box.add(c);
+        }
+        boxes[r] = box;
     });
+    Aabb box;
+    for (const Aabb& b : boxes) box.add(b);
     Splitter splitter{maxTriangles, maxPartTriangles, {}, {}};
-    splitter.split(items, 0, triCount, false, spawnLevels());
+    splitter.split(items, 0, triCount, false, spawnLevels(), &box);
 
     // The new order alone (4 bytes a triangle) outlives the items (16), so that the indices' copy
     // below takes their pages: items and copy together were the load's peak (16 M piperack STL:
