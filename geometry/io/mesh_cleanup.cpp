@@ -667,7 +667,7 @@ glm::vec3 unitOf(const glm::vec3& n) {
     return len > 0 ? n / len : glm::vec3(0.f);
 }
 
-/// One range of vertices' output, in the order of their vertices: each output vertex's normal, and
+/// One block of vertices' output, in the order of their vertices: each output vertex's normal, and
 /// how many outputs each input vertex [first, last) has. An output's position is its input vertex's,
 /// copied at the join: kept here as well, it would be 12 bytes an output vertex more at the load's
 /// peak (50 M-triangle STL: ~400 MB).
@@ -782,7 +782,7 @@ void splitCornersByNormal(uint32_t first, uint32_t last, const VertexFaces& vf, 
                 local = static_cast<uint32_t>(out.normals.size());
                 out.normals.push_back(cornerN[i]);
             }
-            // Another range may be writing another corner of this face: corners are read and
+            // Another block may be writing another corner of this face: corners are read and
             // written as atomics (plain moves on common hardware). Which corner is v's is found
             // without a branch: it is any of the three alike, so a branch would guess wrong about
             // every other time. A face meets v once (degenerate faces are gone): the corner is the
@@ -812,7 +812,7 @@ constexpr size_t kNormalsBlocksPerThread = 16, kNormalsPerBlockMin = size_t(1) <
 void computeNormals(scene::Mesh& mesh, std::vector<glm::vec3>& pos, Faces& tris, double creaseDeg) {
     const float cosCrease = static_cast<float>(std::cos(glm::radians(std::clamp(creaseDeg, 0.0, 180.0))));
     // Provisional indices are corner counts (an upper bound on the outputs before a vertex), marked
-    // by bit 31: past 2³¹ corners one range is all there can be.
+    // by bit 31: past 2³¹ corners one block is all there can be.
     const unsigned threads =
         3 * tris.size() < 0x80000000ull ? scene::rangeThreads(pos.size(), kNormalsPerThreadMin) : 1u;
     const size_t blocks =
