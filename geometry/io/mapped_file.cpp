@@ -33,9 +33,7 @@ MappedFile::~MappedFile() {
 
 void MappedFile::release(const void* from, const void* to) noexcept {
     if (to <= from) return;
-    const auto [lo, hi] =
-        scene::scratch::pagesWithin(from, size_t(static_cast<const char*>(to) - static_cast<const char*>(from)));
-    if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
+    scene::scratch::dropPages(from, size_t(static_cast<const char*>(to) - static_cast<const char*>(from)));
 }
 
 } // namespace geometry::io

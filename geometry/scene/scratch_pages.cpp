@@ -102,7 +102,7 @@ void faultIn(void* p, size_t bytes) noexcept {
 #endif
 }
 
-void dropPages(void* p, size_t bytes) noexcept {
+void dropPages(const void* p, size_t bytes) noexcept {
     const auto [lo, hi] = pagesWithin(p, bytes);
     if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
 }

@@ -56,9 +56,10 @@ size_t backWithKept(void* p, size_t bytes) noexcept;
 /// 5.14, MADV_POPULATE_WRITE) nothing happens and the writes fault as before.
 void faultIn(void* p, size_t bytes) noexcept;
 /// Gives the whole pages inside [p, p + bytes) back to the system, memory the caller owns and no
-/// longer needs the contents of (a heap array's capacity past its size): they read as zeros when
-/// next touched. A shrunken array's tail would otherwise stay resident.
-void dropPages(void* p, size_t bytes) noexcept;
+/// longer needs the contents of: a heap array's capacity past its size (they read as zeros when next
+/// touched; a shrunken array's tail would otherwise stay resident), or a read file mapping's pages
+/// already read (read from the file again if touched).
+void dropPages(const void* p, size_t bytes) noexcept;
 /// backWithKept, then faultIn for what kept pages did not cover: a load's own array of `bytes`,
 /// about to be written in full.
 void prepare(void* p, size_t bytes) noexcept;
