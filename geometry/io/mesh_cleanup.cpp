@@ -243,13 +243,45 @@ struct MergeGrid {
 /// Vertices per thread below which the merge's linear passes stay on one thread.
 constexpr size_t kMergePerThreadMin = size_t(1) << 16;
 
+/// Occupancy counters that count to 2 (more is the same): two bits hold one, 32 to a word, a quarter
+/// of a byte table's size, which at plant scale is far larger than the caches (the 50 M piperack STL:
+/// 64 instead of 256 MiB). At least 8 counters an item: few collisions.
+struct TwoBitCounts {
+    uint32_t mask;
+    scene::ScratchVector<uint64_t> words;
+    explicit TwoBitCounts(size_t items)
+        : mask(uint32_t(std::min<size_t>(tableSize(4 * items), size_t(1) << 30) - 1)),
+          words((size_t(mask) + 32) / 32, 0) {}
+    [[nodiscard]] unsigned operator[](uint32_t s) const noexcept {
+        return unsigned(words[s >> 5] >> (2 * (s & 31)) & 3);
+    }
+    /// Counts item i at counter slotOf(i) (none for kNone), i < items. Each thread owns a slice of the
+    /// counters (whole words) and reads every item's, so no increment needs to be atomic. Counters
+    /// are prefetched a few items ahead: the table may be larger than the caches.
+    template <class SlotOf> void count(size_t items, unsigned threads, const SlotOf& slotOf) {
+        constexpr size_t kAhead = 16;
+        const size_t slice = (words.size() + threads - 1) / threads * 32;
+        scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
+            const size_t lo = slice * t, hi = lo + slice;
+            for (size_t i = 0; i < items; ++i) {
+                if (i + kAhead < items) __builtin_prefetch(&words[(slotOf(i + kAhead) & mask) >> 5], 1);
+                const uint32_t s = slotOf(i);
+                if (s >= lo && s < hi && (*this)[s] < 2) words[s >> 5] += uint64_t(1) << (2 * (s & 31));
+            }
+        });
+    }
+};
+
 /// The finite vertices that may lie within `tol` of another, in index order. A vertex alone in its
 /// cell of a coarse grid (64 tolerances wide) and farther than `tol` from the cell's faces has no
 /// other within `tol`, and none has it: it can be left out of the merge without changing any
-/// result, and the set kept holds every neighbour of its members. Occupancy is counted in a byte
-/// table by hash (a collision only keeps a vertex in), in parallel: the final counts, and so the set,
-/// do not depend on the order of the increments. With `among` (ascending vertex ids, all finite), only
-/// those are looked at and counted: the others must be alone in their cells.
+/// result, and the set kept holds every neighbour of its members. Occupancy is counted in a table
+/// by hash (a collision only keeps a vertex in), in parallel: the final counts, and so the set, do
+/// not depend on the order of the increments. The vertices a count does not clear are counted again
+/// by other bits of the same hash in a table of their own: nearly all had only met another cell's
+/// vertex (every vertex of a cell goes on to the second count, so none is lost). With `among`
+/// (ascending vertex ids, all finite), only those are looked at and counted: the others must be
+/// alone in their cells.
 scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, const scene::ScratchVector<char>& ok,
                                                double tol, std::span<const uint32_t> among = {}) {
     const size_t n = among.empty() ? pos.size() : among.size();
@@ -268,49 +300,66 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
         return MergeGrid::hash(c[0], c[1], c[2]);
     };
     const unsigned threads = scene::rangeThreads(n, kMergePerThreadMin);
-    // ≥ 8 counters a vertex: few collisions. Each counts to 2 (more is the same), so two bits hold
-    // it, 32 to a word: a quarter of a byte table's size, which at plant scale is far larger than the
-    // caches (the 50 M piperack STL: 64 instead of 256 MiB).
-    const size_t counters = std::min<size_t>(tableSize(4 * n), size_t(1) << 30);
-    scene::ScratchVector<uint64_t> seen((counters + 31) / 32, 0);
-    const uint32_t mask = uint32_t(counters - 1);
-    const auto count = [&](uint32_t s) { return unsigned(seen[s >> 5] >> (2 * (s & 31)) & 3); };
-    constexpr uint32_t kNear = 0x80000000u, kNotFinite = kNone;
-    // Each vertex's counter (bit 31: near a cell face), then the counts: each thread owns a slice of
-    // the counters (whole words) and reads every vertex's, so no increment needs to be atomic.
-    // Counters are prefetched a few vertices ahead: the table is larger than the caches.
-    constexpr size_t kAhead = 16;
+    constexpr uint32_t kNear = 0x80000000u, kMet = 0x40000000u, kNotFinite = kNone;
+    // Each vertex's first counter (bit 31: near a cell face), then the counts (near or not: a vertex
+    // near a face may share its cell with one that is not).
+    TwoBitCounts first(n);
     scene::UnwrittenVector<uint32_t> slot(n);
     scene::forEachRange(n, threads, [&](unsigned, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             bool near = false;
             const uint32_t v = vertex(i);
-            slot[i] = ok[v] ? uint32_t(coarse(pos[v], near) & mask) | (near ? kNear : 0u) : kNotFinite;
+            slot[i] = ok[v] ? uint32_t(coarse(pos[v], near) & first.mask) | (near ? kNear : 0u) : kNotFinite;
         }
     });
-    const size_t slice = (seen.size() + threads - 1) / threads * 32;
-    scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
-        const size_t lo = slice * t, hi = lo + slice;
-        for (size_t i = 0; i < n; ++i) {
-            if (i + kAhead < n) __builtin_prefetch(&seen[(slot[i + kAhead] & mask) >> 5], 1);
-            if (slot[i] == kNotFinite) continue;
-            const uint32_t s = slot[i] & mask;
-            if (s >= lo && s < hi && count(s) < 2) seen[s >> 5] += uint64_t(1) << (2 * (s & 31));
-        }
-    });
+    first.count(n, threads, [&](size_t i) { return slot[i] == kNotFinite ? kNone : slot[i] & ~kNear; });
+    // Each range's vertices near a face or met in the first count, with a code: bit 31 near, bit 30
+    // met, and then its counter in the second table (the same hash's high bits).
     struct alignas(scene::kRangeStateAlign) Kept {
-        scene::ScratchVector<uint32_t> v;
+        scene::ScratchVector<uint32_t> v, code;
+        size_t met = 0;
     };
     std::vector<Kept> kept(threads);
     scene::forEachRange(n, threads, [&](unsigned t, size_t b, size_t e) {
+        constexpr size_t kAhead = 16;
+        Kept& k = kept[t];
         for (size_t i = b; i < e; ++i) {
-            if (i + kAhead < e) __builtin_prefetch(&seen[(slot[i + kAhead] & mask) >> 5]);
+            if (i + kAhead < e) __builtin_prefetch(&first.words[(slot[i + kAhead] & first.mask) >> 5]);
             if (slot[i] == kNotFinite) continue;
-            if ((slot[i] & kNear) || count(slot[i] & mask) >= 2) kept[t].v.push_back(vertex(i));
+            const bool near = (slot[i] & kNear) != 0, met = first[slot[i] & first.mask] >= 2;
+            if (!near && !met) continue;
+            const uint32_t v = vertex(i);
+            bool unused = false;
+            k.v.push_back(v);
+            k.code.push_back((near ? kNear : 0u) |
+                             (met ? kMet | (uint32_t(coarse(pos[v], unused) >> 32) & (kMet - 1)) : 0u));
+            k.met += met;
         }
     });
     decltype(slot)().swap(slot);
-    decltype(seen)().swap(seen);
+    decltype(first.words)().swap(first.words);
+    // The second count, over the met vertices alone (the 50 M piperack STL: 2.1 M of 24 M, nearly all
+    // of them met by another cell's vertex), in a table sized for them: their list in range order.
+    std::vector<size_t> offset(threads + 1, 0);
+    for (unsigned t = 0; t < threads; ++t) offset[t + 1] = offset[t] + kept[t].met;
+    TwoBitCounts second(offset.back());
+    scene::UnwrittenVector<uint32_t> metSlot(offset.back());
+    scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
+        size_t j = offset[t];
+        for (const uint32_t c : kept[t].code)
+            if (c & kMet) metSlot[j++] = c & second.mask;
+    });
+    second.count(offset.back(), threads, [&](size_t i) { return metSlot[i]; });
+    decltype(metSlot)().swap(metSlot);
+    // Kept: near a face, or met in both counts.
+    scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
+        Kept& k = kept[t];
+        size_t j = 0;
+        for (size_t i = 0; i < k.v.size(); ++i)
+            if ((k.code[i] & kNear) || second[k.code[i] & second.mask] >= 2) k.v[j++] = k.v[i];
+        k.v.resize(j);
+        scene::ScratchVector<uint32_t>().swap(k.code);
+    });
     for (size_t t = 1; t < kept.size(); ++t) {
         kept[0].v.insert(kept[0].v.end(), kept[t].v.begin(), kept[t].v.end());
         scene::ScratchVector<uint32_t>().swap(kept[t].v);
