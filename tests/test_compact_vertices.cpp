@@ -208,19 +208,27 @@ TEST(CompactVertices, TheStepAloneIsTheStepOfTheCompactVertices) {
     Mesh bigChunk = strip(glm::vec3(0.f), 1.f, 11000); // 22 000 triangles in one chunk: too many to be sure
     chunkMesh(bigChunk, 30000, 30000);
     ASSERT_EQ(bigChunk.chunks.size(), 1u);
-    for (const Mesh* m : {&plain, &spareNan, &bigChunk}) {
+    // Coordinates near float's smallest normal value: the step is subnormal, and 1 / step no float.
+    Mesh tiny = strip(glm::vec3(0.f), 1.f, 4);
+    for (glm::vec3& p : tiny.positions) p *= 1e-38f;
+    chunkMesh(tiny, 2, 2);
+    EXPECT_LT(gridStep(tiny), std::numeric_limits<float>::min());
+    EXPECT_FALSE(std::isfinite(1.f / gridStep(tiny)));
+    for (const Mesh* m : {&plain, &spareNan, &bigChunk, &tiny}) {
         const std::optional<CompactVertices> built = compactVertices(*m);
         ASSERT_TRUE(built.has_value());
         const std::optional<float> step = compactStep(*m);
         ASSERT_TRUE(step.has_value());
         EXPECT_EQ(*step, built->step);
     }
-    Mesh offGrid = plain; // an unused vertex off the grid: the quick answer fails, the built one holds
-    offGrid.positions.push_back(glm::vec3(0.3f * gridStep(plain)));
-    offGrid.normals.push_back(glm::vec3(0.f, 0.f, 1.f));
-    const std::optional<CompactVertices> built = compactVertices(offGrid);
-    ASSERT_TRUE(built.has_value());
-    EXPECT_EQ(compactStep(offGrid), built->step);
+    for (const Mesh* m : {&plain, &tiny}) {
+        Mesh offGrid = *m; // an unused vertex off the grid: the quick answer fails, the built one holds
+        offGrid.positions.push_back(glm::vec3(0.3f * gridStep(*m)));
+        offGrid.normals.push_back(glm::vec3(0.f, 0.f, 1.f));
+        const std::optional<CompactVertices> built = compactVertices(offGrid);
+        ASSERT_TRUE(built.has_value());
+        EXPECT_EQ(compactStep(offGrid), built->step);
+    }
 }
 
 TEST(CompactVertices, NormalsPackAsGlReadsThem) {

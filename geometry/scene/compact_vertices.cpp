@@ -33,6 +33,14 @@ bool onGrid(const glm::vec3& p, float step) noexcept {
     return q == glm::floor(q);
 }
 
+/// onGrid with 1 / step (`inverse`, exact: a power of two that float holds), a product in place of
+/// each division: the same quotient, as both are exact or rounded alike (three divisions a vertex were
+/// most of the pass).
+bool onGridTimesInverse(const glm::vec3& p, float inverse) noexcept {
+    const glm::vec3 q = p * inverse;
+    return q == glm::floor(q);
+}
+
 int snorm10(float c) noexcept {
     if (!std::isfinite(c)) return 0;
     return int(std::lround(std::clamp(c, -1.f, 1.f) * 511.f));
@@ -100,23 +108,33 @@ glm::vec3 unpackNormal(uint32_t packed) noexcept {
 }
 
 float gridStep(const Mesh& mesh) noexcept {
-    float largest = 0.f;
-    for (const glm::vec3& p : mesh.positions)
-        if (finite(p)) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-    return std::ldexp(float(kGridUlps), std::ilogb(std::max(largest, std::numeric_limits<float>::min())) - 23);
+    // The largest of each range's largest, on every core: the same for any split.
+    const size_t n = mesh.positions.size();
+    const unsigned threads = rangeThreads(n, kSnapPerThreadMin);
+    std::vector<float> largest(threads, 0.f);
+    forEachRange(n, threads, [&](unsigned r, size_t b, size_t e) {
+        float l = 0.f;
+        for (size_t i = b; i < e; ++i) {
+            const glm::vec3& p = mesh.positions[i];
+            if (finite(p)) l = std::max({l, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        }
+        largest[r] = l;
+    });
+    const float l = *std::max_element(largest.begin(), largest.end());
+    return std::ldexp(float(kGridUlps), std::ilogb(std::max(l, std::numeric_limits<float>::min())) - 23);
 }
 
 void snapToGrid(Mesh& mesh) {
-    const double step = gridStep(mesh);
+    const double step = gridStep(mesh), inverse = 1.0 / step; // exact: a power of two
     constexpr double kLargest = std::numeric_limits<float>::max();
     std::vector<glm::vec3>& positions = mesh.positions;
     forEachRange(
         positions.size(), rangeThreads(positions.size(), kSnapPerThreadMin), [&](unsigned, size_t b, size_t e) {
-            const auto snap = [step](float& c) noexcept {
+            const auto snap = [step, inverse](float& c) noexcept {
                 // Exact: a power of two divides, and |q| < 2^22 with at most 24 significant bits (the step is
                 // 8 spacings at the largest coordinate), so q ± 0.5 is exact too and the conversion that
                 // truncates it is std::round(q), sign of a zero included, without a library call.
-                const double q = double(c) / step;
+                const double q = double(c) * inverse; // = c / step: scaling by a power of two is exact
                 double x = std::copysign(double(int64_t(q + std::copysign(0.5, q))), q) * step; // exact in float
                 // Within half a step of float's largest value, rounding up would leave its range: round
                 // towards zero instead (less than a step away).
@@ -143,12 +161,14 @@ std::optional<float> certainStep(const Mesh& mesh) {
     if (mesh.chunks.empty() || mesh.positions.empty() || !chunksTile(mesh)) return std::nullopt;
     for (const Chunk& c : mesh.chunks)
         if (c.triangleCount > kMaxChunkVertices / 3) return std::nullopt;
-    const float step = gridStep(mesh);
+    const float step = gridStep(mesh), inverse = 1.f / step;
+    const bool exactInverse = std::isfinite(inverse) && inverse * step == 1.f; // not for a subnormal step
     const size_t n = mesh.positions.size();
     std::atomic<bool> certain{true};
     forEachRange(n, rangeThreads(n, kSnapPerThreadMin), [&](unsigned, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i)
-            if (!finite(mesh.positions[i]) || !onGrid(mesh.positions[i], step)) {
+            if (!finite(mesh.positions[i]) ||
+                !(exactInverse ? onGridTimesInverse(mesh.positions[i], inverse) : onGrid(mesh.positions[i], step))) {
                 certain.store(false, std::memory_order_relaxed);
                 return;
             }
