@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <random>
 #include <vector>
 
 using namespace geometry::scene;
@@ -45,6 +47,36 @@ TEST(Chunking, ChunksCoverEveryTriangleOnceWithinLimitAndBounds) {
     // Spatial coherence: chunks of a flat grid cover roughly 1/N of its area each.
     const float area = 100.f * 100.f;
     for (const auto& c : m.chunks) EXPECT_LT(c.bounds.extent().x * c.bounds.extent().z, area / 2.f);
+}
+
+// A run's box is Aabb::add's over its vertices, bit for bit (−0 counted as +0, as a transform's product
+// leaves it), an index past the positions left out, the last position read without reading past it.
+TEST(Chunking, RunBoxesAreTheirVerticesBoxesBitForBit) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-5.f, 5.f);
+    Mesh m;
+    for (int i = 0; i < 3001; ++i) m.positions.emplace_back(u(rng), u(rng), u(rng));
+    m.positions[17] = glm::vec3(-0.f, -0.f, -0.f);
+    m.positions.shrink_to_fit(); // no spare capacity after the last position
+    for (int i = 0; i < 3 * 1000; ++i) m.indices.push_back(uint32_t(rng() % m.positions.size()));
+    m.indices[0] = m.indices[1] = m.indices[2] = m.indices[5] = 17; // the first part: −0 alone
+    m.indices[3 * 999 + 2] = uint32_t(m.positions.size() - 1);
+    m.indices[3 * 998 + 1] = uint32_t(m.positions.size()); // out of range
+    m.parts = {{0, 1, {}}, {1, 401, {}}, {402, 598, {}}};
+    m.chunks = {Chunk{{0, 1000, {}}, 0, 3}};
+    reboundRuns(m);
+    const auto bits = [](const glm::vec3& v) {
+        uint32_t b[3];
+        std::memcpy(b, &v, sizeof b);
+        return std::vector<uint32_t>(b, b + 3);
+    };
+    for (const TriangleRun& r : m.parts) {
+        Aabb expected;
+        for (uint32_t i = 3 * r.firstTriangle; i < 3 * (r.firstTriangle + r.triangleCount); ++i)
+            if (m.indices[i] < m.positions.size()) expected.add(m.positions[m.indices[i]] + glm::vec3(0.f));
+        EXPECT_EQ(bits(r.bounds.lo), bits(expected.lo)) << r.firstTriangle;
+        EXPECT_EQ(bits(r.bounds.hi), bits(expected.hi)) << r.firstTriangle;
+    }
 }
 
 // Each chunk's parts tile it in order, hold at most kMaxPartTriangles each, and their boxes hold

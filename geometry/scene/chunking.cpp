@@ -136,9 +136,47 @@ Aabb runBounds(const Mesh& mesh, const TriangleRun& run) {
     Aabb world;
     const size_t end = std::min(3 * (size_t(run.firstTriangle) + run.triangleCount), mesh.indices.size());
     if (mesh.transform == glm::mat4(1.f)) { // a loaded model's: no product needed
-        // + 0 makes −0 +0, as the product does: the same box bit for bit.
+                                            // + 0 makes −0 +0, as the product does: the same box bit for bit.
+#if defined(__SSE2__)
+        // Aabb::add's comparisons lane by lane (as centroidBox's), one box per corner of a triangle:
+        // one running min and max is a chain of dependent instructions (16 M piperack STL, every
+        // part's box: 0.053 -> 0.033 s). A position is loaded as its 12 bytes: the last may end the
+        // array.
+        const size_t n = mesh.positions.size();
+        const glm::vec3* const pos = mesh.positions.data();
+        const __m128 zero = _mm_setzero_ps();
+        const auto load = [&](uint32_t v) {
+            const __m128 xy = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&pos[v].x)));
+            return _mm_add_ps(_mm_movelh_ps(xy, _mm_load_ss(&pos[v].z)), zero);
+        };
+        __m128 lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = _mm_set1_ps(world.lo.x);
+            hi[k] = _mm_set1_ps(world.hi.x);
+        }
+        size_t i = 3 * size_t(run.firstTriangle);
+        for (; i + 3 <= end; i += 3)
+            for (int k = 0; k < 3; ++k)
+                if (const uint32_t v = mesh.indices[i + k]; v < n) {
+                    const __m128 p = load(v);
+                    lo[k] = _mm_min_ps(p, lo[k]);
+                    hi[k] = _mm_max_ps(p, hi[k]);
+                }
+        for (; i < end; ++i)
+            if (const uint32_t v = mesh.indices[i]; v < n) {
+                const __m128 p = load(v);
+                lo[0] = _mm_min_ps(p, lo[0]);
+                hi[0] = _mm_max_ps(p, hi[0]);
+            }
+        alignas(16) float l[4], h[4];
+        _mm_store_ps(l, _mm_min_ps(_mm_min_ps(lo[0], lo[1]), lo[2]));
+        _mm_store_ps(h, _mm_max_ps(_mm_max_ps(hi[0], hi[1]), hi[2]));
+        world.lo = glm::vec3(l[0], l[1], l[2]);
+        world.hi = glm::vec3(h[0], h[1], h[2]);
+#else
         for (size_t i = 3 * size_t(run.firstTriangle); i < end; ++i)
             if (mesh.indices[i] < mesh.positions.size()) world.add(mesh.positions[mesh.indices[i]] + glm::vec3(0.f));
+#endif
         return world;
     }
     for (size_t i = 3 * size_t(run.firstTriangle); i < end; ++i)
