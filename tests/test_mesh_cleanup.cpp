@@ -405,6 +405,36 @@ TEST(MeshCleanup, MergedVerticesAreFartherApartThanTheTolerance) {
     }
 }
 
+// 30 000 faces of random corners, far more than the tolerance apart: each vertex alone in its cell of
+// the merge's coarse grid, so nearly every vertex that the first count meets another has met a
+// collision, and the second count runs. Two corners a third of the tolerance apart in the middle of
+// one cell (far from its faces) still merge: both meet in both counts.
+TEST(MeshCleanup, TwoVerticesSharingACoarseCellMergeWhereTheFirstCountMostlyCollides) {
+    constexpr double tol = 1e-3;
+    uint64_t state = 3;
+    auto next = [&state] { // splitmix64: the same soup on every machine
+        state += 0x9E3779B97F4A7C15ull;
+        uint64_t z = state;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return double((z ^ (z >> 31)) >> 11) / double(1ull << 53);
+    };
+    Mesh m;
+    for (uint32_t i = 0; i < 3 * 30000; ++i) {
+        m.positions.emplace_back(next() * 1000, next() * 1000, next() * 1000);
+        m.indices.push_back(i);
+    }
+    const glm::dvec3 centre = glm::dvec3(500.5, 700.5, 300.5) * (64 * tol); // a coarse cell's centre
+    m.positions[0] = glm::vec3(centre);
+    m.positions[3] = glm::vec3(centre + glm::dvec3(tol / 3, 0, 0));
+    CleanupOptions o;
+    o.mergeTolerance = tol;
+    o.creaseAngleDeg = 180;
+    const CleanupReport r = cleanMesh(m, o, {}, ReadPositions::Distinct);
+    EXPECT_EQ(r.mergedVertices, 1u);
+    EXPECT_EQ(r.outputVertices, 3u * 30000 - 1);
+}
+
 TEST(MeshCleanup, DistinctReadPositionsCleanAsAnyOthers) {
     // A reader that welded bit-equal corners (binary STL) says so, and the merge skips looking for
     // copies: the result must be what the search would have given.

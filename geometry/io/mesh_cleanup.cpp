@@ -277,9 +277,9 @@ struct TwoBitCounts {
 /// other within `tol`, and none has it: it can be left out of the merge without changing any
 /// result, and the set kept holds every neighbour of its members. Occupancy is counted in a table
 /// by hash (a collision only keeps a vertex in), in parallel: the final counts, and so the set, do
-/// not depend on the order of the increments. The vertices a count does not clear are counted again
-/// by other bits of the same hash in a table of their own: nearly all had only met another cell's
-/// vertex (every vertex of a cell goes on to the second count, so none is lost). With `among`
+/// not depend on the order of the increments. Where collisions would be most of the vertices a count
+/// does not clear, those are counted again by other bits of the same hash in a table of their own
+/// (every vertex of a cell goes on to the second count, so none is lost). With `among`
 /// (ascending vertex ids, all finite), only those are looked at and counted: the others must be
 /// alone in their cells.
 scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, const scene::ScratchVector<char>& ok,
@@ -314,7 +314,7 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
     });
     first.count(n, threads, [&](size_t i) { return slot[i] == kNotFinite ? kNone : slot[i] & ~kNear; });
     // Each range's vertices near a face or met in the first count, with a code: bit 31 near, bit 30
-    // met, and then its counter in the second table (the same hash's high bits).
+    // met, and then (for the second count) its counter in the second table.
     struct alignas(scene::kRangeStateAlign) Kept {
         scene::ScratchVector<uint32_t> v, code;
         size_t met = 0;
@@ -328,38 +328,44 @@ scene::ScratchVector<uint32_t> mergeCandidates(std::span<const glm::vec3> pos, c
             if (slot[i] == kNotFinite) continue;
             const bool near = (slot[i] & kNear) != 0, met = first[slot[i] & first.mask] >= 2;
             if (!near && !met) continue;
-            const uint32_t v = vertex(i);
-            bool unused = false;
-            k.v.push_back(v);
-            k.code.push_back((near ? kNear : 0u) |
-                             (met ? kMet | (uint32_t(coarse(pos[v], unused) >> 32) & (kMet - 1)) : 0u));
+            k.v.push_back(vertex(i));
+            k.code.push_back((near ? kNear : 0u) | (met ? kMet : 0u));
             k.met += met;
         }
     });
     decltype(slot)().swap(slot);
     decltype(first.words)().swap(first.words);
-    // The second count, over the met vertices alone (the 50 M piperack STL: 2.1 M of 24 M, nearly all
-    // of them met by another cell's vertex), in a table sized for them: their list in range order.
     std::vector<size_t> offset(threads + 1, 0);
     for (unsigned t = 0; t < threads; ++t) offset[t + 1] = offset[t] + kept[t].met;
-    TwoBitCounts second(offset.back());
-    scene::UnwrittenVector<uint32_t> metSlot(offset.back());
-    scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
-        size_t j = offset[t];
-        for (const uint32_t c : kept[t].code)
-            if (c & kMet) metSlot[j++] = c & second.mask;
-    });
-    second.count(offset.back(), threads, [&](size_t i) { return metSlot[i]; });
-    decltype(metSlot)().swap(metSlot);
-    // Kept: near a face, or met in both counts.
-    scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
-        Kept& k = kept[t];
-        size_t j = 0;
-        for (size_t i = 0; i < k.v.size(); ++i)
-            if ((k.code[i] & kNear) || second[k.code[i] & second.mask] >= 2) k.v[j++] = k.v[i];
-        k.v.resize(j);
-        scene::ScratchVector<uint32_t>().swap(k.code);
-    });
+    // The second count, over the met vertices alone, by the same hash's high bits, in a table sized for
+    // them: where most met only another cell's vertex (the 50 M piperack STL: 2.1 M of 24 M, about as
+    // many as n·(1 − e^(−n/counters)) collisions), not where most share a cell (a glTF's copies of a
+    // position, one for each normal, before they are folded).
+    const double counters = double(first.mask) + 1, collisions = double(n) * -std::expm1(-double(n) / counters);
+    if (double(offset.back()) < 2 * collisions) {
+        TwoBitCounts second(offset.back());
+        scene::UnwrittenVector<uint32_t> metSlot(offset.back());
+        scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
+            Kept& k = kept[t];
+            size_t j = offset[t];
+            for (size_t i = 0; i < k.v.size(); ++i) {
+                if (!(k.code[i] & kMet)) continue;
+                bool unused = false;
+                k.code[i] |= uint32_t(coarse(pos[k.v[i]], unused) >> 32) & second.mask;
+                metSlot[j++] = k.code[i] & second.mask;
+            }
+        });
+        second.count(offset.back(), threads, [&](size_t i) { return metSlot[i]; });
+        decltype(metSlot)().swap(metSlot);
+        // Kept: near a face, or met in both counts.
+        scene::forEachRange(threads, threads, [&](unsigned t, size_t, size_t) {
+            Kept& k = kept[t];
+            size_t j = 0;
+            for (size_t i = 0; i < k.v.size(); ++i)
+                if ((k.code[i] & kNear) || second[k.code[i] & second.mask] >= 2) k.v[j++] = k.v[i];
+            k.v.resize(j);
+        });
+    }
     for (size_t t = 1; t < kept.size(); ++t) {
         kept[0].v.insert(kept[0].v.end(), kept[t].v.begin(), kept[t].v.end());
         scene::ScratchVector<uint32_t>().swap(kept[t].v);
