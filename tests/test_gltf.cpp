@@ -415,6 +415,44 @@ TEST_F(GltfTest, IndexOutOfRange) {
     EXPECT_NE(message.find("index 7"), std::string::npos) << message;
 }
 
+// A grid of 400 × 400 vertices and 955 k indices: read on every core (the decode's passes split at
+// 65 536 elements). It loads whole; with two indices out of range, in different halves, the message
+// names the first, as one thread reading front to back would.
+TEST_F(GltfTest, LargeAccessorsReadOnEveryCoreAsInOrder) {
+    constexpr uint32_t kSide = 400;
+    std::vector<float> positions;
+    for (uint32_t y = 0; y < kSide; ++y)
+        for (uint32_t x = 0; x < kSide; ++x) positions.insert(positions.end(), {float(x), 0.f, float(y)});
+    std::vector<uint32_t> indices;
+    for (uint32_t y = 0; y + 1 < kSide; ++y)
+        for (uint32_t x = 0; x + 1 < kSide; ++x) {
+            const uint32_t a = y * kSide + x, b = a + 1, c = a + kSide, d = c + 1;
+            indices.insert(indices.end(), {a, c, b, b, c, d});
+        }
+    const auto glb = [&](const std::vector<uint32_t>& idx) {
+        Bin bin;
+        bin.add(positions);
+        bin.add(idx);
+        json doc = triangleDoc(bin.bytes, "");
+        doc["bufferViews"][0]["byteLength"] = positions.size() * 4;
+        doc["bufferViews"][1]["byteOffset"] = positions.size() * 4;
+        doc["bufferViews"][1]["byteLength"] = idx.size() * 4;
+        doc["accessors"][0]["count"] = kSide * kSide;
+        doc["accessors"][1]["count"] = idx.size();
+        doc["accessors"][1]["componentType"] = kUInt;
+        return makeGlb(doc.dump(), bin.bytes);
+    };
+    const LoadedModel model = geometry::io::loadGltf(writeBytes("grid.glb", glb(indices)));
+    ASSERT_EQ(model.meshes.size(), 1u);
+    EXPECT_EQ(model.meshes[0].triangleCount(), 2u * (kSide - 1) * (kSide - 1));
+    EXPECT_EQ(model.meshes[0].positions.size(), size_t(kSide) * kSide);
+    std::vector<uint32_t> bad = indices;
+    bad[100000] = 7777777;
+    bad[900000] = 9999999;
+    const std::string message = expectFailure(writeBytes("badgrid.glb", glb(bad)));
+    EXPECT_NE(message.find("index 7777777 out of range (160000 vertices)"), std::string::npos) << message;
+}
+
 TEST_F(GltfTest, WrongAccessorTypes) {
     json doc = embeddedTriangle();
     doc["accessors"][0]["componentType"] = kUInt; // not a KHR_mesh_quantization type

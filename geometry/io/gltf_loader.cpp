@@ -17,6 +17,8 @@
 #include "geometry/io/gltf_accessor.h"
 #include "geometry/io/mapped_file.h"
 #include "geometry/scene/chunking.h"
+#include "geometry/scene/parallel_ranges.h"
+#include "geometry/scene/unwritten_vector.h"
 
 #include <tiny_gltf.h>
 
@@ -28,6 +30,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -38,6 +41,7 @@
 #include <limits>
 #include <map>
 #include <new>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <span>
@@ -795,6 +799,9 @@ void checkNormals(Accessors& accessors, const tinygltf::Primitive& prim, size_t 
 }
 
 /// One primitive as an object-space Mesh, or nothing (with a note) when it holds no triangles.
+/// Indices or accessor elements a thread of decodePrimitive's passes takes at least.
+constexpr size_t kDecodePerThreadMin = size_t(1) << 16;
+
 std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, Accessors& accessors, size_t meshIndex,
                                            size_t primIndex, std::vector<std::string>& notes) {
     const tinygltf::Mesh& gltfMesh = model.meshes[meshIndex];
@@ -825,15 +832,38 @@ std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, Accesso
         // and copying it whole per primitive would multiply memory by the primitive count.
         if (sequence.size() >= positions.count / 8) {
             // Most of the accessor is used (one mesh, one primitive: the common large file): a
-            // table over the accessor numbers them in one linear pass, in the same ascending order.
-            std::vector<uint32_t> renumbered(positions.count, 0);
-            for (const uint32_t i : sequence) renumbered[i] = 1;
-            for (uint32_t i = 0; i < renumbered.size(); ++i)
-                if (renumbered[i]) {
-                    renumbered[i] = uint32_t(vertices.size());
-                    vertices.push_back(i);
-                }
-            for (uint32_t& i : sequence) i = renumbered[i];
+            // table over the accessor numbers them in linear passes, in the same ascending order,
+            // each on every core. Used elements are marked by relaxed atomic stores (any thread
+            // writes the same 1); each range of the table then numbers its marks after the ranges
+            // before it.
+            scene::UnwrittenVector<uint32_t> renumbered(positions.count);
+            const unsigned tableThreads = scene::rangeThreads(renumbered.size(), kDecodePerThreadMin),
+                           sequenceThreads = scene::rangeThreads(sequence.size(), kDecodePerThreadMin);
+            scene::forEachRange(renumbered.size(), tableThreads, [&](unsigned, size_t b, size_t e) {
+                std::fill(renumbered.begin() + std::ptrdiff_t(b), renumbered.begin() + std::ptrdiff_t(e), 0u);
+            });
+            scene::forEachRange(sequence.size(), sequenceThreads, [&](unsigned, size_t b, size_t e) {
+                for (size_t k = b; k < e; ++k)
+                    std::atomic_ref(renumbered[sequence[k]]).store(1, std::memory_order_relaxed);
+            });
+            std::vector<size_t> first(tableThreads + 1, 0);
+            scene::forEachRange(renumbered.size(), tableThreads, [&](unsigned r, size_t b, size_t e) {
+                first[r + 1] = size_t(
+                    std::count(renumbered.begin() + std::ptrdiff_t(b), renumbered.begin() + std::ptrdiff_t(e), 1u));
+            });
+            std::partial_sum(first.begin(), first.end(), first.begin());
+            vertices.resize(first.back());
+            scene::forEachRange(renumbered.size(), tableThreads, [&](unsigned r, size_t b, size_t e) {
+                size_t id = first[r];
+                for (size_t i = b; i < e; ++i)
+                    if (renumbered[i]) {
+                        renumbered[i] = uint32_t(id);
+                        vertices[id++] = uint32_t(i);
+                    }
+            });
+            scene::forEachRange(sequence.size(), sequenceThreads, [&](unsigned, size_t b, size_t e) {
+                for (size_t k = b; k < e; ++k) sequence[k] = renumbered[sequence[k]];
+            });
         } else {
             vertices = sequence;
             std::sort(vertices.begin(), vertices.end());
