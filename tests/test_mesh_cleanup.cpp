@@ -303,18 +303,21 @@ TEST(MeshCleanup, HighDegreeFanStaysFastAndSmooth) {
 
 namespace {
 
+/// A number in [0, 1) from splitmix64's next step: the same sequence on every machine.
+double unitRandom(uint64_t& state) {
+    state += 0x9E3779B97F4A7C15ull;
+    uint64_t z = state;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return double((z ^ (z >> 31)) >> 11) / double(1ull << 53);
+}
+
 /// A soup of `triangles` faces whose corners are drawn from clusters: points jittered within a
 /// fraction of `tol` (which must merge), others about `tol` apart (either way), many of them next
 /// to the faces of the merge's coarse cells (64 tolerances wide), where the search crosses cells.
 Mesh clusteredSoup(size_t triangles, double tol, uint32_t seed) {
     uint64_t state = seed;
-    auto next = [&state] { // splitmix64: the same soup on every machine
-        state += 0x9E3779B97F4A7C15ull;
-        uint64_t z = state;
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return double((z ^ (z >> 31)) >> 11) / double(1ull << 53);
-    };
+    auto next = [&state] { return unitRandom(state); };
     const double cell = 64 * tol;
     std::vector<glm::dvec3> centres;
     for (size_t i = 0; i < triangles / 2 + 3; ++i) {
@@ -412,13 +415,7 @@ TEST(MeshCleanup, MergedVerticesAreFartherApartThanTheTolerance) {
 TEST(MeshCleanup, TwoVerticesSharingACoarseCellMergeWhereTheFirstCountMostlyCollides) {
     constexpr double tol = 1e-3;
     uint64_t state = 3;
-    auto next = [&state] { // splitmix64: the same soup on every machine
-        state += 0x9E3779B97F4A7C15ull;
-        uint64_t z = state;
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return double((z ^ (z >> 31)) >> 11) / double(1ull << 53);
-    };
+    auto next = [&state] { return unitRandom(state); };
     Mesh m;
     for (uint32_t i = 0; i < 3 * 30000; ++i) {
         m.positions.emplace_back(next() * 1000, next() * 1000, next() * 1000);
