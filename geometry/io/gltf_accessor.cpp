@@ -6,7 +6,8 @@
 //   [SECTION] Sparse indices ............ lendIndexViews, readUnsigned, AccessorView::substitute
 //   [SECTION] Accessors ................. Accessors (view, viewBytes, releaseLentPages, bufferData, decode,
 //                                         addSparse)
-//   [SECTION] Reading ................... isPositionType, isNormalType, readVec3, readIndices
+//   [SECTION] Reading ................... isPositionType, isNormalType, preparedVector, readVec3,
+//                                         readIndices
 #include "geometry/io/gltf_accessor.h"
 
 #include "geometry/io/mapped_file.h"

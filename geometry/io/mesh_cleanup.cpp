@@ -5,8 +5,8 @@
 //   [SECTION] Cleanup report ............. CleanupReport::operator+=
 //   [SECTION] Small helpers .............. Faces, mix, tableSize, keepUnmarked, renumber,
 //                                          bucketFaces, fitCapacity
-//   [SECTION] Bad faces and duplicates ... dropNonFinite, MergeGrid, mergeCandidates, mergeDuplicates,
-//                                          dropDegenerate, dropDuplicateFaces
+//   [SECTION] Bad faces and duplicates ... dropNonFinite, MergeGrid, TwoBitCounts, mergeCandidates,
+//                                          mergeDuplicates, dropDegenerate, dropDuplicateFaces
 //   [SECTION] Orientation ................ VertexFaces, cornerOf, fixOrientation
 //   [SECTION] Normals .................... clusterCornerNormals, cornerNormals, splitCornersByNormal,
 //                                          computeNormals
