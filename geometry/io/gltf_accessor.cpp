@@ -6,8 +6,7 @@
 //   [SECTION] Sparse indices ............ lendIndexViews, readUnsigned, AccessorView::substitute
 //   [SECTION] Accessors ................. Accessors (view, viewBytes, releaseLentPages, bufferData, decode,
 //                                         addSparse)
-//   [SECTION] Reading ................... isPositionType, isNormalType, preparedVector, readVec3,
-//                                         readIndices
+//   [SECTION] Reading ................... isPositionType, isNormalType, readVec3, readIndices
 #include "geometry/io/gltf_accessor.h"
 
 #include "geometry/io/mapped_file.h"
@@ -455,17 +454,6 @@ template <typename T> float component(const unsigned char* p, bool normalized) {
 /// Accessor elements a thread reads at least: below this one thread reads them all.
 constexpr size_t kElementsPerThreadMin = size_t(1) << 16;
 
-/// A vector of n value-initialised elements whose pages are in memory before they are written: kept
-/// scratch pages, else faulted in on every core. A large accessor's copy faulted in its pages one
-/// by one on one thread (the 4 M GLB's 12 M indices: a fifth of its load's page faults).
-template <class T> std::vector<T> preparedVector(size_t n) {
-    std::vector<T> v;
-    v.reserve(n);
-    scene::scratch::prepareCapacity(v);
-    v.resize(n);
-    return v;
-}
-
 template <typename T>
 void readVec3As(const AccessorView& v, const std::vector<uint32_t>& which, glm::vec3* out, size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
@@ -496,7 +484,10 @@ std::vector<glm::vec3> readVec3(const AccessorView& v, const std::vector<uint32_
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: read = readVec3As<uint16_t>; break;
     default: throw GltfError("a " + componentName(v.componentType) + " accessor read as VEC3");
     }
-    std::vector<glm::vec3> out = preparedVector<glm::vec3>(which.size());
+    // Pages in memory first: a large accessor's copy faulted them in one by one on one thread (the
+    // 4 M GLB's 12 M indices: a fifth of its load's page faults).
+    std::vector<glm::vec3> out;
+    scene::scratch::resizePrepared(out, which.size());
     scene::forEachRange(which.size(), scene::rangeThreads(which.size(), kElementsPerThreadMin),
                         [&](unsigned, size_t b, size_t e) { read(v, which, out.data(), b, e); });
     return out;
@@ -508,7 +499,8 @@ std::vector<uint32_t> readIndices(const AccessorView& v, size_t vertexCount, con
     if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
         throw GltfError(where + ": indices must be unsigned integers, not " + componentName(type));
-    std::vector<uint32_t> out = preparedVector<uint32_t>(v.count);
+    std::vector<uint32_t> out;
+    scene::scratch::resizePrepared(out, v.count);
     // Read and checked on every core; the error names the first index out of range, as one thread
     // reading front to back would.
     const unsigned threads = scene::rangeThreads(v.count, kElementsPerThreadMin);

@@ -175,9 +175,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
     };
 
     scene::Mesh mesh;
-    mesh.indices.reserve(3 * n);
-    scene::scratch::prepareCapacity(mesh.indices);
-    mesh.indices.resize(3 * n);
+    scene::scratch::resizePrepared(mesh.indices, 3 * n);
     std::vector<RangeWeld> ranges(threads);
     for (unsigned i = 0; i < threads; ++i) {
         ranges[i].first = n * i / threads;
@@ -246,9 +244,7 @@ scene::Mesh readBinaryStl(const std::string& path, uint64_t size, CleanupReport&
     std::partial_sum(fresh.begin(), fresh.end(), fresh.begin()); // each part's first new key
     const size_t vertices = keys.size() + fresh.back();
     // One spare vertex of capacity: Embree reads 4 bytes past the last (scene::reserveSpareVertex).
-    mesh.positions.reserve(vertices + 1);
-    scene::scratch::prepareCapacity(mesh.positions); // the welders' pages
-    mesh.positions.resize(vertices);
+    scene::scratch::resizePrepared(mesh.positions, vertices, 1); // the welders' pages
     static_assert(sizeof(Key) == sizeof(glm::vec3));
     scene::forEachRange(keys.size(), threadsFor(keys.size()), [&](unsigned, size_t b, size_t e) {
         if (e > b) std::memcpy(mesh.positions.data() + b, keys.data() + b, (e - b) * sizeof(Key));

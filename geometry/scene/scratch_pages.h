@@ -67,6 +67,13 @@ void prepare(void* p, size_t bytes) noexcept;
 template <class T, class A> void prepareCapacity(std::vector<T, A>& v) noexcept {
     prepare(v.data(), v.capacity() * sizeof(T));
 }
+/// An empty `v` made `n` elements long (value-initialised) on pages that are in memory first, with
+/// `spare` elements of capacity beyond: the resize's writes fault nothing in on one thread.
+template <class T, class A> void resizePrepared(std::vector<T, A>& v, size_t n, size_t spare = 0) {
+    v.reserve(n + spare);
+    prepareCapacity(v);
+    v.resize(n);
+}
 /// Gives every kept page back to the system: before a load makes arrays of its own that are not
 /// scratch and not backed (they would add to the kept pages, not take them).
 void releaseKept() noexcept;
