@@ -798,10 +798,10 @@ void checkNormals(Accessors& accessors, const tinygltf::Primitive& prim, size_t 
     }
 }
 
-/// One primitive as an object-space Mesh, or nothing (with a note) when it holds no triangles.
 /// Indices or accessor elements a thread of decodePrimitive's passes takes at least.
 constexpr size_t kDecodePerThreadMin = size_t(1) << 16;
 
+/// One primitive as an object-space Mesh, or nothing (with a note) when it holds no triangles.
 std::optional<scene::Mesh> decodePrimitive(const tinygltf::Model& model, Accessors& accessors, size_t meshIndex,
                                            size_t primIndex, std::vector<std::string>& notes) {
     const tinygltf::Mesh& gltfMesh = model.meshes[meshIndex];

@@ -136,7 +136,7 @@ Aabb runBounds(const Mesh& mesh, const TriangleRun& run) {
     Aabb world;
     const size_t end = std::min(3 * (size_t(run.firstTriangle) + run.triangleCount), mesh.indices.size());
     if (mesh.transform == glm::mat4(1.f)) { // a loaded model's: no product needed
-                                            // + 0 makes −0 +0, as the product does: the same box bit for bit.
+        // In both branches + 0 makes −0 +0, as the product does: the same box bit for bit.
 #if defined(__SSE2__)
         // Aabb::add's comparisons lane by lane (as centroidBox's), one box per corner of a triangle:
         // one running min and max is a chain of dependent instructions (16 M piperack STL, every

@@ -26,20 +26,12 @@ bool chunksTile(const Mesh& mesh) noexcept {
     return next == mesh.triangleCount();
 }
 
+/// Every component a whole number.
+bool whole(const glm::vec3& q) noexcept { return q == glm::floor(q); }
+
 /// On the grid (snapToGrid's result): a float multiple of the step, which the step's power of two
 /// divides exactly.
-bool onGrid(const glm::vec3& p, float step) noexcept {
-    const glm::vec3 q = p / step;
-    return q == glm::floor(q);
-}
-
-/// onGrid with 1 / step (`inverse`, exact: a power of two that float holds), a product in place of
-/// each division: the same quotient, as both are exact or rounded alike (three divisions a vertex were
-/// most of the pass).
-bool onGridTimesInverse(const glm::vec3& p, float inverse) noexcept {
-    const glm::vec3 q = p * inverse;
-    return q == glm::floor(q);
-}
+bool onGrid(const glm::vec3& p, float step) noexcept { return whole(p / step); }
 
 int snorm10(float c) noexcept {
     if (!std::isfinite(c)) return 0;
@@ -167,8 +159,10 @@ std::optional<float> certainStep(const Mesh& mesh) {
     std::atomic<bool> certain{true};
     forEachRange(n, rangeThreads(n, kSnapPerThreadMin), [&](unsigned, size_t b, size_t e) {
         for (size_t i = b; i < e; ++i)
+            // With an exact inverse, a product in place of each division gives the same quotient (both
+            // exact, or rounded alike); three divisions a vertex were most of the pass.
             if (!finite(mesh.positions[i]) ||
-                !(exactInverse ? onGridTimesInverse(mesh.positions[i], inverse) : onGrid(mesh.positions[i], step))) {
+                !(exactInverse ? whole(mesh.positions[i] * inverse) : onGrid(mesh.positions[i], step))) {
                 certain.store(false, std::memory_order_relaxed);
                 return;
             }
